@@ -1,0 +1,87 @@
+// A 3-vector of doubles in SI units: the one vector type of the real-time kernel.
+#pragma once
+
+#include <cmath>
+
+namespace proxima
+{
+
+struct Vec3
+{
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+
+  constexpr Vec3() = default;
+  constexpr Vec3(double xValue, double yValue, double zValue) : x(xValue), y(yValue), z(zValue) {}
+
+  constexpr double operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+  constexpr double& operator[](int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
+
+  constexpr Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+  constexpr Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+  constexpr Vec3 operator-() const { return {-x, -y, -z}; }
+  constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
+  constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
+  constexpr Vec3& operator+=(const Vec3& o)
+  {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  constexpr Vec3& operator-=(const Vec3& o)
+  {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  constexpr Vec3& operator*=(double s)
+  {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
+  constexpr bool operator==(const Vec3& o) const { return x == o.x && y == o.y && z == o.z; }
+  constexpr bool operator!=(const Vec3& o) const { return !(*this == o); }
+};
+
+constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
+constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+constexpr double squaredNorm(const Vec3& v) { return dot(v, v); }
+inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
+inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
+constexpr double squaredDistance(const Vec3& a, const Vec3& b) { return squaredNorm(a - b); }
+constexpr double maxAbsComponent(const Vec3& v)
+{
+  const double ax = v.x < 0 ? -v.x : v.x;
+  const double ay = v.y < 0 ? -v.y : v.y;
+  const double az = v.z < 0 ? -v.z : v.z;
+  return ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+}
+inline bool isFinite(const Vec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+/// The unit vector along v, or the zero vector when v has no usable length.
+inline Vec3 normalizedOrZero(const Vec3& v)
+{
+  const double length = norm(v);
+  return length > 0.0 && std::isfinite(length) ? v / length : Vec3{};
+}
+constexpr Vec3 componentMin(const Vec3& a, const Vec3& b)
+{
+  return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
+}
+constexpr Vec3 componentMax(const Vec3& a, const Vec3& b)
+{
+  return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
+}
+
+} // namespace proxima

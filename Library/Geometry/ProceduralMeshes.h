@@ -1,0 +1,21 @@
+// Meshes the project generates itself, for tests, benchmarks and the bundled default scene.
+#pragma once
+
+#include "Geometry/TriangleSoup.h"
+
+#include <cstdint>
+
+namespace proxima
+{
+
+/// A sphere made by subdividing an icosahedron `subdivisions` times: 20 * 4^subdivisions
+/// triangles (5: 20,480; 7: 327,680; 8: 1,310,720), with outward unit normals per point.
+TriangleSoup makeIcosphere(std::uint32_t subdivisions, double radius, const Vec3& center = Vec3{});
+
+/// An axis-aligned box of the given half-extents, two triangles per face, outward winding.
+TriangleSoup makeBox(const Vec3& halfExtents, const Vec3& center = Vec3{});
+
+/// A square of side `size` in the plane z = height, split into 2 * cells^2 triangles, normal +z.
+TriangleSoup makeGrid(double size, std::uint32_t cells, double height = 0.0);
+
+} // namespace proxima

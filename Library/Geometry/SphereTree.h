@@ -1,0 +1,151 @@
+// The bounding-sphere hierarchy of paper section 5 over one triangle mesh: leaf spheres cover
+// each triangle like scan conversion, internal nodes come from midpoint splits of the longest
+// axis, and each node's sphere is the smaller of the paper's two heuristics. Flat depth-first
+// arrays of floats (conservatively rounded) keep it compact; queries are exact in double.
+#pragma once
+
+#include "Core/Vec3.h"
+#include "Geometry/ClosestPoint.h"
+#include "Geometry/TriangleMesh.h"
+#include "Geometry/TriangleTestCache.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace proxima
+{
+
+struct SphereTreeOptions
+{
+  /// Leaf size rule: a triangle whose longest edge exceeds leafSizeFactor times the mesh's median
+  /// edge length is split by longest-edge bisection until every piece is that short, and each
+  /// piece gets its own leaf sphere. 0 means one sphere per triangle.
+  double leafSizeFactor = 2.0;
+  /// A triangle is never split into more pieces than this (long slivers in a fine mesh).
+  std::uint32_t maxPiecesPerTriangle = 256;
+  /// Leaf spheres grouped under one leaf node (1 is the paper's tree exactly).
+  std::uint32_t maxLeafSpheresPerNode = 4;
+};
+
+/// A node in depth-first order: the left child is the next node; an internal node stores its
+/// right child, a leaf node the range of its leaf spheres. Centres are relative to the tree's
+/// origin; radii are rounded up so that a float sphere always holds what the exact one held.
+struct SphereTreeNode
+{
+  float center[3];
+  float radius;
+  /// Internal node: index of the right child. Leaf node: first leaf sphere.
+  std::uint32_t rightOrFirst;
+  /// 0 for an internal node; the number of leaf spheres for a leaf node.
+  std::uint32_t numLeafSpheres;
+};
+
+struct LeafSphere
+{
+  float center[3];
+  float radius;
+  std::uint32_t triangle;
+};
+
+struct Sphere
+{
+  Vec3 center;
+  double radius = 0.0;
+};
+
+/// Work counters of one query, for benchmarks and the trace.
+struct QueryStats
+{
+  std::uint32_t nodesVisited = 0;
+  std::uint32_t leafSpheresTested = 0;
+  std::uint32_t trianglesTested = 0;
+};
+
+/// Per-thread scratch for queries: the traversal stack and the tested-triangle cache. Make one
+/// per querying thread, once; queries then never allocate.
+struct SphereTreeScratch
+{
+  static constexpr int kMaxStackDepth = 128;
+  std::uint32_t stack[kMaxStackDepth];
+  TriangleTestCache tested;
+};
+
+struct SweepQuery
+{
+  Vec3 start;
+  Vec3 end;
+  double radius = 0.0;
+  /// Contact skin (see sweepSphereTriangleWithSkin); 0 for the exact geometric query.
+  double skin = 0.0;
+};
+
+struct SweepContact
+{
+  bool hit = false;
+  /// Fraction of start -> end travelled at first contact (1 without a hit).
+  double t = 1.0;
+  std::uint32_t triangle = 0;
+};
+
+struct NearbyTriangle
+{
+  std::uint32_t triangle = 0;
+  ClosestPointResult closest;
+};
+
+struct NearestTriangle
+{
+  bool found = false;
+  std::uint32_t triangle = 0;
+  ClosestPointResult closest;
+};
+
+class SphereTree
+{
+public:
+  SphereTree() = default;
+
+  /// Builds the tree over `mesh` in O(n log n). The mesh must outlive nothing: queries take it
+  /// again, and must be given the same mesh.
+  void build(const TriangleMesh& mesh, const SphereTreeOptions& options = SphereTreeOptions{});
+
+  /// (a) First contact of a sphere swept from query.start to query.end with any triangle.
+  SweepContact firstContact(const TriangleMesh& mesh, const SweepQuery& query,
+                            SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
+
+  /// (b) Every triangle within `maxDistance` of `point` (closest point and weights included).
+  /// Writes at most `capacity` of them to `out` and returns how many there are in all, so a
+  /// return above `capacity` says the buffer overflowed.
+  std::uint32_t gatherWithin(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
+                             NearbyTriangle* out, std::uint32_t capacity,
+                             SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
+
+  /// (c) The triangle nearest `point`, if one lies within `maxDistance`.
+  NearestTriangle nearest(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
+                          SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
+
+  std::uint32_t numNodes() const { return static_cast<std::uint32_t>(m_nodes.size()); }
+  std::uint32_t numLeafSpheres() const { return static_cast<std::uint32_t>(m_leaves.size()); }
+  std::uint32_t numTriangles() const { return m_numTriangles; }
+  std::uint32_t depth() const { return m_depth; }
+  /// Bytes of the tree itself (nodes and leaf spheres), not of the mesh.
+  std::size_t memoryBytes() const;
+  const Vec3& origin() const { return m_origin; }
+  const std::vector<SphereTreeNode>& nodes() const { return m_nodes; }
+  const std::vector<LeafSphere>& leafSpheres() const { return m_leaves; }
+
+  /// The node spheres at `level` (0 is the root; leaf nodes above that level are included), in
+  /// world coordinates: for drawing the tree.
+  std::vector<Sphere> spheresAtLevel(std::uint32_t level) const;
+  /// All leaf spheres in world coordinates.
+  std::vector<Sphere> leafSpheresInWorld() const;
+
+private:
+  std::vector<SphereTreeNode> m_nodes;
+  std::vector<LeafSphere> m_leaves;
+  Vec3 m_origin;
+  std::uint32_t m_numTriangles = 0;
+  std::uint32_t m_depth = 0;
+};
+
+} // namespace proxima

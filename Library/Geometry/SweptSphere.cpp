@@ -1,0 +1,177 @@
+#include "Geometry/SweptSphere.h"
+
+#include "Geometry/ClosestPoint.h"
+
+#include <cmath>
+
+namespace proxima
+{
+namespace
+{
+// Smallest root of a t^2 + 2 b t + c = 0 where the path enters a round surface from outside
+// (c > 0) while approaching it (b < 0); the form c / (-b + sqrt) avoids cancellation.
+bool enterQuadratic(double a, double b, double c, double& t)
+{
+  if (!(c > 0.0) || !(b < 0.0) || !(a > 0.0))
+  {
+    return false;
+  }
+  const double discriminant = b * b - a * c;
+  if (discriminant < 0.0)
+  {
+    return false;
+  }
+  t = c / (-b + std::sqrt(discriminant));
+  return true;
+}
+
+void keepEarliest(double candidate, SweepResult& best)
+{
+  if (candidate >= 0.0 && candidate <= best.t)
+  {
+    best.t = candidate;
+    best.hit = true;
+  }
+}
+
+// Entry of the segment into the triangle swept by a sphere of `radius`, for a start that lies
+// outside it.
+SweepResult sweepFromOutside(const Vec3& start, const Vec3& motion, double radius,
+                             const TriangleCorners& tri)
+{
+  SweepResult best;
+  best.t = 1.0;
+  const Vec3 corners[3] = {tri.a, tri.b, tri.c};
+
+  // Faces: the two planes offset by radius along the normal; entry counts where it projects
+  // inside the triangle (the rims between faces and edges are entered through the cylinders).
+  const Vec3 ab = tri.b - tri.a;
+  const Vec3 ac = tri.c - tri.a;
+  const Vec3 normal = cross(ab, ac);
+  const double normalLength = norm(normal);
+  if (normalLength > 0.0)
+  {
+    const Vec3 n = normal / normalLength;
+    const double height = dot(start - tri.a, n);
+    const double speed = dot(motion, n);
+    const double side = height >= 0.0 ? 1.0 : -1.0;
+    const double clearance = height * side - radius;
+    const double approach = -speed * side;
+    if (clearance >= 0.0 && approach > 0.0 && clearance <= approach)
+    {
+      const double t = clearance / approach;
+      const Vec3 onPlane = start + motion * t - n * (side * radius);
+      // Inside test by edge-normal signs: robust for any winding and exact on the edges.
+      const Vec3 p = onPlane;
+      const bool inside = dot(cross(tri.b - tri.a, p - tri.a), normal) >= 0.0 &&
+                          dot(cross(tri.c - tri.b, p - tri.b), normal) >= 0.0 &&
+                          dot(cross(tri.a - tri.c, p - tri.c), normal) >= 0.0;
+      if (inside)
+      {
+        // A point of the offset face over the triangle lies on the boundary of the swept body,
+        // and a segment enters a convex body once: this is the entry, nothing can come earlier.
+        best.hit = true;
+        best.t = t;
+        return best;
+      }
+    }
+    // The whole segment stays more than radius from the triangle's plane on one side: no hit.
+    const double endHeight = height + speed;
+    if ((height > radius && endHeight > radius) || (height < -radius && endHeight < -radius))
+    {
+      return best;
+    }
+  }
+
+  // Edges: infinite cylinders of radius about each edge line, entered between the end caps.
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3& from = corners[i];
+    const Vec3& to = corners[(i + 1) % 3];
+    const Vec3 edge = to - from;
+    const double edgeSquared = dot(edge, edge);
+    if (!(edgeSquared > 0.0))
+    {
+      continue;
+    }
+    const Vec3 m = start - from;
+    const Vec3 mCross = cross(m, edge);
+    const Vec3 dCross = cross(motion, edge);
+    double t = 0.0;
+    if (enterQuadratic(dot(dCross, dCross), dot(mCross, dCross),
+                       dot(mCross, mCross) - radius * radius * edgeSquared, t) &&
+        t <= best.t)
+    {
+      const double along = dot(m + motion * t, edge);
+      if (along >= 0.0 && along <= edgeSquared)
+      {
+        keepEarliest(t, best);
+      }
+    }
+  }
+
+  // Corners: spheres of radius about each vertex.
+  for (const Vec3& corner : corners)
+  {
+    const Vec3 m = start - corner;
+    double t = 0.0;
+    if (enterQuadratic(dot(motion, motion), dot(m, motion), dot(m, m) - radius * radius, t))
+    {
+      keepEarliest(t, best);
+    }
+  }
+  if (!best.hit)
+  {
+    best.t = 1.0;
+  }
+  return best;
+}
+} // namespace
+
+SweepResult sweepSphereTriangle(const Vec3& start, const Vec3& motion, double radius,
+                                const TriangleCorners& triangle)
+{
+  return sweepSphereTriangleWithSkin(start, motion, radius, 0.0, triangle);
+}
+
+SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
+                                        double skin, const TriangleCorners& triangle)
+{
+  const double freshRadius = radius + skin;
+  // The distance to the plane bounds the distance to the triangle from below: a start farther
+  // than radius + 1.5 skin from the plane is a fresh contact, and needs no closest point.
+  const Vec3 normal = cross(triangle.b - triangle.a, triangle.c - triangle.a);
+  const double normalSquared = dot(normal, normal);
+  if (normalSquared > 0.0)
+  {
+    const double height = dot(start - triangle.a, normal);
+    const double limit = radius + 1.5 * skin;
+    if (height * height > limit * limit * normalSquared)
+    {
+      return sweepFromOutside(start, motion, freshRadius, triangle);
+    }
+  }
+  const ClosestPointResult closest = closestPointOnTriangle(start, triangle.a, triangle.b,
+                                                            triangle.c);
+  const double startDistance = std::sqrt(closest.squaredDistance);
+  double contactRadius = freshRadius;
+  if (startDistance < radius + 1.5 * skin)
+  {
+    contactRadius = std::fmax(radius, startDistance - 0.5 * skin);
+  }
+  if (startDistance <= contactRadius)
+  {
+    // Already touching: only motion that approaches the triangle is blocked, at once. A centre
+    // exactly on the triangle has no away direction, so any motion is blocked there.
+    SweepResult result;
+    const Vec3 away = start - closest.point;
+    const bool approaching = startDistance > 0.0 ? dot(motion, away) < 0.0
+                                                  : dot(motion, motion) > 0.0;
+    result.hit = approaching;
+    result.t = approaching ? 0.0 : 1.0;
+    return result;
+  }
+  return sweepFromOutside(start, motion, contactRadius, triangle);
+}
+
+} // namespace proxima
