@@ -55,9 +55,11 @@ SweepResult sweepFromOutside(const Vec3& start, const Vec3& motion, double radiu
     const double height = dot(start - tri.a, n);
     const double speed = dot(motion, n);
     const double side = height >= 0.0 ? 1.0 : -1.0;
-    const double clearance = height * side - radius;
+    // The caller knows the start is outside the swept body; a start a rounding error inside the
+    // offset plane is on it (clearance 0), or the face crossing would go unseen.
+    const double clearance = std::fmax(height * side - radius, 0.0);
     const double approach = -speed * side;
-    if (clearance >= 0.0 && approach > 0.0 && clearance <= approach)
+    if (approach > 0.0 && clearance <= approach)
     {
       const double t = clearance / approach;
       const Vec3 onPlane = start + motion * t - n * (side * radius);

@@ -1,0 +1,23 @@
+// The knobs of the proxy solver, with the tolerance policy of Documentation/Epsilons.md.
+#pragma once
+
+namespace proxima
+{
+
+struct ProxyParameters
+{
+  /// Proxy sphere radius in metres.
+  double radius = 0.001;
+  /// Contact skin in metres: fresh contacts stop this far outside the radius. 0 picks it from
+  /// the scene (resolveSkin). Must be far above rounding and far below what a hand can feel.
+  double skin = 0.0;
+  /// Move/update iterations allowed in one tick; hitting it is reported.
+  int maxIterations = 32;
+};
+
+/// The skin used for a scene whose bounding-box diagonal is `diagonal` and whose coordinates
+/// reach `maxAbsCoordinate`: 4e-12 of the length scale, but never under 256 units in the last
+/// place of the coordinates, so that rounding never reaches through it.
+double resolveSkin(const ProxyParameters& parameters, double diagonal, double maxAbsCoordinate);
+
+} // namespace proxima

@@ -1,0 +1,91 @@
+// The virtual proxy of Ruspini and Khatib (paper section 2): each tick, move the proxy sphere
+// toward its goal until the first contact, collect the constraint planes of every primitive
+// within radius + epsilon, solve for the new goal in the dual space, and repeat until the proxy
+// stops moving. No allocation, locks, exceptions, I/O or virtual calls inside update().
+#pragma once
+
+#include "Geometry/ClosestPoint.h"
+#include "Geometry/SphereTree.h"
+#include "Proxy/CollisionScene.h"
+#include "Proxy/GoalSolver.h"
+#include "Proxy/ProxyParameters.h"
+
+#include <cstdint>
+
+namespace proxima
+{
+
+/// One constraint plane at the proxy: its normal (into free space), the primitive that made it
+/// and the contact weights of the nearest point on that primitive.
+struct ContactPlane
+{
+  Vec3 normal;
+  std::uint32_t object = 0;
+  std::uint32_t triangle = 0;
+  ClosestPointResult closest;
+  /// Penetration depth the spring has on this plane (mu of GoalSolution); force = k * depth.
+  double depth = 0.0;
+};
+
+struct ProxyTickResult
+{
+  Vec3 proxy;
+  /// Active constraint planes at the end of the tick (those the finger pushes on), at most 3.
+  int numContacts = 0;
+  ContactPlane contacts[3];
+  /// Move stages run this tick.
+  int iterations = 0;
+  /// The iteration cap ended the tick before the proxy stopped moving.
+  bool hitIterationCap = false;
+  /// The finger position was not finite: the tick was refused and the proxy held.
+  bool refusedFinger = false;
+  /// More primitives were within reach than the fixed buffers hold (planes were dropped).
+  bool contactOverflow = false;
+  /// The exact fallback answered the goal problem at least once this tick.
+  bool usedExactFallback = false;
+  QueryStats queries;
+};
+
+class ProxySolver
+{
+public:
+  static constexpr int kMaxNearbyTriangles = 256;
+
+  ProxySolver() = default;
+
+  /// Uses `scene` (not owned; must outlive its use here) with `parameters`, and places the proxy.
+  void setScene(const CollisionScene* scene, const ProxyParameters& parameters);
+  /// Places the proxy without moving through the scene (start of a run, or a teleport).
+  void resetProxy(const Vec3& position) { m_proxy = position; }
+
+  /// One tick: moves the proxy as far toward `finger` as the constraints allow.
+  ProxyTickResult update(const Vec3& finger);
+
+  const Vec3& proxy() const { return m_proxy; }
+  double radius() const { return m_parameters.radius; }
+  double skin() const { return m_skin; }
+  /// Primitives within radius + contactEpsilon() of the proxy give constraint planes.
+  double contactEpsilon() const { return 2.0 * m_skin; }
+
+private:
+  struct SweepOutcome
+  {
+    bool hit = false;
+    double t = 1.0;
+  };
+  SweepOutcome sweep(const Vec3& from, const Vec3& to, QueryStats& stats);
+  /// Fills m_planes with the deduplicated constraint planes at `position`; false on overflow.
+  bool gatherPlanes(const Vec3& position, QueryStats& stats);
+
+  const CollisionScene* m_scene = nullptr;
+  ProxyParameters m_parameters;
+  double m_skin = 0.0;
+  Vec3 m_proxy;
+  SphereTreeScratch m_scratch;
+  NearbyTriangle m_nearby[kMaxNearbyTriangles];
+  ContactPlane m_planes[kMaxConstraintPlanes];
+  Vec3 m_normals[kMaxConstraintPlanes];
+  int m_numPlanes = 0;
+};
+
+} // namespace proxima
