@@ -1,5 +1,7 @@
 #include "Geometry/ClosestPoint.h"
 
+#include <cmath>
+
 namespace proxima
 {
 namespace
@@ -54,6 +56,73 @@ ClosestPointResult nearestEdge(const Vec3& p, const Vec3& a, const Vec3& b, cons
   }
   return best;
 }
+
+// Thin and zero-area triangles. Ericson's region tests and weights cancel catastrophically when
+// the triangle is thin (errors grow like epsilon / sin^2 of its smallest angle: a corner 1e-6 off
+// the opposite edge gave points 1e-7 off the triangle and weights that missed the point by 1e-3),
+// and with coincident corners they pick a zero-length edge. Here everything is measured in the
+// frame of the longest edge: the normal is made orthogonal to that edge to working precision, so
+// its remaining error only turns the plane about the edge, which moves a thin triangle by about
+// epsilon times its length; the apex weight is a height ratio and the other two an abscissa along
+// the edge, which reproduce the point to the same accuracy. Outside the face the nearest edge is
+// the answer.
+ClosestPointResult closestOnThinTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 corners[3] = {a, b, c};
+  int i = 0; // the longest edge runs from corner i to corner j; k is the apex
+  double longestSquared = squaredDistance(a, b);
+  if (squaredDistance(b, c) > longestSquared)
+  {
+    longestSquared = squaredDistance(b, c);
+    i = 1;
+  }
+  if (squaredDistance(c, a) > longestSquared)
+  {
+    longestSquared = squaredDistance(c, a);
+    i = 2;
+  }
+  const int j = (i + 1) % 3;
+  const int k = (i + 2) % 3;
+  const Vec3& from = corners[i];
+  const Vec3 edge = corners[j] - from;
+  const Vec3 toApex = corners[k] - from;
+  const double edgeSquared = dot(edge, edge);
+  Vec3 normal = cross(edge, toApex);
+  if (!(edgeSquared > 0.0))
+  {
+    return nearestEdge(p, a, b, c);
+  }
+  normal -= edge * (dot(normal, edge) / edgeSquared);
+  const double normalSquared = dot(normal, normal);
+  const Vec3 inPlane = cross(normal, edge); // perpendicular to the edge, toward the apex
+  const double apexHeight = dot(toApex, inPlane);
+  if (!(normalSquared > 0.0) || !(apexHeight > 0.0))
+  {
+    return nearestEdge(p, a, b, c);
+  }
+  const Vec3 foot = p - normal * (dot(p - from, normal) / normalSquared);
+  const Vec3 fromFoot = foot - from;
+  const double wk = dot(fromFoot, inPlane) / apexHeight;
+  const double wj = dot(fromFoot - toApex * wk, edge) / edgeSquared;
+  const double wi = 1.0 - wj - wk;
+  if (!(wi >= 0.0 && wj >= 0.0 && wk >= 0.0))
+  {
+    return nearestEdge(p, a, b, c);
+  }
+  ClosestPointResult r;
+  r.point = foot;
+  r.weights[i] = wi;
+  r.weights[j] = wj;
+  r.weights[k] = wk;
+  r.squaredDistance = squaredDistance(p, foot);
+  r.feature = TriangleFeature::Face;
+  return r;
+}
+
+// A triangle is thin when twice its area is below sqrt(kThinSquared) times its longest edge
+// squared (its altitude over that edge under about 3% of the edge). Above this the region tests
+// below lose at most about 1e3 epsilon of the triangle's size.
+constexpr double kThinSquared = 1e-3;
 } // namespace
 
 double closestParameterOnSegment(const Vec3& p, const Vec3& a, const Vec3& b)
@@ -87,6 +156,18 @@ ClosestPointResult closestPointOnTriangle(const Vec3& p, const Vec3& a, const Ve
   {
     return vertexResult(p, b, 1);
   }
+  // The two corner tests above hold for any triangle, degenerate ones included (p is on the far
+  // side of both edge directions from the corner). The edge and face tests below do not: route
+  // thin and zero-area triangles to the robust routine first. Twice the area squared from the
+  // Gram determinant cancels on thin triangles, which only blurs the threshold.
+  const double abab = dot(ab, ab);
+  const double acac = dot(ac, ac);
+  const double abac = dot(ab, ac);
+  const double longestSquared = std::fmax(std::fmax(abab, acac), abab + acac - 2.0 * abac);
+  if (!(abab * acac - abac * abac >= kThinSquared * longestSquared * longestSquared))
+  {
+    return closestOnThinTriangle(p, a, b, c);
+  }
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
   {
@@ -109,9 +190,8 @@ ClosestPointResult closestPointOnTriangle(const Vec3& p, const Vec3& a, const Ve
   {
     return edgeResult(p, b, c, 1, 2, TriangleFeature::EdgeBC);
   }
-  // Face region. The region tests above use cancelling products, so on slivers and degenerate
-  // triangles they can send a point here that is not over the face; the projected weights are
-  // then negative or undefined, and the nearest edge is the honest answer.
+  // Face region. Rounding can still send a point here that is marginally off the face; the
+  // projected weights are then negative, and the nearest edge is the honest answer.
   const double denominator = va + vb + vc;
   const Vec3 normal = cross(ab, ac);
   const double normalSquared = dot(normal, normal);
@@ -135,17 +215,6 @@ ClosestPointResult closestPointOnTriangle(const Vec3& p, const Vec3& a, const Ve
   r.weights[2] = w;
   r.squaredDistance = squaredDistance(p, r.point);
   r.feature = TriangleFeature::Face;
-  // On a sliver (sine of the angle at a below 1e-6) the region tests lose digits and the
-  // projection can land marginally off the true face; then an edge may be nearer. Fat triangles
-  // skip this check, which keeps the common case to one projection.
-  if (normalSquared < 1e-12 * dot(ab, ab) * dot(ac, ac))
-  {
-    const ClosestPointResult edge = nearestEdge(p, a, b, c);
-    if (edge.squaredDistance < r.squaredDistance)
-    {
-      return edge;
-    }
-  }
   return r;
 }
 

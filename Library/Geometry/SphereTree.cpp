@@ -30,10 +30,18 @@ float roundUpToFloat(double value)
   return f;
 }
 
+// One coordinate rounded to the nearest float, widened back. Kept out of line on purpose: GCC 12.2
+// at -O2/-O3 vectorises the three conversions of a Vec3 and then folds the narrowing-widening pair
+// of the vector away, returning x and y unrounded (seen in the generated code; the tree's
+// containment test caught it). A scalar call per coordinate cannot be combined that way.
+[[gnu::noinline]] double roundToFloat(double value)
+{
+  return static_cast<double>(static_cast<float>(value));
+}
+
 Vec3 roundToFloatPrecision(const Vec3& v)
 {
-  return {static_cast<double>(static_cast<float>(v.x)), static_cast<double>(static_cast<float>(v.y)),
-          static_cast<double>(static_cast<float>(v.z))};
+  return {roundToFloat(v.x), roundToFloat(v.y), roundToFloat(v.z)};
 }
 
 // Smallest sphere holding three points: the midpoint of the longest edge when the opposite angle
@@ -281,6 +289,20 @@ double segmentDistanceSquared(const Vec3& start, const Vec3& motion, double moti
   return squaredDistance(toCenter, motion * s);
 }
 
+// Once the per-query cache is full a triangle reached through a second leaf sphere is tested
+// again; a gather then looks through what it already stored so that no triangle is listed twice.
+bool isStored(const NearbyTriangle* out, std::uint32_t count, std::uint32_t triangle)
+{
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    if (out[i].triangle == triangle)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Pruning compares in double against float spheres that were rounded up by at least one float
 // ulp; this slack keeps exact tangencies of zero-radius spheres from being pruned by rounding.
 constexpr double kPruneSlack = 1.0 + 1e-9;
@@ -499,7 +521,8 @@ std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& poi
       ++counts.trianglesTested;
       const TriangleCorners& c = mesh.corners(leaf.triangle);
       const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
-      if (closest.squaredDistance <= maxDistanceSquared)
+      if (closest.squaredDistance <= maxDistanceSquared &&
+          !(scratch.tested.full() && isStored(out, found < capacity ? found : capacity, leaf.triangle)))
       {
         if (found < capacity)
         {

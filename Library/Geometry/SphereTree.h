@@ -115,7 +115,9 @@ public:
 
   /// (b) Every triangle within `maxDistance` of `point` (closest point and weights included).
   /// Writes at most `capacity` of them to `out` and returns how many there are in all, so a
-  /// return above `capacity` says the buffer overflowed.
+  /// return above `capacity` says the buffer overflowed. The stored triangles are distinct; the
+  /// count is exact too unless the buffer overflowed in a query that tested more than
+  /// TriangleTestCache::kMaxEntries triangles (then it may count a triangle twice).
   std::uint32_t gatherWithin(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
                              NearbyTriangle* out, std::uint32_t capacity,
                              SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;

@@ -12,9 +12,17 @@ namespace
 // (c > 0) while approaching it (b < 0); the form c / (-b + sqrt) avoids cancellation.
 bool enterQuadratic(double a, double b, double c, double& t)
 {
-  if (!(c > 0.0) || !(b < 0.0) || !(a > 0.0))
+  if (!(b < 0.0) || !(a > 0.0))
   {
     return false;
+  }
+  if (c <= 0.0)
+  {
+    // Already inside, which the caller's closest point ruled out: only rounding disagrees (of
+    // order epsilon times the coordinates, 1e-12 at 1e4). Moving in, the entry is now; refusing
+    // it let a sphere stopped on an edge pass through the triangle on its next sweep.
+    t = 0.0;
+    return true;
   }
   const double discriminant = b * b - a * c;
   if (discriminant < 0.0)

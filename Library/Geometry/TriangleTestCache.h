@@ -1,6 +1,7 @@
 // The per-query cache of paper section 5: several leaf spheres cover one triangle, and the exact
 // test runs once per triangle per query. A fixed open-addressing set, cleared in O(1) by a
-// generation counter; when it is full, triangles are simply tested again (correct, slower).
+// generation counter; when it is full, triangles are simply tested again (correct, slower), and a
+// query that collects results (gatherWithin) checks `full()` to keep them free of duplicates.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +12,7 @@ namespace proxima
 class TriangleTestCache
 {
 public:
-  static constexpr std::uint32_t kSlots = 1024;
+  static constexpr std::uint32_t kSlots = 4096;
   static constexpr std::uint32_t kMaxEntries = kSlots / 2;
 
   /// Starts a new query: everything inserted before is forgotten.
@@ -30,7 +31,11 @@ public:
     }
   }
 
-  /// True if `triangle` was not yet in the set (it is now); false if it was already tested.
+  /// True once the set holds kMaxEntries triangles: insert() then answers true for every triangle.
+  bool full() const { return m_numEntries >= kMaxEntries; }
+
+  /// True if `triangle` was not yet in the set (it is now), or if the set is full; false if it
+  /// was already tested.
   bool insert(std::uint32_t triangle)
   {
     if (m_numEntries >= kMaxEntries)
