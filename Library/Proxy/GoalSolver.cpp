@@ -24,6 +24,28 @@ bool isFeasible(const Vec3& step, const Vec3* normals, int numPlanes, double sca
   return true;
 }
 
+// The dual answer as a KKT point: each active plane holds the goal (n_i . x = 0) and the depths
+// rebuild the spring, v - x = -sum mu_i n_i. Feasibility alone misses a dual solve that went
+// wrong: a plane the finger lies in to rounding (u . n_i ~ -1e-17) puts c_i n_i ~1e17 from the
+// origin, GJK's tolerances (relative to the largest |w|^2) then stop it at once, and its answer
+// can be feasible yet far from the nearest point.
+bool isKktPoint(const Vec3& toFinger, const Vec3* normals, const GoalSolution& s, double scale)
+{
+  Vec3 residual = toFinger - s.displacement;
+  double depthSum = 0.0;
+  for (int k = 0; k < s.numActive; ++k)
+  {
+    const Vec3& n = normals[s.active[k]];
+    if (!(std::fabs(dot(n, s.displacement)) <= kFeasibilityTolerance * scale))
+    {
+      return false;
+    }
+    residual += n * s.depth[k];
+    depthSum += s.depth[k];
+  }
+  return norm(residual) <= kFeasibilityTolerance * (scale + depthSum);
+}
+
 double determinant3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
 
 // Solves G mu = rhs for the Gram matrix G of `count` normals by Cramer's rule; false if the
@@ -207,7 +229,8 @@ GoalSolution solveGoal(const Vec3& toFinger, const Vec3* normals, int numPlanes)
       return solveGoalByEnumeration(toFinger, normals, numPlanes);
     }
   }
-  if (!isFeasible(solution.displacement, normals, numPlanes, length))
+  if (!isFeasible(solution.displacement, normals, numPlanes, length) ||
+      !isKktPoint(toFinger, normals, solution, length))
   {
     return solveGoalByEnumeration(toFinger, normals, numPlanes);
   }

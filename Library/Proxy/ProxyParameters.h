@@ -12,7 +12,12 @@ struct ProxyParameters
   /// the scene (resolveSkin). Must be far above rounding and far below what a hand can feel.
   double skin = 0.0;
   /// Move/update iterations allowed in one tick; hitting it is reported.
-  int maxIterations = 32;
+  int maxIterations = 256;
+  /// Temporal coherence: keep the triangles within radius + margin of the proxy and answer the
+  /// tick's queries from them while the proxy stays within half the margin. Exact either way.
+  bool temporalCoherence = true;
+  /// The margin in metres; 0 means one proxy radius.
+  double coherenceMargin = 0.0;
 };
 
 /// The skin used for a scene whose bounding-box diagonal is `diagonal` and whose coordinates

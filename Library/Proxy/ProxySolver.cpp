@@ -9,7 +9,96 @@ namespace
 // Two planes whose unit normals agree this closely are one plane: triangles sharing the touched
 // edge or vertex give the same normal, and one copy is all the goal solver needs.
 constexpr double kSameNormalCosine = 1.0 - 1e-14;
+
+// The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
+// axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
+constexpr double kMaxCurvatureStretch = 64.0;
+
+// Iterations in a row that bring the proxy no nearer the finger before the tick ends: the paper's
+// loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
+// trading rounding errors between two planes, as 1 km from the origin).
+constexpr int kMaxStalledIterations = 3;
+
+// Whether the proxy, touching `corners` at `closest` with contact normal `normal`, sits on a curved
+// part of the triangle's configuration-space obstacle: an edge or corner contact off the face's
+// normal line. Right above a face (or an edge shared with a coplanar neighbour) it is flat.
+bool touchesCurvedPart(const TriangleCorners& corners, const ClosestPointResult& closest,
+                       const Vec3& normal)
+{
+  if (closest.feature == TriangleFeature::Face)
+  {
+    return false;
+  }
+  const Vec3 faceNormal = cross(corners.b - corners.a, corners.c - corners.a);
+  const double length = norm(faceNormal);
+  if (!(length > 0.0))
+  {
+    return true; // a zero-area triangle is all edges and corners
+  }
+  return std::fabs(dot(faceNormal, normal)) < (1.0 - 1e-9) * length;
+}
+
+// The edge of `feature` as its two corners, or false for a vertex or the face.
+bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from, Vec3& to)
+{
+  switch (feature)
+  {
+    case TriangleFeature::EdgeAB: from = corners.a; to = corners.b; return true;
+    case TriangleFeature::EdgeBC: from = corners.b; to = corners.c; return true;
+    case TriangleFeature::EdgeCA: from = corners.c; to = corners.a; return true;
+    default: return false;
+  }
+}
 } // namespace
+
+Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const
+{
+  const Vec3 planar = solution.displacement;
+  if (solution.numActive != 1)
+  {
+    return planar;
+  }
+  const ContactPlane& plane = m_planes[solution.active[0]];
+  if (!plane.curved)
+  {
+    return planar; // a face's configuration-space surface is its plane: the slide is exact
+  }
+  // An edge or a corner: the configuration-space surface is a cylinder or a sphere of radius rho
+  // about it, and the tangent plane's goal undershoots. The Lagrangian's Hessian along the curved
+  // directions is 1 - h / rho (h: the finger's depth below the plane, the multiplier), so the
+  // Newton step stretches the slide by 1 / (1 - h / rho): the slide then ends on the ray from the
+  // edge (or corner) through the finger, and the next move falls onto the minimum.
+  const double rho = std::sqrt(plane.closest.squaredDistance);
+  const double depth = -dot(toFinger, plane.normal);
+  if (!(rho > 0.0) || !(depth > 0.0))
+  {
+    return planar;
+  }
+  const double hessian = 1.0 - depth / rho;
+  if (!(hessian > 1.0 / kMaxCurvatureStretch))
+  {
+    // The finger is at or past the edge's axis (the corner): no minimum lies on this arc and
+    // the quadratic model says nothing useful. The plain slide rolls the proxy over.
+    return planar;
+  }
+  const double stretch = 1.0 / hessian;
+  Vec3 from;
+  Vec3 to;
+  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
+  if (!edgeOf(corners, plane.closest.feature, from, to))
+  {
+    return planar * stretch; // a corner: every tangent direction is curved
+  }
+  const Vec3 along = to - from;
+  const double alongSquared = squaredNorm(along);
+  if (!(alongSquared > 0.0))
+  {
+    return planar * stretch;
+  }
+  // Along the edge the cylinder is straight: only the part across it is stretched.
+  const Vec3 straight = along * (dot(planar, along) / alongSquared);
+  return straight + (planar - straight) * stretch;
+}
 
 void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& parameters)
 {
@@ -19,6 +108,31 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
              ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
              : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
+  m_coherenceMargin = parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin
+                                                       : parameters.radius;
+  m_cache.invalidate();
+}
+
+void ProxySolver::refreshCache(QueryStats& stats)
+{
+  if (!m_parameters.temporalCoherence || m_scene == nullptr)
+  {
+    return;
+  }
+  const double contactReach = m_parameters.radius + contactEpsilon();
+  if (m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * m_coherenceMargin)
+  {
+    return;
+  }
+  // A proxy that travelled far last tick (a jab, free flight) will likely leave any ball worth
+  // caching: this tick goes to the trees, and the cache waits for calmer ticks. (Not the
+  // finger's distance: in sustained contact the finger is deep inside by design.)
+  if (m_lastTravel > 0.5 * m_coherenceMargin)
+  {
+    m_cache.invalidate();
+    return;
+  }
+  m_cache.rebuild(*m_scene, m_proxy, contactReach + m_coherenceMargin, m_scratch, stats);
 }
 
 ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, QueryStats& stats)
@@ -33,6 +147,14 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
   query.end = to;
   query.radius = m_parameters.radius;
   query.skin = m_skin;
+  const double sweepReach = m_parameters.radius + m_skin;
+  if (m_cache.coversBall(from, sweepReach) && m_cache.coversBall(to, sweepReach))
+  {
+    const SweepContact contact = m_cache.firstContact(*m_scene, query, stats);
+    outcome.hit = contact.hit;
+    outcome.t = contact.hit ? contact.t : 1.0;
+    return outcome;
+  }
   for (const CollisionObject& object : m_scene->objects)
   {
     const SweepContact contact = object.tree.firstContact(object.mesh, query, m_scratch, &stats);
@@ -59,46 +181,71 @@ bool ProxySolver::gatherPlanes(const Vec3& position, QueryStats& stats)
     return complete;
   }
   const double reach = m_parameters.radius + contactEpsilon();
-  for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
+  std::uint32_t stored = 0;
+  if (m_cache.coversBall(position, reach))
   {
-    const CollisionObject& object = m_scene->objects[objectIndex];
-    const std::uint32_t found = object.tree.gatherWithin(object.mesh, position, reach, m_nearby,
-                                                         kMaxNearbyTriangles, m_scratch, &stats);
-    complete = complete && found <= kMaxNearbyTriangles;
-    const std::uint32_t stored = found < kMaxNearbyTriangles ? found : kMaxNearbyTriangles;
-    for (std::uint32_t i = 0; i < stored; ++i)
+    const std::uint32_t found = m_cache.gatherWithin(*m_scene, position, reach, m_nearby,
+                                                     m_nearbyObject, kMaxNearbyTriangles, stats);
+    complete = found <= kMaxNearbyTriangles;
+    stored = complete ? found : kMaxNearbyTriangles;
+  }
+  else
+  {
+    for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
     {
-      const NearbyTriangle& near = m_nearby[i];
-      const Vec3 away = position - near.closest.point;
-      const double length = norm(away);
-      if (!(length > 0.0))
+      const CollisionObject& object = m_scene->objects[objectIndex];
+      const std::uint32_t room = kMaxNearbyTriangles - stored;
+      const std::uint32_t found = object.tree.gatherWithin(object.mesh, position, reach,
+                                                           m_nearby + stored, room, m_scratch,
+                                                           &stats);
+      complete = complete && found <= room;
+      const std::uint32_t kept = found < room ? found : room;
+      for (std::uint32_t i = 0; i < kept; ++i)
       {
-        continue; // the centre lies on the triangle: no direction is free of it
+        m_nearbyObject[stored + i] = objectIndex;
       }
-      const Vec3 normal = away / length;
-      bool duplicate = false;
-      for (int k = 0; k < m_numPlanes && !duplicate; ++k)
-      {
-        duplicate = dot(m_normals[k], normal) >= kSameNormalCosine;
-      }
+      stored += kept;
+    }
+  }
+  for (std::uint32_t i = 0; i < stored; ++i)
+  {
+    const NearbyTriangle& near = m_nearby[i];
+    const Vec3 away = position - near.closest.point;
+    const double length = norm(away);
+    if (!(length > 0.0))
+    {
+      continue; // the centre lies on the triangle: no direction is free of it
+    }
+    const Vec3 normal = away / length;
+    const bool curved = touchesCurvedPart(
+      m_scene->objects[m_nearbyObject[i]].mesh.corners(near.triangle), near.closest, normal);
+    bool duplicate = false;
+    for (int k = 0; k < m_numPlanes && !duplicate; ++k)
+    {
+      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine;
       if (duplicate)
       {
-        continue;
+        m_planes[k].curved = m_planes[k].curved && curved; // one flat witness makes it flat
       }
-      if (m_numPlanes == kMaxConstraintPlanes)
-      {
-        complete = false;
-        continue;
-      }
-      ContactPlane& plane = m_planes[m_numPlanes];
-      plane.normal = normal;
-      plane.object = objectIndex;
-      plane.triangle = near.triangle;
-      plane.closest = near.closest;
-      plane.depth = 0.0;
-      m_normals[m_numPlanes] = normal;
-      ++m_numPlanes;
     }
+    if (duplicate)
+    {
+      continue;
+    }
+    if (m_numPlanes == kMaxConstraintPlanes)
+    {
+      complete = false;
+      continue;
+    }
+    ContactPlane& plane = m_planes[m_numPlanes];
+    plane.normal = normal;
+    plane.object = m_nearbyObject[i];
+    plane.triangle = near.triangle;
+    plane.closest = near.closest;
+    plane.depth = 0.0;
+    plane.curved = curved;
+    m_normals[m_numPlanes] = normal;
+    ++m_numPlanes;
   }
   return complete;
 }
@@ -114,9 +261,16 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
   }
   // Steps shorter than this are rounding noise of the goal solve, not motion: 1% of the skin.
   const double stepTolerance = 0.01 * m_skin;
+  refreshCache(result.queries);
+  const Vec3 tickStart = m_proxy;
   GoalSolution solution;
   Vec3 previousGoal = m_proxy;
   bool blockedAtOnce = false;
+  int stalled = 0;
+  // A stretched slide is a Newton step: it must pay off with the move after it, or the tick goes
+  // on with plain slides (a trust region shrunk to the paper's planar steps).
+  bool mayStretch = true;
+  double beforeStretch = -1.0;
   for (;;)
   {
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
@@ -124,11 +278,14 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
     solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
     result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
-    const Vec3 goal = m_proxy + solution.displacement;
     if (squaredNorm(solution.displacement) <= stepTolerance * stepTolerance)
     {
       break; // a local minimum: no feasible step brings the proxy nearer the finger
     }
+    const Vec3 step =
+      mayStretch ? curvatureCorrectedStep(solution, finger - m_proxy) : solution.displacement;
+    const bool stretched = step != solution.displacement;
+    const Vec3 goal = m_proxy + step;
     if (blockedAtOnce && goal == previousGoal)
     {
       break; // the last move was blocked at once and nothing changed: repeating cannot help
@@ -142,6 +299,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     ++result.iterations;
     const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
     const Vec3 before = m_proxy;
+    const double distanceBefore = norm(finger - before);
     m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
     blockedAtOnce = m_proxy == before;
     previousGoal = goal;
@@ -150,8 +308,32 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       solution = GoalSolution{};
       break;
     }
+    const double toFinger = norm(finger - m_proxy);
+    if (stretched)
+    {
+      beforeStretch = distanceBefore;
+      continue;
+    }
+    if (beforeStretch >= 0.0 && !(toFinger < beforeStretch - stepTolerance))
+    {
+      mayStretch = false; // the stretched slide and its fall ended no nearer: stop stretching
+    }
+    beforeStretch = -1.0;
+    if (toFinger < distanceBefore - stepTolerance)
+    {
+      stalled = 0;
+    }
+    else if (++stalled == kMaxStalledIterations)
+    {
+      // No nearer after several moves: rounding traded between planes, not progress. The last
+      // update stage's planes stand for the contact.
+      result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
+      solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+      break;
+    }
   }
   result.proxy = m_proxy;
+  m_lastTravel = norm(m_proxy - tickStart);
   for (int k = 0; k < solution.numActive; ++k)
   {
     ContactPlane plane = m_planes[solution.active[k]];

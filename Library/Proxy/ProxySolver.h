@@ -6,6 +6,7 @@
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SphereTree.h"
+#include "Proxy/CandidateCache.h"
 #include "Proxy/CollisionScene.h"
 #include "Proxy/GoalSolver.h"
 #include "Proxy/ProxyParameters.h"
@@ -25,6 +26,9 @@ struct ContactPlane
   ClosestPointResult closest;
   /// Penetration depth the spring has on this plane (mu of GoalSolution); force = k * depth.
   double depth = 0.0;
+  /// The configuration-space surface here is a cylinder or sphere (the proxy touches an edge or
+  /// corner off the normal of every triangle that gave this plane), not a flat face.
+  bool curved = false;
 };
 
 struct ProxyTickResult
@@ -56,7 +60,12 @@ public:
   /// Uses `scene` (not owned; must outlive its use here) with `parameters`, and places the proxy.
   void setScene(const CollisionScene* scene, const ProxyParameters& parameters);
   /// Places the proxy without moving through the scene (start of a run, or a teleport).
-  void resetProxy(const Vec3& position) { m_proxy = position; }
+  void resetProxy(const Vec3& position)
+  {
+    m_proxy = position;
+    m_lastTravel = 0.0;
+    m_cache.invalidate();
+  }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow.
   ProxyTickResult update(const Vec3& finger);
@@ -76,13 +85,22 @@ private:
   SweepOutcome sweep(const Vec3& from, const Vec3& to, QueryStats& stats);
   /// Fills m_planes with the deduplicated constraint planes at `position`; false on overflow.
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
+  /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
+  /// its configuration-space surface (a Newton step; see the .cpp).
+  Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
+  /// Re-centres the candidate cache on the proxy when it has wandered off, at a tick's start.
+  void refreshCache(QueryStats& stats);
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;
+  CandidateCache m_cache;
+  double m_coherenceMargin = 0.0;
+  double m_lastTravel = 0.0;
   NearbyTriangle m_nearby[kMaxNearbyTriangles];
+  std::uint32_t m_nearbyObject[kMaxNearbyTriangles];
   ContactPlane m_planes[kMaxConstraintPlanes];
   Vec3 m_normals[kMaxConstraintPlanes];
   int m_numPlanes = 0;
