@@ -1,0 +1,31 @@
+#include "Runtime/LockstepRuntime.h"
+
+#include <cmath>
+
+namespace proxima
+{
+
+std::uint64_t ticksCovering(double start, double end, double rate)
+{
+  if (!(end >= start) || !(rate > 0.0))
+  {
+    return 0;
+  }
+  // A small allowance keeps a path that ends exactly on a tick from losing that tick to rounding.
+  return static_cast<std::uint64_t>(std::floor((end - start) * rate + 1e-9)) + 1;
+}
+
+void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDevice& device,
+                 const ServoParameters& parameters,
+                 const std::function<void(const TickRecord&)>& onTick)
+{
+  Vec3 lastForce;
+  for (std::uint64_t tick = 0; tick < settings.numTicks; ++tick)
+  {
+    // Time from the tick count, not by accumulating 1/rate: no drift over millions of ticks.
+    const double time = settings.startTime + static_cast<double>(tick) / settings.rate;
+    onTick(runServoTick(tick, time, solver, device, parameters, lastForce));
+  }
+}
+
+} // namespace proxima

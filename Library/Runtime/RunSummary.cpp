@@ -1,0 +1,47 @@
+#include "Runtime/RunSummary.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace proxima
+{
+
+void RunSummary::add(const TickRecord& record)
+{
+  ++m_ticks;
+  m_contactTicks += record.contacts > 0 ? 1 : 0;
+  m_totalIterations += static_cast<std::uint64_t>(record.iterations);
+  m_maxIterations = std::max(m_maxIterations, record.iterations);
+  m_capTicks += record.hitIterationCap ? 1 : 0;
+  m_refusedTicks += record.fingerRefused ? 1 : 0;
+  m_overflowTicks += record.contactOverflow ? 1 : 0;
+  m_clampedTicks += record.forceClamped ? 1 : 0;
+  m_trianglesTested += record.trianglesTested;
+  m_maxForce = std::max(m_maxForce, norm(record.force));
+  m_solveNanoseconds.push_back(record.solveNanoseconds);
+  m_sorted = false;
+}
+
+double RunSummary::solveNanosecondsQuantile(double q) const
+{
+  if (m_solveNanoseconds.empty())
+  {
+    return 0.0;
+  }
+  if (!m_sorted)
+  {
+    std::sort(m_solveNanoseconds.begin(), m_solveNanoseconds.end());
+    m_sorted = true;
+  }
+  const double clamped = std::clamp(q, 0.0, 1.0);
+  const auto rank = static_cast<std::size_t>(
+    std::ceil(clamped * static_cast<double>(m_solveNanoseconds.size())));
+  return static_cast<double>(m_solveNanoseconds[rank == 0 ? 0 : rank - 1]);
+}
+
+double RunSummary::meanTrianglesTested() const
+{
+  return m_ticks == 0 ? 0.0 : static_cast<double>(m_trianglesTested) / static_cast<double>(m_ticks);
+}
+
+} // namespace proxima

@@ -1,0 +1,158 @@
+// runServoTick: force on the finger = kp (proxy - finger), clamped to the device limit; a finger
+// sample that is invalid or not finite is refused, the proxy held and the last force held
+// (DESIGN.md section 6: never NaN into a force).
+#include "Runtime/ServoTick.h"
+
+#include "Geometry/ProceduralMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace proxima
+{
+namespace
+{
+// A device that reports the samples it is given and records what it is told.
+class FakeDevice final : public HapticDevice
+{
+public:
+  DeviceSample next;
+  std::vector<Vec3> forces;
+  std::vector<double> readTimes;
+  std::vector<double> writeTimes;
+
+  DeviceSample read(double time) override
+  {
+    readTimes.push_back(time);
+    return next;
+  }
+  void writeForce(const Vec3& force, double time) override
+  {
+    forces.push_back(force);
+    writeTimes.push_back(time);
+  }
+};
+
+class ServoTickTest : public testing::Test
+{
+protected:
+  ServoTickTest()
+  {
+    TriangleMesh mesh;
+    MeshError error;
+    EXPECT_TRUE(mesh.build(makeGrid(0.2, 4, 0.0), error)) << error.message;
+    scene.addObject(std::move(mesh));
+    ProxyParameters parameters;
+    parameters.radius = 0.001;
+    solver = std::make_unique<ProxySolver>();
+    solver->setScene(&scene, parameters);
+    solver->resetProxy({0.0, 0.0, 0.01});
+  }
+  CollisionScene scene;
+  std::unique_ptr<ProxySolver> solver;
+  FakeDevice device;
+};
+
+TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
+{
+  ServoParameters servo;
+  servo.stiffness = 750.0;
+  servo.maxForce = 100.0;
+  Vec3 lastForce;
+  device.next = DeviceSample{{0.002, -0.001, -0.004}, true};
+  const TickRecord r = runServoTick(7, 0.25, *solver, device, servo, lastForce);
+  EXPECT_EQ(r.tick, 7u);
+  EXPECT_EQ(r.time, 0.25);
+  EXPECT_EQ(r.finger, device.next.position);
+  EXPECT_EQ(r.proxy, solver->proxy());
+  EXPECT_GT(r.proxy.z, 0.0009);
+  const Vec3 expected = (r.proxy - r.finger) * 750.0;
+  EXPECT_NEAR(r.force.x, expected.x, 1e-15 * norm(expected));
+  EXPECT_NEAR(r.force.y, expected.y, 1e-15 * norm(expected));
+  EXPECT_NEAR(r.force.z, expected.z, 1e-15 * norm(expected));
+  EXPECT_GT(r.force.z, 0.0); // pushes the finger out of the floor
+  EXPECT_FALSE(r.forceClamped);
+  EXPECT_FALSE(r.fingerRefused);
+  EXPECT_EQ(r.contacts, 1);
+  EXPECT_GE(r.iterations, 1);
+  EXPECT_GE(r.solveNanoseconds, 0);
+  // The device got that force at that time, and lastForce is it.
+  ASSERT_EQ(device.forces.size(), 1u);
+  EXPECT_EQ(device.forces[0], r.force);
+  EXPECT_EQ(device.writeTimes[0], 0.25);
+  EXPECT_EQ(device.readTimes[0], 0.25);
+  EXPECT_EQ(lastForce, r.force);
+}
+
+TEST_F(ServoTickTest, FreeFingerGivesZeroForce)
+{
+  ServoParameters servo;
+  Vec3 lastForce{1, 2, 3};
+  device.next = DeviceSample{{0.01, 0.02, 0.03}, true};
+  const TickRecord r = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  EXPECT_EQ(r.proxy, r.finger);
+  EXPECT_EQ(r.force, Vec3{});
+  EXPECT_EQ(r.contacts, 0);
+  EXPECT_EQ(lastForce, Vec3{});
+}
+
+TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
+{
+  ServoParameters servo;
+  servo.stiffness = 5000.0;
+  servo.maxForce = 3.0;
+  Vec3 lastForce;
+  device.next = DeviceSample{{0.003, 0.0, -0.02}, true};
+  const TickRecord r = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  const Vec3 spring = (r.proxy - r.finger) * servo.stiffness;
+  ASSERT_GT(norm(spring), servo.maxForce);
+  EXPECT_TRUE(r.forceClamped);
+  EXPECT_NEAR(norm(r.force), 3.0, 1e-14);
+  EXPECT_NEAR(dot(normalizedOrZero(r.force), normalizedOrZero(spring)), 1.0, 1e-15);
+  EXPECT_EQ(device.forces.back(), r.force);
+}
+
+TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
+{
+  ServoParameters servo;
+  Vec3 lastForce;
+  device.next = DeviceSample{{0.0, 0.0, -0.003}, true};
+  const TickRecord pressed = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  const Vec3 proxy = solver->proxy();
+  ASSERT_NE(pressed.force, Vec3{});
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::uint64_t tick = 1;
+  for (const Vec3& bad : {Vec3{nan, 0, 0}, Vec3{0, inf, 0}, Vec3{0, 0, -inf}, Vec3{nan, nan, nan}})
+  {
+    device.next = DeviceSample{bad, true};
+    const TickRecord r = runServoTick(tick, tick * 0.001, *solver, device, servo, lastForce);
+    ++tick;
+    EXPECT_TRUE(r.fingerRefused);
+    EXPECT_EQ(r.force, pressed.force);
+    EXPECT_EQ(device.forces.back(), pressed.force);
+    EXPECT_EQ(lastForce, pressed.force);
+    EXPECT_EQ(r.proxy, proxy);
+    EXPECT_EQ(solver->proxy(), proxy);
+    EXPECT_FALSE(r.forceClamped);
+  }
+  // An invalid sample (device read error) is refused the same way, whatever it holds.
+  device.next = DeviceSample{{0.0, 0.0, -0.5}, false};
+  const TickRecord invalid = runServoTick(tick, tick * 0.001, *solver, device, servo, lastForce);
+  EXPECT_TRUE(invalid.fingerRefused);
+  EXPECT_EQ(invalid.force, pressed.force);
+  EXPECT_EQ(solver->proxy(), proxy);
+  // A good sample again: the spring law resumes.
+  device.next = DeviceSample{{0.001, 0.0, -0.003}, true};
+  const TickRecord again = runServoTick(tick + 1, 0.01, *solver, device, servo, lastForce);
+  EXPECT_FALSE(again.fingerRefused);
+  const Vec3 expected = (again.proxy - again.finger) * servo.stiffness;
+  EXPECT_NEAR(distance(again.force, expected), 0.0, 1e-15 * norm(expected));
+}
+
+} // namespace
+} // namespace proxima
