@@ -1,0 +1,73 @@
+#include "IO/MeshReader.h"
+
+#include "IO/MeshFileFormat.h"
+#include "IO/Private/FileChecks.h"
+#include "IO/Private/FormatSignatures.h"
+#include "IO/Private/ObjReader.h"
+#include "IO/Private/OffReader.h"
+#include "IO/Private/PlyReader.h"
+#include "IO/Private/PolyDataToSoup.h"
+#include "IO/Private/VtkReaders.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace proxima
+{
+
+TriangleSoup readMeshFile(const std::string& path, double scale)
+{
+  if (!(std::isfinite(scale) && scale > 0.0))
+  {
+    std::ostringstream out;
+    out << "mesh scale must be a positive finite number, not " << scale;
+    throw std::invalid_argument(out.str());
+  }
+  const std::optional<MeshFileFormat> format = meshFileFormatFromPath(path);
+  if (!format)
+  {
+    const std::string extension = std::filesystem::path(path).extension().string();
+    throw InputError(path, (extension.empty() ? std::string("no file extension")
+                                              : "unsupported file extension '" + extension + "'") +
+                             " (mesh files: " + readableMeshExtensions() + ")");
+  }
+  const std::uintmax_t fileSize = detail::requireReadableFile(path);
+  detail::checkSignature(path, *format, fileSize);
+
+  vtkSmartPointer<vtkPolyData> data;
+  switch (*format)
+  {
+  case MeshFileFormat::Off:
+    data = detail::readOffWithOpenMesh(path);
+    break;
+  case MeshFileFormat::Ply:
+    data = detail::readPly(path, fileSize);
+    break;
+  case MeshFileFormat::Obj:
+    data = detail::readObj(path);
+    break;
+  default:
+    data = detail::readWithVtk(path, *format);
+    break;
+  }
+  return detail::polyDataToSoup(data, path, scale);
+}
+
+TriangleMesh loadTriangleMesh(const std::string& path, double scale)
+{
+  TriangleSoup soup = readMeshFile(path, scale);
+  TriangleMesh mesh;
+  MeshError error;
+  if (!mesh.build(std::move(soup), error))
+  {
+    throw InputError(path, error.message);
+  }
+  return mesh;
+}
+
+} // namespace proxima

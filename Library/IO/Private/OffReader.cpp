@@ -1,0 +1,321 @@
+#include "IO/Private/OffReader.h"
+
+#include "IO/InputError.h"
+
+#include <OpenMesh/Core/IO/Options.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <OpenMesh/Core/IO/reader/OFFReader.hh>
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cctype>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+namespace proxima::detail
+{
+namespace
+{
+using OpenMesh::EdgeHandle;
+using OpenMesh::FaceHandle;
+using OpenMesh::HalfedgeHandle;
+using OpenMesh::VertexHandle;
+
+/// Thrown from inside OpenMesh's parser to stop it at the first defect: the parser itself never
+/// checks its stream, and would go on reading zeros (or stale values) to the end.
+struct StopParsing
+{
+  std::string defect;
+};
+
+/// Receives what OpenMesh's OFF parser reads. Only vertices, faces, vertex normals and texture
+/// coordinates matter; every other callback of the interface is accepted and ignored.
+class SoupImporter : public OpenMesh::IO::BaseImporter
+{
+public:
+  SoupImporter(const std::istream& stream, std::uint64_t expectedVertices,
+               std::uint64_t expectedFaces)
+    : m_stream(stream), m_expectedVertices(expectedVertices), m_expectedFaces(expectedFaces)
+  {
+    m_points->SetDataTypeToDouble();
+  }
+
+  vtkSmartPointer<vtkPolyData> takePolyData()
+  {
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(m_points);
+    data->SetPolys(m_polys);
+    if (m_lines->GetNumberOfCells() > 0)
+    {
+      data->SetLines(m_lines);
+    }
+    if (m_verts->GetNumberOfCells() > 0)
+    {
+      data->SetVerts(m_verts);
+    }
+    if (m_hasNormals)
+    {
+      m_normals->SetNumberOfComponents(3);
+      m_normals->SetName("Normals");
+      m_normals->SetNumberOfTuples(m_points->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < m_points->GetNumberOfPoints(); ++i)
+      {
+        const auto& n = m_normalValues[static_cast<std::size_t>(i)];
+        m_normals->SetTuple3(i, n[0], n[1], n[2]);
+      }
+      data->GetPointData()->SetNormals(m_normals);
+    }
+    if (m_hasTexCoords)
+    {
+      m_texCoords->SetNumberOfComponents(2);
+      m_texCoords->SetName("TCoords");
+      m_texCoords->SetNumberOfTuples(m_points->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < m_points->GetNumberOfPoints(); ++i)
+      {
+        const auto& t = m_texCoordValues[static_cast<std::size_t>(i)];
+        m_texCoords->SetTuple2(i, t[0], t[1]);
+      }
+      data->GetPointData()->SetTCoords(m_texCoords);
+    }
+    return data;
+  }
+
+  std::uint64_t numVertices() const { return m_numVertices; }
+  std::uint64_t numFaces() const { return m_numFaces; }
+
+  VertexHandle add_vertex(const OpenMesh::Vec3f& p) override
+  {
+    return addVertex(p[0], p[1], p[2]);
+  }
+  VertexHandle add_vertex(const OpenMesh::Vec3d& p) override
+  {
+    return addVertex(p[0], p[1], p[2]);
+  }
+  VertexHandle add_vertex() override { return addVertex(0.0, 0.0, 0.0); }
+
+  FaceHandle add_face(const VHandles& indices) override
+  {
+    if (m_stream.fail())
+    {
+      throw StopParsing{"cannot read face " + std::to_string(m_numFaces) + " (of " +
+                        std::to_string(m_expectedFaces) + "): malformed or truncated data"};
+    }
+    m_ids.clear();
+    for (const VertexHandle& handle : indices)
+    {
+      // OpenMesh keeps the parsed unsigned index in an int: a huge one comes back negative.
+      const auto index = static_cast<std::uint32_t>(handle.idx());
+      if (index >= m_numVertices)
+      {
+        throw StopParsing{"face " + std::to_string(m_numFaces) + " refers to vertex " +
+                          std::to_string(index) + ", out of range (the file has " +
+                          std::to_string(m_numVertices) + " vertices)"};
+      }
+      m_ids.push_back(static_cast<vtkIdType>(index));
+    }
+    vtkCellArray* cells = m_ids.size() >= 3 ? m_polys.Get() : (m_ids.size() == 2 ? m_lines.Get() : m_verts.Get());
+    if (!m_ids.empty())
+    {
+      cells->InsertNextCell(static_cast<vtkIdType>(m_ids.size()), m_ids.data());
+    }
+    return FaceHandle(static_cast<int>(m_numFaces++));
+  }
+  FaceHandle add_face(HalfedgeHandle) override { return FaceHandle(); }
+  HalfedgeHandle add_edge(VertexHandle, VertexHandle) override { return HalfedgeHandle(); }
+
+  void set_normal(VertexHandle vh, const OpenMesh::Vec3f& n) override
+  {
+    setNormal(vh, n[0], n[1], n[2]);
+  }
+  void set_normal(VertexHandle vh, const OpenMesh::Vec3d& n) override
+  {
+    setNormal(vh, n[0], n[1], n[2]);
+  }
+  void set_texcoord(VertexHandle vh, const OpenMesh::Vec2f& t) override
+  {
+    if (vh.idx() >= 0 && static_cast<std::size_t>(vh.idx()) < m_texCoordValues.size())
+    {
+      m_hasTexCoords = true;
+      m_texCoordValues[static_cast<std::size_t>(vh.idx())] = {t[0], t[1]};
+    }
+  }
+
+  void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<OpenMesh::Vec2f>&) override {}
+  void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<OpenMesh::Vec3f>&) override {}
+  void set_face_texindex(FaceHandle, int) override {}
+  void set_point(VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_halfedge(VertexHandle, HalfedgeHandle) override {}
+  void set_color(VertexHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(VertexHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(VertexHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_next(HalfedgeHandle, HalfedgeHandle) override {}
+  void set_face(HalfedgeHandle, FaceHandle) override {}
+  void request_face_texcoords2D() override {}
+  void set_texcoord(HalfedgeHandle, const OpenMesh::Vec2f&) override {}
+  void set_texcoord(VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_texcoord(HalfedgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_status(HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_color(EdgeHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(EdgeHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(EdgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(EdgeHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_normal(FaceHandle, const OpenMesh::Vec3f&) override {}
+  void set_normal(FaceHandle, const OpenMesh::Vec3d&) override {}
+  void set_color(FaceHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(FaceHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(FaceHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(FaceHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void add_texture_information(int, std::string) override {}
+  // The header's counts are not trusted with memory: a garbled header could ask for billions.
+  void reserve(unsigned int, unsigned int, unsigned int) override {}
+
+  size_t n_vertices() const override { return static_cast<size_t>(m_numVertices); }
+  size_t n_faces() const override { return static_cast<size_t>(m_numFaces); }
+  size_t n_edges() const override { return 0; }
+
+private:
+  VertexHandle addVertex(double x, double y, double z)
+  {
+    if (m_stream.fail())
+    {
+      throw StopParsing{"cannot read the coordinates of vertex " + std::to_string(m_numVertices) +
+                        " (of " + std::to_string(m_expectedVertices) +
+                        "): malformed or truncated data"};
+    }
+    m_points->InsertNextPoint(x, y, z);
+    m_normalValues.push_back({0.0f, 0.0f, 0.0f});
+    m_texCoordValues.push_back({0.0f, 0.0f});
+    return VertexHandle(static_cast<int>(m_numVertices++));
+  }
+
+  void setNormal(VertexHandle vh, double x, double y, double z)
+  {
+    if (vh.idx() >= 0 && static_cast<std::size_t>(vh.idx()) < m_normalValues.size())
+    {
+      m_hasNormals = true;
+      m_normalValues[static_cast<std::size_t>(vh.idx())] = {static_cast<float>(x),
+                                                            static_cast<float>(y),
+                                                            static_cast<float>(z)};
+    }
+  }
+
+  const std::istream& m_stream;
+  std::uint64_t m_expectedVertices = 0;
+  std::uint64_t m_expectedFaces = 0;
+  std::uint64_t m_numVertices = 0;
+  std::uint64_t m_numFaces = 0;
+  vtkNew<vtkPoints> m_points;
+  vtkNew<vtkCellArray> m_polys;
+  vtkNew<vtkCellArray> m_lines;
+  vtkNew<vtkCellArray> m_verts;
+  vtkNew<vtkFloatArray> m_normals;
+  vtkNew<vtkFloatArray> m_texCoords;
+  std::vector<std::array<float, 3>> m_normalValues;
+  std::vector<std::array<float, 2>> m_texCoordValues;
+  std::vector<vtkIdType> m_ids;
+  bool m_hasNormals = false;
+  bool m_hasTexCoords = false;
+};
+
+struct OffHeader
+{
+  bool binary = false;
+  std::uint64_t numVertices = 0;
+  std::uint64_t numFaces = 0;
+};
+
+/// Reads the header the way OpenMesh will (first line, then three counts), to refuse a garbled
+/// one before OpenMesh loops over counts it never checked.
+OffHeader readHeader(const std::string& path)
+{
+  std::ifstream stream(path, std::ios::binary);
+  std::string first;
+  std::getline(stream, first);
+  OffHeader header;
+  const std::size_t off = first.find("OFF");
+  if (off == std::string::npos || off > 4)
+  {
+    throw InputError(path, "not an OFF file (the first line is not an OFF header)");
+  }
+  header.binary = first.find("BINARY") != std::string::npos;
+  const std::size_t rest = first.find_first_not_of(" \t\r", off + 3);
+  if (!header.binary && rest != std::string::npos && std::isdigit(static_cast<unsigned char>(first[rest])))
+  {
+    // OpenMesh takes the whole first line as the header and would read the first vertex as the
+    // counts.
+    throw InputError(path, "the vertex, face and edge counts must be on the line after 'OFF' "
+                           "(OpenMesh's reader does not accept them on the header line)");
+  }
+  if (!header.binary)
+  {
+    long long vertices = -1;
+    long long faces = -1;
+    long long edges = -1;
+    stream >> vertices >> faces >> edges;
+    if (!stream || vertices < 0 || faces < 0)
+    {
+      throw InputError(path, "cannot read the vertex, face and edge counts after the OFF header "
+                             "(comment lines are not supported there)");
+    }
+    header.numVertices = static_cast<std::uint64_t>(vertices);
+    header.numFaces = static_cast<std::uint64_t>(faces);
+  }
+  return header;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
+{
+  const OffHeader header = readHeader(path);
+  // OpenMesh's reader is a process-wide singleton whose format options are set by can_u_read and
+  // used by read: two threads must not interleave them.
+  static std::mutex readerMutex;
+  std::lock_guard<std::mutex> lock(readerMutex);
+  OpenMesh::IO::_OFFReader_& reader = OpenMesh::IO::OFFReader();
+  if (!reader.can_u_read(path))
+  {
+    throw InputError(path, "not an OFF file OpenMesh can read (unsupported header: 4D or "
+                           "n-dimensional vertices?)");
+  }
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream)
+  {
+    throw InputError(path, "cannot open the file");
+  }
+  SoupImporter importer(stream, header.numVertices, header.numFaces);
+  OpenMesh::IO::Options options;
+  options += OpenMesh::IO::Options::VertexNormal;
+  options += OpenMesh::IO::Options::VertexTexCoord;
+  if (header.binary)
+  {
+    options += OpenMesh::IO::Options::Binary;
+  }
+  try
+  {
+    if (!reader.read(stream, importer, options))
+    {
+      throw InputError(path, "OpenMesh could not parse the file");
+    }
+  }
+  catch (const StopParsing& stop)
+  {
+    throw InputError(path, stop.defect);
+  }
+  if (!header.binary && importer.numVertices() < header.numVertices)
+  {
+    throw InputError(path, "truncated: the header announces " + std::to_string(header.numVertices) +
+                             " vertices, the file holds " + std::to_string(importer.numVertices()));
+  }
+  return importer.takePolyData();
+}
+
+} // namespace proxima::detail

@@ -1,0 +1,21 @@
+// OFF files through OpenMesh's parser (VTK has no OFF reader), collected as raw polygons rather
+// than into an OpenMesh halfedge mesh: a halfedge mesh drops non-manifold faces, and a polygon
+// soup must arrive whole.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace proxima::detail
+{
+
+/// Points (with normals and texture coordinates when the file has them) and polygons, as read;
+/// faces of one or two vertices become vertex and line cells. Throws InputError for a bad header,
+/// unparsable or truncated data (reported with the vertex or face where parsing stopped) and
+/// indices out of range. OpenMesh parses coordinates as float: single precision.
+vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path);
+
+} // namespace proxima::detail

@@ -1,0 +1,110 @@
+#include "IO/Private/VtkReaders.h"
+
+#include "IO/InputError.h"
+#include "IO/Private/VtkMessageCapture.h"
+
+#include <vtkAppendPolyData.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkGLTFReader.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkXMLPolyDataReader.h>
+
+
+namespace proxima::detail
+{
+namespace
+{
+bool isEmpty(vtkPolyData* data)
+{
+  return data == nullptr || (data->GetNumberOfPoints() == 0 && data->GetNumberOfCells() == 0);
+}
+
+/// Fails loudly where VTK failed quietly: an error message, or a warning with nothing read.
+void throwIfFailed(const std::string& path, const VtkMessageCapture& capture, bool producedNothing,
+                   const char* formatName)
+{
+  if (capture.hasErrors() || (producedNothing && !capture.messages().empty()))
+  {
+    throw InputError(path, std::string("cannot read the file as ") + formatName + " (" +
+                             capture.bestMessage() + ")");
+  }
+}
+
+template <class Reader>
+vtkSmartPointer<vtkPolyData> readSingle(const std::string& path, const char* formatName)
+{
+  VtkMessageCapture capture;
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
+  throwIfFailed(path, capture, isEmpty(output), formatName);
+  if (reader->GetErrorCode() != 0)
+  {
+    throw InputError(path, std::string("cannot read the file as ") + formatName + " (VTK error code " +
+                             std::to_string(reader->GetErrorCode()) + ")");
+  }
+  return output;
+}
+
+vtkSmartPointer<vtkPolyData> readGltf(const std::string& path)
+{
+  VtkMessageCapture capture;
+  vtkNew<vtkGLTFReader> reader;
+  reader->SetFileName(path.c_str());
+  // The reader places every mesh by its node's global transform (and applies skins and morph
+  // targets at time 0 with deformations on): the model as its author laid it out.
+  reader->ApplyDeformationsToGeometryOn();
+  reader->Update();
+  vtkMultiBlockDataSet* blocks = reader->GetOutput();
+  vtkNew<vtkAppendPolyData> append;
+  std::size_t numBlocks = 0;
+  if (blocks)
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(blocks->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* part = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        append->AddInputData(part);
+        ++numBlocks;
+      }
+    }
+  }
+  throwIfFailed(path, capture, numBlocks == 0, "glTF");
+  if (numBlocks == 0)
+  {
+    throw InputError(path, "no triangles (the glTF scene has no meshes)");
+  }
+  // Arrays every part has (normals, texture coordinates) survive the append; others are dropped.
+  append->Update();
+  throwIfFailed(path, capture, false, "glTF");
+  vtkSmartPointer<vtkPolyData> merged = append->GetOutput();
+  return merged;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format)
+{
+  switch (format)
+  {
+  case MeshFileFormat::Stl:
+    return readSingle<vtkSTLReader>(path, "STL");
+
+  case MeshFileFormat::Vtp:
+    return readSingle<vtkXMLPolyDataReader>(path, "VTK XML poly data");
+  case MeshFileFormat::Gltf:
+    return readGltf(path);
+  case MeshFileFormat::Obj:
+  case MeshFileFormat::Ply:
+  case MeshFileFormat::Off:
+    break; // our own readers, see MeshReader.cpp
+  }
+  throw InputError(path, "internal: this format is not read through VTK");
+}
+
+} // namespace proxima::detail

@@ -1,0 +1,20 @@
+// Runs the VTK reader for one format and turns whatever VTK complains about into an InputError.
+#pragma once
+
+#include "IO/MeshFileFormat.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace proxima::detail
+{
+
+/// STL, VTP or glTF (every mesh of the default scene, node transforms applied, appended
+/// into one poly data). Throws InputError when the reader reports an error, or reports a warning
+/// and produces nothing.
+vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format);
+
+} // namespace proxima::detail

@@ -1,0 +1,36 @@
+// Trace file v1 (DESIGN.md section 3): one CSV row per servo tick, SI units, world frame:
+// tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,contacts,
+// iterations,solve_ns
+#pragma once
+
+#include "Runtime/ServoTick.h"
+
+#include <cstdio>
+#include <string>
+
+namespace proxima
+{
+
+class TraceWriter
+{
+public:
+  static constexpr const char* kHeader =
+    "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
+    "contacts,iterations,solve_ns";
+
+  /// Opens `path` and writes the header. Throws std::runtime_error if it cannot.
+  explicit TraceWriter(const std::string& path);
+  ~TraceWriter();
+  TraceWriter(const TraceWriter&) = delete;
+  TraceWriter& operator=(const TraceWriter&) = delete;
+
+  void write(const TickRecord& record);
+  /// Flushes and closes; throws std::runtime_error if the data did not reach the file.
+  void close();
+
+private:
+  std::string m_path;
+  std::FILE* m_file = nullptr;
+};
+
+} // namespace proxima
