@@ -1,6 +1,7 @@
 #include "IO/FingerPathFile.h"
 
 #include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -135,7 +136,7 @@ void writeFingerPathFile(const std::string& path, const FingerPath& fingerPath)
   std::FILE* file = std::fopen(path.c_str(), "w");
   if (file == nullptr)
   {
-    throw std::runtime_error(path + ": cannot open the file for writing");
+    throw InputError(path, std::string("cannot write the file (") + std::strerror(errno) + ")");
   }
   std::fputs("t,x,y,z\n", file);
   for (std::size_t i = 0; i < fingerPath.size(); ++i)

@@ -1,5 +1,9 @@
 #include "IO/TraceWriter.h"
 
+#include "IO/InputError.h"
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -11,7 +15,8 @@ TraceWriter::TraceWriter(const std::string& path) : m_path(path)
   m_file = std::fopen(path.c_str(), "w");
   if (m_file == nullptr)
   {
-    throw std::runtime_error(path + ": cannot open the trace file for writing");
+    // A trace the user cannot have is bad input, like an unwritable mesh (status 2).
+    throw InputError(path, std::string("cannot write the file (") + std::strerror(errno) + ")");
   }
   // A large buffer: a long run writes millions of rows.
   std::setvbuf(m_file, nullptr, _IOFBF, 1 << 20);

@@ -1,0 +1,36 @@
+// One subcommand of the `proxima` program. A subcommand lives in its own file and provides an
+// add function that registers its options on the parent CLI11 app and returns what to run once
+// the command line is parsed. To add one (say `bench`): write BenchCommand.cpp defining
+// addBenchCommand, declare it below, add it to kCommands in main.cpp and to CMakeLists.txt.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace proxima::cli
+{
+
+/// Exit statuses shared by every subcommand (DESIGN.md section 3).
+enum ExitStatus : int
+{
+  kExitOk = 0,
+  kExitInternalError = 1,
+  kExitBadInput = 2
+};
+
+struct Command
+{
+  /// The subcommand's CLI11 node, owned by the parent app.
+  CLI::App* app = nullptr;
+  /// Runs the command after parsing and returns the exit status. Throws InputError for bad
+  /// input (main prints it and exits with 2); any other exception is an internal error (1).
+  std::function<int()> run;
+};
+
+Command addRunCommand(CLI::App& parent);
+Command addPathCommand(CLI::App& parent);
+Command addTreeCommand(CLI::App& parent);
+Command addGenerateCommand(CLI::App& parent);
+
+} // namespace proxima::cli
