@@ -289,6 +289,16 @@ double segmentDistanceSquared(const Vec3& start, const Vec3& motion, double moti
   return squaredDistance(toCenter, motion * s);
 }
 
+void addStats(const QueryStats& counts, QueryStats* stats)
+{
+  if (stats != nullptr)
+  {
+    stats->nodesVisited += counts.nodesVisited;
+    stats->leafSpheresTested += counts.leafSpheresTested;
+    stats->trianglesTested += counts.trianglesTested;
+  }
+}
+
 // Once the per-query cache is full a triangle reached through a second leaf sphere is tested
 // again; a gather then looks through what it already stored so that no triangle is listed twice.
 bool isStored(const NearbyTriangle* out, std::uint32_t count, std::uint32_t triangle)
@@ -463,29 +473,18 @@ SweepContact SphereTree::firstContact(const TriangleMesh& mesh, const SweepQuery
       }
     }
   }
-  if (stats != nullptr)
-  {
-    stats->nodesVisited += counts.nodesVisited;
-    stats->leafSpheresTested += counts.leafSpheresTested;
-    stats->trianglesTested += counts.trianglesTested;
-  }
+  addStats(counts, stats);
   return best;
 }
 
-std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& point,
-                                       double maxDistance, NearbyTriangle* out,
-                                       std::uint32_t capacity, SphereTreeScratch& scratch,
-                                       QueryStats* stats) const
+// Visits each triangle (once, through the per-query cache, or again once the cache is full)
+// with a leaf sphere within `maxDistance` of `point`, which is in the tree's frame.
+template <typename Visit>
+void SphereTree::forEachTriangleNear(const Vec3& point, double maxDistance,
+                                     SphereTreeScratch& scratch, QueryStats& counts,
+                                     Visit&& visit) const
 {
-  std::uint32_t found = 0;
-  if (m_nodes.empty() || !(maxDistance >= 0.0))
-  {
-    return 0;
-  }
   scratch.tested.clear();
-  QueryStats counts;
-  const Vec3 p = point - m_origin;
-  const double maxDistanceSquared = maxDistance * maxDistance;
   std::uint32_t* stack = scratch.stack;
   int size = 0;
   stack[size++] = 0;
@@ -495,7 +494,7 @@ std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& poi
     const SphereTreeNode& node = m_nodes[nodeIndex];
     ++counts.nodesVisited;
     const double reach = (static_cast<double>(node.radius) + maxDistance) * kPruneSlack;
-    if (squaredDistance(nodeCenter(node), p) > reach * reach)
+    if (squaredDistance(nodeCenter(node), point) > reach * reach)
     {
       continue;
     }
@@ -513,31 +512,75 @@ std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& poi
       const LeafSphere& leaf = m_leaves[node.rightOrFirst + i];
       ++counts.leafSpheresTested;
       const double leafReach = (static_cast<double>(leaf.radius) + maxDistance) * kPruneSlack;
-      if (squaredDistance(leafCenter(leaf), p) > leafReach * leafReach ||
+      if (squaredDistance(leafCenter(leaf), point) > leafReach * leafReach ||
           !scratch.tested.insert(leaf.triangle))
       {
         continue;
       }
-      ++counts.trianglesTested;
-      const TriangleCorners& c = mesh.corners(leaf.triangle);
-      const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
-      if (closest.squaredDistance <= maxDistanceSquared &&
-          !(scratch.tested.full() && isStored(out, found < capacity ? found : capacity, leaf.triangle)))
-      {
-        if (found < capacity)
-        {
-          out[found] = NearbyTriangle{leaf.triangle, closest};
-        }
-        ++found;
-      }
+      visit(leaf.triangle);
     }
   }
-  if (stats != nullptr)
+}
+
+std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& point,
+                                       double maxDistance, NearbyTriangle* out,
+                                       std::uint32_t capacity, SphereTreeScratch& scratch,
+                                       QueryStats* stats) const
+{
+  std::uint32_t found = 0;
+  if (m_nodes.empty() || !(maxDistance >= 0.0))
   {
-    stats->nodesVisited += counts.nodesVisited;
-    stats->leafSpheresTested += counts.leafSpheresTested;
-    stats->trianglesTested += counts.trianglesTested;
+    return 0;
   }
+  QueryStats counts;
+  const double maxDistanceSquared = maxDistance * maxDistance;
+  forEachTriangleNear(point - m_origin, maxDistance, scratch, counts, [&](std::uint32_t triangle) {
+    ++counts.trianglesTested;
+    const TriangleCorners& c = mesh.corners(triangle);
+    const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
+    if (closest.squaredDistance <= maxDistanceSquared &&
+        !(scratch.tested.full() && isStored(out, found < capacity ? found : capacity, triangle)))
+    {
+      if (found < capacity)
+      {
+        out[found] = NearbyTriangle{triangle, closest};
+      }
+      ++found;
+    }
+  });
+  addStats(counts, stats);
+  return found;
+}
+
+std::uint32_t SphereTree::candidatesWithin(const Vec3& point, double maxDistance,
+                                           std::uint32_t* out, std::uint32_t capacity,
+                                           SphereTreeScratch& scratch, QueryStats* stats) const
+{
+  std::uint32_t found = 0;
+  if (m_nodes.empty() || !(maxDistance >= 0.0))
+  {
+    return 0;
+  }
+  QueryStats counts;
+  forEachTriangleNear(point - m_origin, maxDistance, scratch, counts, [&](std::uint32_t triangle) {
+    if (scratch.tested.full())
+    {
+      const std::uint32_t stored = found < capacity ? found : capacity;
+      for (std::uint32_t i = 0; i < stored; ++i)
+      {
+        if (out[i] == triangle)
+        {
+          return;
+        }
+      }
+    }
+    if (found < capacity)
+    {
+      out[found] = triangle;
+    }
+    ++found;
+  });
+  addStats(counts, stats);
   return found;
 }
 
@@ -618,12 +661,7 @@ NearestTriangle SphereTree::nearest(const TriangleMesh& mesh, const Vec3& point,
       }
     }
   }
-  if (stats != nullptr)
-  {
-    stats->nodesVisited += counts.nodesVisited;
-    stats->leafSpheresTested += counts.leafSpheresTested;
-    stats->trianglesTested += counts.trianglesTested;
-  }
+  addStats(counts, stats);
   return best;
 }
 

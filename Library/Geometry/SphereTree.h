@@ -122,6 +122,13 @@ public:
                              NearbyTriangle* out, std::uint32_t capacity,
                              SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
 
+  /// The triangles whose leaf spheres reach within `maxDistance` of `point`: a superset of those
+  /// within that distance, without the exact test (for caches that test later). Distinct; the
+  /// count is as for gatherWithin.
+  std::uint32_t candidatesWithin(const Vec3& point, double maxDistance, std::uint32_t* out,
+                                 std::uint32_t capacity, SphereTreeScratch& scratch,
+                                 QueryStats* stats = nullptr) const;
+
   /// (c) The triangle nearest `point`, if one lies within `maxDistance`.
   NearestTriangle nearest(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
                           SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
@@ -143,6 +150,10 @@ public:
   std::vector<Sphere> leafSpheresInWorld() const;
 
 private:
+  template <typename Visit>
+  void forEachTriangleNear(const Vec3& point, double maxDistance, SphereTreeScratch& scratch,
+                           QueryStats& counts, Visit&& visit) const;
+
   std::vector<SphereTreeNode> m_nodes;
   std::vector<LeafSphere> m_leaves;
   Vec3 m_origin;

@@ -16,16 +16,18 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
   for (std::uint32_t objectIndex = 0; objectIndex < scene.objects.size(); ++objectIndex)
   {
     const CollisionObject& object = scene.objects[objectIndex];
+    // Leaf-sphere candidates, a superset of the triangles within reach: every query on the cache
+    // makes its own exact test, so the rebuild needs none.
+    const auto room = static_cast<std::uint32_t>(kCapacity - m_count);
     const std::uint32_t found =
-      object.tree.gatherWithin(object.mesh, center, reach, m_gathered,
-                               static_cast<std::uint32_t>(kCapacity - m_count), scratch, &stats);
-    if (found > static_cast<std::uint32_t>(kCapacity - m_count))
+      object.tree.candidatesWithin(center, reach, m_triangle + m_count, room, scratch, &stats);
+    if (found > room)
     {
       return; // too crowded to help: the trees answer everything
     }
     for (std::uint32_t i = 0; i < found; ++i)
     {
-      const TriangleCorners& c = object.mesh.corners(m_gathered[i].triangle);
+      const TriangleCorners& c = object.mesh.corners(m_triangle[m_count]);
       const Vec3 centroid = (c.a + c.b + c.c) / 3.0;
       const double radius = std::sqrt(std::max({squaredDistance(centroid, c.a),
                                                 squaredDistance(centroid, c.b),
@@ -37,7 +39,6 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
       // triangle that touches exactly.
       m_sphereRadius[m_count] = radius * (1.0 + 1e-12) + 1e-300;
       m_object[m_count] = objectIndex;
-      m_triangle[m_count] = m_gathered[i].triangle;
       ++m_count;
     }
   }

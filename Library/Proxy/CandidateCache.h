@@ -23,8 +23,8 @@ public:
   const Vec3& center() const { return m_center; }
   int size() const { return m_count; }
 
-  /// Gathers every triangle within `reach` of `center` from the scene's trees. Leaves the cache
-  /// invalid if more than kCapacity triangles are that near.
+  /// Takes every triangle within `reach` of `center` from the scene's trees (those whose leaf
+  /// spheres reach that far: a superset). Leaves the cache invalid if more than kCapacity do.
   void rebuild(const CollisionScene& scene, const Vec3& center, double reach,
                SphereTreeScratch& scratch, QueryStats& stats);
 
@@ -57,7 +57,6 @@ private:
   double m_sphereRadius[kCapacity];
   std::uint32_t m_object[kCapacity];
   std::uint32_t m_triangle[kCapacity];
-  NearbyTriangle m_gathered[kCapacity];
 };
 
 } // namespace proxima

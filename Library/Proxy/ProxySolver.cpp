@@ -111,6 +111,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_coherenceMargin = parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin
                                                        : parameters.radius;
   m_cache.invalidate();
+  m_planesValid = false;
 }
 
 void ProxySolver::refreshCache(QueryStats& stats)
@@ -173,6 +174,21 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
 }
 
 bool ProxySolver::gatherPlanes(const Vec3& position, QueryStats& stats)
+{
+  // The scene is static between setScene calls, so the planes at a point are the planes found
+  // there last time: a tick that starts where the last one ended (every tick in resting or
+  // sliding contact) reuses the last update stage's planes instead of gathering them again.
+  if (m_planesValid && position == m_planesPosition)
+  {
+    return m_planesComplete;
+  }
+  m_planesValid = true;
+  m_planesPosition = position;
+  m_planesComplete = collectPlanes(position, stats);
+  return m_planesComplete;
+}
+
+bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
 {
   m_numPlanes = 0;
   bool complete = true;

@@ -65,6 +65,7 @@ public:
     m_proxy = position;
     m_lastTravel = 0.0;
     m_cache.invalidate();
+    m_planesValid = false;
   }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow.
@@ -84,7 +85,10 @@ private:
   };
   SweepOutcome sweep(const Vec3& from, const Vec3& to, QueryStats& stats);
   /// Fills m_planes with the deduplicated constraint planes at `position`; false on overflow.
+  /// Reuses the last planes when `position` is where they were gathered.
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
+  /// gatherPlanes without the reuse.
+  bool collectPlanes(const Vec3& position, QueryStats& stats);
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
@@ -104,6 +108,9 @@ private:
   ContactPlane m_planes[kMaxConstraintPlanes];
   Vec3 m_normals[kMaxConstraintPlanes];
   int m_numPlanes = 0;
+  bool m_planesValid = false;
+  bool m_planesComplete = true;
+  Vec3 m_planesPosition;
 };
 
 } // namespace proxima
