@@ -37,7 +37,7 @@ def machine(context):
 
 
 def plot(context, rows, figure):
-    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    fig, ax = plt.subplots(figsize=(9.5, 4.8))
     x = [r["triangles"] for r in rows]
     for key, label, style in [
         ("contact_median_ns", "median (ticks in contact)", "o-"),
@@ -57,7 +57,7 @@ def plot(context, rows, figure):
     ax.set_title("Proxy tick in sliding contact (press and stroke, r = 1 mm, 1 kHz)\n"
                  + machine(context), fontsize=9)
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, loc="center right")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(figure, dpi=120)
 
