@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Proxima needs to build and test (README.md lists what each is
+# for). Idempotent: when every package is already installed it changes nothing and needs no
+# network; otherwise it runs `apt-get update` and then installs what is missing
+# (PROXIMA_REINSTALL_DEPENDENCIES=1 passes every package to apt-get regardless). Runs without a
+# terminal (CI=true, no standard input). Needs root, or sudo for a normal user.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  cmake ninja-build g++ pkg-config git ccache
+  # mesh readers, pipeline and (later) rendering
+  libvtk9-dev
+  # OFF files and mesh preparation
+  libopenmesh-dev
+  # exact oracles in tests, AABB-tree baseline in benchmarks
+  libcgal-dev
+  # texture images (later); the tools are needed by find_package(OpenImageIO)
+  libopenimageio-dev openimageio-tools
+  # command line and reports
+  libcli11-dev nlohmann-json3-dev
+  # linear algebra
+  libeigen3-dev
+  # devices (later)
+  libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
+  # tests, benchmarks, offscreen rendering and plots
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if [ "${PROXIMA_REINSTALL_DEPENDENCIES:-0}" = 1 ] || ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$package")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install-dependencies: all ${#packages[@]} Debian packages are installed"
+  exit 0
+fi
+
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  if ! command -v sudo > /dev/null; then
+    echo "install-dependencies: missing ${missing[*]}; run this as root" >&2
+    exit 1
+  fi
+  as_root=(sudo)
+fi
+
+echo "install-dependencies: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" apt-get update -q < /dev/null
+# VTK alone pulls in several hundred packages: allow a few minutes.
+"${as_root[@]}" apt-get install -y -q --no-install-recommends -o Dpkg::Use-Pty=0 "${missing[@]}" < /dev/null
