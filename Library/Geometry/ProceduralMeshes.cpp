@@ -107,4 +107,28 @@ TriangleSoup makeGrid(double size, std::uint32_t cells, double height)
   return soup;
 }
 
+TriangleSoup makePrism(std::uint32_t sides, double radius, double height, const Vec3& center)
+{
+  TriangleSoup soup;
+  const double pi = std::acos(-1.0);
+  for (std::uint32_t i = 0; i < sides; ++i)
+  {
+    const double angle = 2.0 * pi * i / sides;
+    const Vec3 radial{std::cos(angle), std::sin(angle), 0.0};
+    for (double z : {-0.5 * height, 0.5 * height})
+    {
+      soup.points.push_back(center + radial * radius + Vec3{0.0, 0.0, z});
+      soup.pointNormals.push_back(radial);
+    }
+  }
+  for (std::uint32_t i = 0; i < sides; ++i)
+  {
+    const std::uint32_t bottom = 2 * i;
+    const std::uint32_t next = 2 * ((i + 1) % sides);
+    soup.triangles.push_back({bottom, next, next + 1});
+    soup.triangles.push_back({bottom, next + 1, bottom + 1});
+  }
+  return soup;
+}
+
 } // namespace proxima

@@ -4,6 +4,7 @@
 
 #include "Geometry/SphereTree.h"
 #include "Geometry/TriangleMesh.h"
+#include "Proxy/SurfaceMaterial.h"
 
 #include <vector>
 
@@ -14,6 +15,7 @@ struct CollisionObject
 {
   TriangleMesh mesh;
   SphereTree tree;
+  SurfaceMaterial material;
 };
 
 struct CollisionScene
@@ -21,11 +23,13 @@ struct CollisionScene
   std::vector<CollisionObject> objects;
 
   /// Adds a mesh and builds its tree. Not for the haptic thread.
-  void addObject(TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{})
+  void addObject(TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{},
+                 const SurfaceMaterial& material = SurfaceMaterial{})
   {
     CollisionObject object;
     object.mesh = std::move(mesh);
     object.tree.build(object.mesh, options);
+    object.material = material;
     objects.push_back(std::move(object));
   }
 

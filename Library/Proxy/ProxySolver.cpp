@@ -38,6 +38,25 @@ bool touchesCurvedPart(const TriangleCorners& corners, const ClosestPointResult&
   return std::fabs(dot(faceNormal, normal)) < (1.0 - 1e-9) * length;
 }
 
+// The point normals of `triangle` interpolated with the contact weights, turned to the side of
+// `contactNormal` (the paper's flip: a contact may lie on either side of a polygon). False when
+// they cancel.
+bool interpolatedNormal(const TriangleMesh& mesh, std::uint32_t triangle,
+                        const ClosestPointResult& closest, const Vec3& contactNormal, Vec3& out)
+{
+  const auto& index = mesh.indices(triangle);
+  const std::vector<Vec3>& normals = mesh.pointNormals();
+  const Vec3 sum = normals[index[0]] * closest.weights[0] + normals[index[1]] * closest.weights[1] +
+                   normals[index[2]] * closest.weights[2];
+  const double length = norm(sum);
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  out = dot(sum, contactNormal) < 0.0 ? sum / -length : sum / length;
+  return true;
+}
+
 // The edge of `feature` as its two corners, or false for a vertex or the face.
 bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from, Vec3& to)
 {
@@ -191,6 +210,7 @@ bool ProxySolver::gatherPlanes(const Vec3& position, QueryStats& stats)
 bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
 {
   m_numPlanes = 0;
+  m_anyShaded = false;
   bool complete = true;
   if (m_scene == nullptr)
   {
@@ -260,10 +280,50 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     plane.closest = near.closest;
     plane.depth = 0.0;
     plane.curved = curved;
+    // Shading only where the material asks for it and the mesh has normals: a plain surface pays
+    // one branch per plane.
+    const CollisionObject& object = m_scene->objects[m_nearbyObject[i]];
+    plane.shaded = object.material.shading && object.mesh.hasPointNormals() &&
+                   interpolatedNormal(object.mesh, near.triangle, near.closest, normal,
+                                      plane.shadedNormal);
+    m_shadedNormals[m_numPlanes] = plane.shaded ? plane.shadedNormal : normal;
+    m_anyShaded = m_anyShaded || plane.shaded;
     m_normals[m_numPlanes] = normal;
     ++m_numPlanes;
   }
   return complete;
+}
+
+GoalSolution ProxySolver::solveUpdateStage(const Vec3& toFinger) const
+{
+  if (!m_anyShaded)
+  {
+    return solveGoal(toFinger, m_normals, m_numPlanes);
+  }
+  // Paper section 3: the first pass finds the subgoal of the curved surface the normals stand
+  // for, with the shaded planes; the second pass finds the goal nearest that subgoal with the
+  // true planes. A subgoal above every true plane is first projected onto the nearest one, so
+  // that the proxy stays on the surface (and friction and texture see a contact).
+  Vec3 subgoal = solveGoal(toFinger, m_shadedNormals, m_numPlanes).displacement;
+  const double tolerance = 1e-12 * norm(toFinger);
+  int nearest = -1;
+  double least = 0.0;
+  bool aboveAll = m_numPlanes > 0;
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    const double height = dot(m_normals[k], subgoal);
+    aboveAll = aboveAll && height > tolerance;
+    if (nearest < 0 || height < least)
+    {
+      nearest = k;
+      least = height;
+    }
+  }
+  if (aboveAll)
+  {
+    subgoal -= m_normals[nearest] * least;
+  }
+  return solveGoal(subgoal, m_normals, m_numPlanes);
 }
 
 ProxyTickResult ProxySolver::update(const Vec3& finger)
@@ -292,14 +352,17 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
     // head straight for the finger, or every tick would push it a little deeper into the skin.
     result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+    solution = solveUpdateStage(finger - m_proxy);
     result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
+    result.usedShading = result.usedShading || m_anyShaded;
     if (squaredNorm(solution.displacement) <= stepTolerance * stepTolerance)
     {
       break; // a local minimum: no feasible step brings the proxy nearer the finger
     }
-    const Vec3 step =
-      mayStretch ? curvatureCorrectedStep(solution, finger - m_proxy) : solution.displacement;
+    // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
+    // surface sends it elsewhere on purpose.
+    const Vec3 step = mayStretch && !m_anyShaded ? curvatureCorrectedStep(solution, finger - m_proxy)
+                                                 : solution.displacement;
     const bool stretched = step != solution.displacement;
     const Vec3 goal = m_proxy + step;
     if (blockedAtOnce && goal == previousGoal)
@@ -335,7 +398,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       mayStretch = false; // the stretched slide and its fall ended no nearer: stop stretching
     }
     beforeStretch = -1.0;
-    if (toFinger < distanceBefore - stepTolerance)
+    if (toFinger < distanceBefore - stepTolerance || result.usedShading)
     {
       stalled = 0;
     }
@@ -344,7 +407,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       // No nearer after several moves: rounding traded between planes, not progress. The last
       // update stage's planes stand for the contact.
       result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-      solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+      solution = solveUpdateStage(finger - m_proxy);
       break;
     }
   }

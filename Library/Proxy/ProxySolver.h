@@ -29,6 +29,10 @@ struct ContactPlane
   /// The configuration-space surface here is a cylinder or sphere (the proxy touches an edge or
   /// corner off the normal of every triangle that gave this plane), not a flat face.
   bool curved = false;
+  /// Force shading (paper 3.1): the point normals interpolated with the contact weights, turned
+  /// to the proxy's side; used by the first pass of the update stage. Set when `shaded`.
+  bool shaded = false;
+  Vec3 shadedNormal;
 };
 
 struct ProxyTickResult
@@ -47,6 +51,8 @@ struct ProxyTickResult
   bool contactOverflow = false;
   /// The exact fallback answered the goal problem at least once this tick.
   bool usedExactFallback = false;
+  /// A shaded plane took part in the update stage this tick (two passes, paper section 3).
+  bool usedShading = false;
   QueryStats queries;
 };
 
@@ -89,6 +95,9 @@ private:
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
   /// gatherPlanes without the reuse.
   bool collectPlanes(const Vec3& position, QueryStats& stats);
+  /// The update stage's goal for the gathered planes: one pass (paper 2.2), or, when a plane is
+  /// shaded, the two passes of section 3.
+  GoalSolution solveUpdateStage(const Vec3& toFinger) const;
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
@@ -107,7 +116,10 @@ private:
   std::uint32_t m_nearbyObject[kMaxNearbyTriangles];
   ContactPlane m_planes[kMaxConstraintPlanes];
   Vec3 m_normals[kMaxConstraintPlanes];
+  /// The first pass's normals: shaded where the plane is, true elsewhere.
+  Vec3 m_shadedNormals[kMaxConstraintPlanes];
   int m_numPlanes = 0;
+  bool m_anyShaded = false;
   bool m_planesValid = false;
   bool m_planesComplete = true;
   Vec3 m_planesPosition;
