@@ -30,6 +30,9 @@ struct GenerateArguments
   double size = 0.2;
   std::uint32_t cells = 16;
   double height = 0.0;
+  // prism
+  std::uint32_t sides = 10;
+  double prismHeight = 0.1;
 };
 
 Vec3 toVec3(const std::vector<double>& values)
@@ -101,7 +104,21 @@ Command addGenerateCommand(CLI::App& parent)
   grid->add_option("--height", arguments->height, "The plane's z in metres")->capture_default_str();
   addOut(grid, *arguments);
 
-  auto run = [arguments, icosphere, box, grid]() -> int {
+  CLI::App* prism = generate->add_subcommand(
+    "prism", "Sides of a regular prism about z (open tube), radial normals per point: Figure 6.");
+  prism->add_option("--sides", arguments->sides, "Number of sides")
+    ->check(CLI::Range(3u, 100000u))
+    ->capture_default_str();
+  prism->add_option("--radius", arguments->radius, "Distance of the corners from the axis")
+    ->check(finiteNumber(true))
+    ->capture_default_str();
+  prism->add_option("--height", arguments->prismHeight, "Length along z in metres")
+    ->check(finiteNumber(true))
+    ->capture_default_str();
+  addCenter(prism, *arguments);
+  addOut(prism, *arguments);
+
+  auto run = [arguments, icosphere, box, grid, prism]() -> int {
     const GenerateArguments& a = *arguments;
     if (icosphere->parsed())
     {
@@ -115,6 +132,11 @@ Command addGenerateCommand(CLI::App& parent)
     if (grid->parsed())
     {
       return writeAndReport("grid", makeGrid(a.size, a.cells, a.height), a.out);
+    }
+    if (prism->parsed())
+    {
+      return writeAndReport("prism", makePrism(a.sides, a.radius, a.prismHeight, toVec3(a.center)),
+                            a.out);
     }
     return kExitBadInput;
   };

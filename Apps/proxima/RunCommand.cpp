@@ -39,7 +39,22 @@ struct RunOptions
   double maxForce = 10.0;
   int maxIterations = 256;
   double skin = 0.0;
+  std::string shading = "off";
 };
+
+// --shading: on asks for normals the file must have (computing them is a later feature), auto
+// shades exactly when the file has them.
+SurfaceMaterial materialFor(const RunOptions& options, const TriangleMesh& mesh)
+{
+  SurfaceMaterial material;
+  if (options.shading == "on" && !mesh.hasPointNormals())
+  {
+    throw InputError(options.mesh, "has no point normals, which --shading on needs (use "
+                                   "--shading auto to shade only meshes that have them)");
+  }
+  material.shading = options.shading == "on" || (options.shading == "auto" && mesh.hasPointNormals());
+  return material;
+}
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
 {
@@ -91,8 +106,9 @@ int run(const RunOptions& options)
 
   const std::uint32_t numTriangles = mesh.numTriangles();
   const std::uint32_t numDegenerate = mesh.numDegenerateTriangles();
+  const SurfaceMaterial material = materialFor(options, mesh);
   const auto buildStart = std::chrono::steady_clock::now();
-  scene.addObject(mesh);
+  scene.addObject(mesh, SphereTreeOptions{}, material);
   const double buildMilliseconds = millisecondsSince(buildStart);
 
   ProxyParameters parameters;
@@ -154,6 +170,7 @@ int run(const RunOptions& options)
   json["skin_m"] = solver.skin();
   json["stiffness_N_per_m"] = options.stiffness;
   json["rate_hz"] = options.rate;
+  json["shading"] = material.shading;
   json["ticks"] = summary.ticks();
   json["contact_ticks"] = summary.contactTicks();
   json["iterations"] = {
@@ -215,6 +232,9 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--max-iterations", options->maxIterations,
                   "Move/update iterations per tick (default 256)")
     ->check(CLI::Range(1, 1000));
+  app->add_option("--shading", options->shading,
+                  "Force shading from the mesh's point normals: off, on or auto (default off)")
+    ->check(CLI::IsMember({"off", "on", "auto"}));
   app->add_option("--skin", options->skin,
                   "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
     ->check(CLI::NonNegativeNumber);
