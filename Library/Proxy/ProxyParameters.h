@@ -18,6 +18,10 @@ struct ProxyParameters
   bool temporalCoherence = true;
   /// The margin in metres; 0 means one proxy radius.
   double coherenceMargin = 0.0;
+  /// The servo's spring stiffness kp (N/m) and tick (s): viscous friction (paper eq. 21) turns
+  /// the spring's force into a speed, and the speed into a travel per tick.
+  double stiffness = 1000.0;
+  double timeStep = 0.001;
 };
 
 /// The skin used for a scene whose bounding-box diagonal is `diagonal` and whose coordinates

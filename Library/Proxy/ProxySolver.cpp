@@ -1,5 +1,6 @@
 #include "Proxy/ProxySolver.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace proxima
@@ -211,6 +212,7 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
 {
   m_numPlanes = 0;
   m_anyShaded = false;
+  m_anyFriction = false;
   bool complete = true;
   if (m_scene == nullptr)
   {
@@ -288,6 +290,10 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
                                       plane.shadedNormal);
     m_shadedNormals[m_numPlanes] = plane.shaded ? plane.shadedNormal : normal;
     m_anyShaded = m_anyShaded || plane.shaded;
+    plane.staticFriction = object.material.staticFriction;
+    plane.dynamicFriction = object.material.dynamicFriction;
+    plane.viscosity = object.material.viscosity;
+    m_anyFriction = m_anyFriction || object.material.hasFriction();
     m_normals[m_numPlanes] = normal;
     ++m_numPlanes;
   }
@@ -326,6 +332,58 @@ GoalSolution ProxySolver::solveUpdateStage(const Vec3& toFinger) const
   return solveGoal(subgoal, m_normals, m_numPlanes);
 }
 
+bool ProxySolver::insideStaticCone(const Vec3& toFinger) const
+{
+  // The user's force on the proxy is kp (finger - proxy); kp cancels from the cone test
+  // |f_t| <= mu_s |f_n|, which only counts a plane the finger presses on (f_n into it).
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    const ContactPlane& plane = m_planes[k];
+    if (!(plane.staticFriction > 0.0))
+    {
+      continue;
+    }
+    const double normal = dot(toFinger, plane.normal);
+    if (normal < 0.0 && norm(toFinger - plane.normal * normal) <= plane.staticFriction * -normal)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+double ProxySolver::frictionLimitedTravel(const GoalSolution& solution, double travel,
+                                          double& viscousBudget) const
+{
+  // Paper eq. 21 with the proxy's mass going to zero: along the surface the proxy moves at
+  // (|f_t| - mu_d |f_n|) / b. The drags of the active planes add (Coulomb), so that a contact
+  // the solver splits between two nearly coincident planes (within 50 nm of a mesh edge) drags
+  // as one. Dynamic friction stops the slide where the finger sits on the cone
+  // |f_t| = mu_d |f_n| (with b = 0 the proxy gets there within the tick); viscosity spends a
+  // travel of dt kp (|f_t| - mu_d |f_n|) / b per tick, measured where the tick's first slide
+  // starts, with the largest b of the contacts (the lowest speed bound, 4.2).
+  double drag = 0.0;
+  double viscosity = 0.0;
+  for (int k = 0; k < solution.numActive; ++k)
+  {
+    const ContactPlane& plane = m_planes[solution.active[k]];
+    drag += plane.dynamicFriction * solution.depth[k]; // depth: |f_n| / kp on this plane
+    viscosity = std::max(viscosity, plane.viscosity);
+  }
+  const double slack = travel - drag;
+  double allowed = std::min(travel, slack);
+  if (viscosity > 0.0)
+  {
+    if (viscousBudget < 0.0)
+    {
+      viscousBudget =
+        std::max(0.0, m_parameters.timeStep * m_parameters.stiffness * slack / viscosity);
+    }
+    allowed = std::min(allowed, viscousBudget);
+  }
+  return std::max(0.0, allowed);
+}
+
 ProxyTickResult ProxySolver::update(const Vec3& finger)
 {
   ProxyTickResult result;
@@ -347,6 +405,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
   // on with plain slides (a trust region shrunk to the paper's planar steps).
   bool mayStretch = true;
   double beforeStretch = -1.0;
+  double viscousBudget = -1.0; // set by the tick's first viscous contact
   for (;;)
   {
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
@@ -355,14 +414,34 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     solution = solveUpdateStage(finger - m_proxy);
     result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
     result.usedShading = result.usedShading || m_anyShaded;
+    if (m_anyFriction)
+    {
+      // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
+      if (insideStaticCone(finger - m_proxy))
+      {
+        result.stuck = result.stuck || result.iterations == 0; // held where the tick began
+        solution.displacement = Vec3{};
+      }
+      else
+      {
+        const double travel = norm(solution.displacement);
+        const double allowed = frictionLimitedTravel(solution, travel, viscousBudget);
+        if (allowed < travel)
+        {
+          result.frictionLimited = true;
+          solution.displacement = solution.displacement * (allowed / travel);
+        }
+      }
+    }
     if (squaredNorm(solution.displacement) <= stepTolerance * stepTolerance)
     {
       break; // a local minimum: no feasible step brings the proxy nearer the finger
     }
     // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
     // surface sends it elsewhere on purpose.
-    const Vec3 step = mayStretch && !m_anyShaded ? curvatureCorrectedStep(solution, finger - m_proxy)
-                                                 : solution.displacement;
+    const Vec3 step = mayStretch && !m_anyShaded && !m_anyFriction
+                        ? curvatureCorrectedStep(solution, finger - m_proxy)
+                        : solution.displacement;
     const bool stretched = step != solution.displacement;
     const Vec3 goal = m_proxy + step;
     if (blockedAtOnce && goal == previousGoal)
@@ -382,6 +461,10 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
     blockedAtOnce = m_proxy == before;
     previousGoal = goal;
+    if (viscousBudget > 0.0)
+    {
+      viscousBudget = std::max(0.0, viscousBudget - distance(m_proxy, before));
+    }
     if (m_proxy == finger)
     {
       solution = GoalSolution{};

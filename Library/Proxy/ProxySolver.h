@@ -33,6 +33,11 @@ struct ContactPlane
   /// to the proxy's side; used by the first pass of the update stage. Set when `shaded`.
   bool shaded = false;
   Vec3 shadedNormal;
+  /// The surface's friction coefficients and viscosity here (paper 4.1, 4.2); all 0 on a surface
+  /// without friction.
+  double staticFriction = 0.0;
+  double dynamicFriction = 0.0;
+  double viscosity = 0.0;
 };
 
 struct ProxyTickResult
@@ -53,6 +58,11 @@ struct ProxyTickResult
   bool usedExactFallback = false;
   /// A shaded plane took part in the update stage this tick (two passes, paper section 3).
   bool usedShading = false;
+  /// Static friction held the proxy where the tick began: the finger was inside a contact's
+  /// friction cone (4.1).
+  bool stuck = false;
+  /// Dynamic or viscous friction shortened a slide this tick (4.2).
+  bool frictionLimited = false;
   QueryStats queries;
 };
 
@@ -98,6 +108,13 @@ private:
   /// The update stage's goal for the gathered planes: one pass (paper 2.2), or, when a plane is
   /// shaded, the two passes of section 3.
   GoalSolution solveUpdateStage(const Vec3& toFinger) const;
+  /// True if the finger lies inside the static friction cone of a plane at the proxy (4.1).
+  bool insideStaticCone(const Vec3& toFinger) const;
+  /// The slide `solution` may make under dynamic and viscous friction (4.2, eq. 21): its length
+  /// cut to leave the finger on the dynamic cone, and to the viscous travel left in the tick
+  /// (`viscousBudget`, negative until the tick's first viscous contact sets it).
+  double frictionLimitedTravel(const GoalSolution& solution, double travel,
+                               double& viscousBudget) const;
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
@@ -120,6 +137,7 @@ private:
   Vec3 m_shadedNormals[kMaxConstraintPlanes];
   int m_numPlanes = 0;
   bool m_anyShaded = false;
+  bool m_anyFriction = false;
   bool m_planesValid = false;
   bool m_planesComplete = true;
   Vec3 m_planesPosition;
