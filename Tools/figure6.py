@@ -8,16 +8,12 @@ force direction between ticks.
 Usage: Tools/figure6.py [--proxima build/bin/proxima] [--out Documentation/Figures/figure6.png]
 """
 import argparse
-import csv
 import math
 import os
-import subprocess
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")  # no display on CI machines
-import matplotlib.pyplot as plt  # noqa: E402
+from proxima_runs import proxima, read_trace, write_path
+import matplotlib.pyplot as plt  # noqa: E402 (proxima_runs picks the Agg backend first)
 
 SIDES = 10
 PRISM_RADIUS = 0.05
@@ -26,47 +22,41 @@ TICKS_PER_TURN = 3600
 RATE = 1000.0
 
 
-def write_path(path):
+def circle_path(path):
     """Press in from 5 mm outside along x, settle a quarter turn, then one measured turn."""
     finger_radius = PRISM_RADIUS * math.cos(math.pi / SIDES) - DEPTH
-    rows = []
+    points = []
     start = PRISM_RADIUS + 0.005
     press = 100
     for i in range(press + 1):
-        rows.append((start + (finger_radius - start) * i / press, 0.0))
+        points.append((start + (finger_radius - start) * i / press, 0.0, 0.0))
     for i in range(1, TICKS_PER_TURN + TICKS_PER_TURN // 4 + 1):
         angle = 2.0 * math.pi * i / TICKS_PER_TURN
-        rows.append((finger_radius * math.cos(angle), finger_radius * math.sin(angle)))
-    with open(path, "w") as f:
-        f.write("t,x,y,z\n")
-        for k, (x, y) in enumerate(rows):
-            f.write("%.17g,%.17g,%.17g,0\n" % (k / RATE, x, y))
+        points.append((finger_radius * math.cos(angle), finger_radius * math.sin(angle), 0.0))
+    write_path(path, points, RATE)
     return press + 1 + TICKS_PER_TURN // 4  # first measured row
 
 
 def errors(trace, first):
     angles, errs, jumps = [], [], []
     previous = None
-    with open(trace) as f:
-        for row in csv.DictReader(f):
-            tick = int(row["tick"])
-            if tick < first:
-                continue
-            fx, fy = float(row["force_x"]), float(row["force_y"])
-            x, y = float(row["finger_x"]), float(row["finger_y"])
-            norm = math.hypot(fx, fy)
-            if norm == 0.0:
-                continue
-            finger_angle = math.atan2(y, x)
-            direction = (fx / norm, fy / norm)
-            # The force on the finger points out of the cylinder: radial at the finger's angle.
-            cosine = direction[0] * math.cos(finger_angle) + direction[1] * math.sin(finger_angle)
-            errs.append(math.degrees(math.acos(max(-1.0, min(1.0, cosine)))))
-            angles.append(math.degrees(finger_angle) % 360.0)
-            if previous is not None:
-                c = direction[0] * previous[0] + direction[1] * previous[1]
-                jumps.append(math.degrees(math.acos(max(-1.0, min(1.0, c)))))
-            previous = direction
+    for row in read_trace(trace):
+        if row["tick"] < first:
+            continue
+        fx, fy = row["force_x"], row["force_y"]
+        norm = math.hypot(fx, fy)
+        if norm == 0.0:
+            continue
+        finger_angle = math.atan2(row["finger_y"], row["finger_x"])
+        direction = (fx / norm, fy / norm)
+        # The force on the finger points out of the cylinder: radial at the finger's angle.
+        cosine = direction[0] * math.cos(finger_angle) + direction[1] * math.sin(finger_angle)
+        errs.append(math.degrees(math.acos(max(-1.0, min(1.0, cosine)))))
+        angles.append(math.degrees(finger_angle) % 360.0)
+        if previous is not None:
+            c = direction[0] * previous[0] + direction[1] * previous[1]
+            jumps.append(math.degrees(math.acos(max(-1.0, min(1.0, c)))))
+        previous = direction
     return angles, errs, jumps
 
 
@@ -78,16 +68,14 @@ def main():
     work = tempfile.mkdtemp(prefix="figure6-")
     mesh = os.path.join(work, "prism.obj")
     path = os.path.join(work, "circle.csv")
-    subprocess.run([args.proxima, "generate", "prism", "--sides", str(SIDES), "--radius",
-                    str(PRISM_RADIUS), "--height", "0.1", "--out", mesh], check=True,
-                   stdout=subprocess.DEVNULL)
-    first = write_path(path)
+    proxima(args.proxima, "generate", "prism", "--sides", SIDES, "--radius", PRISM_RADIUS,
+            "--height", 0.1, "--out", mesh)
+    first = circle_path(path)
     results = {}
     for shading in ["off", "on"]:
         trace = os.path.join(work, "trace-%s.csv" % shading)
-        subprocess.run([args.proxima, "run", "--mesh", mesh, "--path", path, "--out", trace,
-                        "--shading", shading, "--max-force", "100"], check=True,
-                       stdout=subprocess.DEVNULL)
+        proxima(args.proxima, "run", "--mesh", mesh, "--path", path, "--out", trace,
+                "--shading", shading, "--max-force", 100)
         results[shading] = errors(trace, first)
     fig, ax = plt.subplots(figsize=(9, 4.2))
     for shading, label, style in [("off", "faceted (--shading off)", "-"),

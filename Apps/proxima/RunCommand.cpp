@@ -40,6 +40,9 @@ struct RunOptions
   int maxIterations = 256;
   double skin = 0.0;
   std::string shading = "off";
+  double staticFriction = 0.0;
+  double dynamicFriction = 0.0;
+  double viscosity = 0.0;
 };
 
 // --shading: on asks for normals the file must have (computing them is a later feature), auto
@@ -53,6 +56,9 @@ SurfaceMaterial materialFor(const RunOptions& options, const TriangleMesh& mesh)
                                    "--shading auto to shade only meshes that have them)");
   }
   material.shading = options.shading == "on" || (options.shading == "auto" && mesh.hasPointNormals());
+  material.staticFriction = options.staticFriction;
+  material.dynamicFriction = options.dynamicFriction;
+  material.viscosity = options.viscosity;
   return material;
 }
 
@@ -115,6 +121,8 @@ int run(const RunOptions& options)
   parameters.radius = options.radius;
   parameters.skin = options.skin;
   parameters.maxIterations = options.maxIterations;
+  parameters.stiffness = options.stiffness;
+  parameters.timeStep = 1.0 / options.rate;
   ProxySolver solver;
   solver.setScene(&scene, parameters);
 
@@ -171,6 +179,9 @@ int run(const RunOptions& options)
   json["stiffness_N_per_m"] = options.stiffness;
   json["rate_hz"] = options.rate;
   json["shading"] = material.shading;
+  json["static_friction"] = material.staticFriction;
+  json["dynamic_friction"] = material.dynamicFriction;
+  json["viscosity_N_s_per_m"] = material.viscosity;
   json["ticks"] = summary.ticks();
   json["contact_ticks"] = summary.contactTicks();
   json["iterations"] = {
@@ -184,6 +195,8 @@ int run(const RunOptions& options)
   json["refused_finger_ticks"] = summary.refusedTicks();
   json["contact_overflow_ticks"] = summary.overflowTicks();
   json["clamped_force_ticks"] = summary.clampedTicks();
+  json["stuck_ticks"] = summary.stuckTicks();
+  json["friction_limited_ticks"] = summary.frictionLimitedTicks();
   json["max_force_N"] = summary.maxForce();
   json["solve_ns"] = {{"median", summary.solveNanosecondsQuantile(0.5)},
                       {"p99", summary.solveNanosecondsQuantile(0.99)},
@@ -235,6 +248,15 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--shading", options->shading,
                   "Force shading from the mesh's point normals: off, on or auto (default off)")
     ->check(CLI::IsMember({"off", "on", "auto"}));
+  app->add_option("--static-friction", options->staticFriction,
+                  "Static friction coefficient mu_s (default 0: none)")
+    ->check(CLI::NonNegativeNumber);
+  app->add_option("--dynamic-friction", options->dynamicFriction,
+                  "Dynamic friction coefficient mu_d (default 0: none)")
+    ->check(CLI::NonNegativeNumber);
+  app->add_option("--viscosity", options->viscosity,
+                  "Viscous friction b in N s/m (default 0: none)")
+    ->check(CLI::NonNegativeNumber);
   app->add_option("--skin", options->skin,
                   "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
     ->check(CLI::NonNegativeNumber);

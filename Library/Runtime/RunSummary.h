@@ -22,6 +22,8 @@ public:
   std::uint64_t refusedTicks() const { return m_refusedTicks; }
   std::uint64_t overflowTicks() const { return m_overflowTicks; }
   std::uint64_t clampedTicks() const { return m_clampedTicks; }
+  std::uint64_t stuckTicks() const { return m_stuckTicks; }
+  std::uint64_t frictionLimitedTicks() const { return m_frictionLimitedTicks; }
   double maxForce() const { return m_maxForce; }
   /// Quantile q in [0, 1] of the per-tick solve time in nanoseconds (nearest rank).
   double solveNanosecondsQuantile(double q) const;
@@ -36,6 +38,8 @@ private:
   std::uint64_t m_refusedTicks = 0;
   std::uint64_t m_overflowTicks = 0;
   std::uint64_t m_clampedTicks = 0;
+  std::uint64_t m_stuckTicks = 0;
+  std::uint64_t m_frictionLimitedTicks = 0;
   std::uint64_t m_trianglesTested = 0;
   double m_maxForce = 0.0;
   mutable std::vector<std::int64_t> m_solveNanoseconds;

@@ -26,6 +26,8 @@ TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, Ha
   record.iterations = result.iterations;
   record.hitIterationCap = result.hitIterationCap;
   record.contactOverflow = result.contactOverflow;
+  record.stuck = result.stuck;
+  record.frictionLimited = result.frictionLimited;
   record.trianglesTested = result.queries.trianglesTested;
   record.fingerRefused = !sample.valid || result.refusedFinger;
 

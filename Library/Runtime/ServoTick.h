@@ -34,6 +34,9 @@ struct TickRecord
   bool hitIterationCap = false;
   bool contactOverflow = false;
   bool forceClamped = false;
+  /// Static friction held the proxy; dynamic or viscous friction shortened its slide.
+  bool stuck = false;
+  bool frictionLimited = false;
   std::uint32_t trianglesTested = 0;
 };
 
