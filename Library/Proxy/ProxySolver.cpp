@@ -1,5 +1,7 @@
 #include "Proxy/ProxySolver.h"
 
+#include "Proxy/SurfaceTexture.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -211,6 +213,7 @@ bool ProxySolver::gatherPlanes(const Vec3& position, QueryStats& stats)
 bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
 {
   m_numPlanes = 0;
+  m_numFirstPass = 0;
   m_anyShaded = false;
   m_anyFriction = false;
   bool complete = true;
@@ -288,12 +291,45 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     plane.shaded = object.material.shading && object.mesh.hasPointNormals() &&
                    interpolatedNormal(object.mesh, near.triangle, near.closest, normal,
                                       plane.shadedNormal);
-    m_shadedNormals[m_numPlanes] = plane.shaded ? plane.shadedNormal : normal;
-    m_anyShaded = m_anyShaded || plane.shaded;
-    plane.staticFriction = object.material.staticFriction;
-    plane.dynamicFriction = object.material.dynamicFriction;
-    plane.viscosity = object.material.viscosity;
-    m_anyFriction = m_anyFriction || object.material.hasFriction();
+    const SurfaceMaterial& material = object.material;
+    plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
+    plane.staticFriction = material.staticFriction;
+    plane.dynamicFriction = material.dynamicFriction;
+    plane.viscosity = material.viscosity;
+    const Vec3 firstPass = plane.shaded ? plane.shadedNormal : normal;
+    int bumps = 0;
+    if (plane.textured)
+    {
+      // Paper 4.3: the contact weights interpolate the texture coordinate; each bump map gives a
+      // first-pass plane of its own, and property maps scale the coefficients there.
+      plane.texCoord = interpolateTexCoord(object.mesh, near.triangle, near.closest);
+      const double friction = textureScale(material, TextureRole::Friction, plane.texCoord);
+      plane.staticFriction *= friction;
+      plane.dynamicFriction *= friction;
+      plane.viscosity *= textureScale(material, TextureRole::Viscosity, plane.texCoord);
+      for (const TextureMap& map : material.textures)
+      {
+        Vec3 bumped;
+        if (map.role != TextureRole::Bump ||
+            !bumpedNormal(object.mesh, near.triangle, plane.texCoord, firstPass, map, bumped))
+        {
+          continue;
+        }
+        if (m_numFirstPass == kMaxConstraintPlanes)
+        {
+          complete = false;
+          break;
+        }
+        m_firstPassNormals[m_numFirstPass++] = bumped;
+        ++bumps;
+      }
+    }
+    if (bumps == 0 && m_numFirstPass < kMaxConstraintPlanes)
+    {
+      m_firstPassNormals[m_numFirstPass++] = firstPass;
+    }
+    m_anyShaded = m_anyShaded || plane.shaded || bumps > 0;
+    m_anyFriction = m_anyFriction || material.hasFriction();
     m_normals[m_numPlanes] = normal;
     ++m_numPlanes;
   }
@@ -310,7 +346,7 @@ GoalSolution ProxySolver::solveUpdateStage(const Vec3& toFinger) const
   // for, with the shaded planes; the second pass finds the goal nearest that subgoal with the
   // true planes. A subgoal above every true plane is first projected onto the nearest one, so
   // that the proxy stays on the surface (and friction and texture see a contact).
-  Vec3 subgoal = solveGoal(toFinger, m_shadedNormals, m_numPlanes).displacement;
+  Vec3 subgoal = solveGoal(toFinger, m_firstPassNormals, m_numFirstPass).displacement;
   const double tolerance = 1e-12 * norm(toFinger);
   int nearest = -1;
   double least = 0.0;

@@ -33,6 +33,9 @@ struct ContactPlane
   /// to the proxy's side; used by the first pass of the update stage. Set when `shaded`.
   bool shaded = false;
   Vec3 shadedNormal;
+  /// Texture (paper 4.3): the texture coordinate at the contact, on a textured surface.
+  bool textured = false;
+  TexCoord texCoord;
   /// The surface's friction coefficients and viscosity here (paper 4.1, 4.2); all 0 on a surface
   /// without friction.
   double staticFriction = 0.0;
@@ -133,8 +136,10 @@ private:
   std::uint32_t m_nearbyObject[kMaxNearbyTriangles];
   ContactPlane m_planes[kMaxConstraintPlanes];
   Vec3 m_normals[kMaxConstraintPlanes];
-  /// The first pass's normals: shaded where the plane is, true elsewhere.
-  Vec3 m_shadedNormals[kMaxConstraintPlanes];
+  /// The first pass's planes: shaded (and bumped, one per bump map) where the surface is, true
+  /// elsewhere.
+  Vec3 m_firstPassNormals[kMaxConstraintPlanes];
+  int m_numFirstPass = 0;
   int m_numPlanes = 0;
   bool m_anyShaded = false;
   bool m_anyFriction = false;
