@@ -508,7 +508,8 @@ TEST_P(SharedMeshNormals, CornersStayWithinTheAngleAndMatchTheOracle)
   ASSERT_TRUE(soup.pointNormals.empty()) << "the file has normals of its own";
   const TriangleSoup result = proxima::withFeatureAngleNormals(soup, c.featureAngleDegrees);
 
-  // An angle-weighted mean of unit normals within a cone lies within that cone.
+  // An angle-weighted mean of unit normals within a cone lies within that cone (the cone is
+  // convex for the angles up to 90 degrees tested here).
   double worst = 0.0;
   for (std::size_t t = 0; t < result.triangles.size(); ++t)
   {
