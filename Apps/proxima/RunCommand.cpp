@@ -5,6 +5,7 @@
 #include "IO/FingerPathFile.h"
 #include "IO/InputError.h"
 #include "IO/MeshReader.h"
+#include "IO/PointNormals.h"
 #include "IO/TraceWriter.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
@@ -40,21 +41,31 @@ struct RunOptions
   int maxIterations = 256;
   double skin = 0.0;
   std::string shading = "off";
+  double featureAngle = 30.0;
   double staticFriction = 0.0;
   double dynamicFriction = 0.0;
   double viscosity = 0.0;
 };
 
-// --shading: on asks for normals the file must have (computing them is a later feature), auto
-// shades exactly when the file has them.
+// The mesh as the run shades it: --shading on gives a mesh whose file has no point normals
+// normals computed with --feature-angle (sharp CAD edges stay sharp); auto and off keep the file's.
+TriangleMesh meshFor(const RunOptions& options, std::string& normals)
+{
+  TriangleSoup soup = readMeshFile(options.mesh, options.scale);
+  normals = soup.pointNormals.empty() ? "none" : "file";
+  if (options.shading == "on" && soup.pointNormals.empty())
+  {
+    soup = withFeatureAngleNormals(soup, options.featureAngle);
+    normals = "computed";
+  }
+  return buildTriangleMesh(std::move(soup), options.mesh);
+}
+
+// --shading: on shades (with the file's normals or computed ones), auto shades exactly when the
+// file has normals, off never.
 SurfaceMaterial materialFor(const RunOptions& options, const TriangleMesh& mesh)
 {
   SurfaceMaterial material;
-  if (options.shading == "on" && !mesh.hasPointNormals())
-  {
-    throw InputError(options.mesh, "has no point normals, which --shading on needs (use "
-                                   "--shading auto to shade only meshes that have them)");
-  }
   material.shading = options.shading == "on" || (options.shading == "auto" && mesh.hasPointNormals());
   material.staticFriction = options.staticFriction;
   material.dynamicFriction = options.dynamicFriction;
@@ -106,7 +117,8 @@ int run(const RunOptions& options)
 {
   const auto readStart = std::chrono::steady_clock::now();
   CollisionScene scene;
-  const TriangleMesh mesh = loadTriangleMesh(options.mesh, options.scale);
+  std::string normals;
+  const TriangleMesh mesh = meshFor(options, normals);
   const FingerPath fingerPath = readFingerPathFile(options.path);
   const double readMilliseconds = millisecondsSince(readStart);
 
@@ -179,6 +191,11 @@ int run(const RunOptions& options)
   json["stiffness_N_per_m"] = options.stiffness;
   json["rate_hz"] = options.rate;
   json["shading"] = material.shading;
+  json["point_normals"] = normals;
+  if (normals == "computed")
+  {
+    json["feature_angle_deg"] = options.featureAngle;
+  }
   json["static_friction"] = material.staticFriction;
   json["dynamic_friction"] = material.dynamicFriction;
   json["viscosity_N_s_per_m"] = material.viscosity;
@@ -248,6 +265,10 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--shading", options->shading,
                   "Force shading from the mesh's point normals: off, on or auto (default off)")
     ->check(CLI::IsMember({"off", "on", "auto"}));
+  app->add_option("--feature-angle", options->featureAngle,
+                  "With --shading on and a mesh without normals: edges sharper than this many "
+                  "degrees stay sharp (default 30)")
+    ->check(CLI::Range(0.0, 180.0));
   app->add_option("--static-friction", options->staticFriction,
                   "Static friction coefficient mu_s (default 0: none)")
     ->check(CLI::NonNegativeNumber);

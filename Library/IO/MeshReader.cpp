@@ -60,7 +60,11 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
 
 TriangleMesh loadTriangleMesh(const std::string& path, double scale)
 {
-  TriangleSoup soup = readMeshFile(path, scale);
+  return buildTriangleMesh(readMeshFile(path, scale), path);
+}
+
+TriangleMesh buildTriangleMesh(TriangleSoup soup, const std::string& path)
+{
   TriangleMesh mesh;
   MeshError error;
   if (!mesh.build(std::move(soup), error))

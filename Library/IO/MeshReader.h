@@ -33,4 +33,8 @@ TriangleSoup readMeshFile(const std::string& path, double scale = 1.0);
 /// TriangleMesh::numDegenerateTriangles).
 TriangleMesh loadTriangleMesh(const std::string& path, double scale = 1.0);
 
+/// TriangleMesh::build of a soup read from `path` (changed since, say by
+/// withFeatureAngleNormals): a MeshError becomes an InputError naming the file.
+TriangleMesh buildTriangleMesh(TriangleSoup soup, const std::string& path);
+
 } // namespace proxima

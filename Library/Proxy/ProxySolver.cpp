@@ -22,6 +22,9 @@ constexpr double kMaxCurvatureStretch = 64.0;
 // trading rounding errors between two planes, as 1 km from the origin).
 constexpr int kMaxStalledIterations = 3;
 
+// Update stages in a tick that re-shade the target (see update()).
+constexpr int kMaxShadedIterations = 8;
+
 // Whether the proxy, touching `corners` at `closest` with contact normal `normal`, sits on a curved
 // part of the triangle's configuration-space obstacle: an edge or corner contact off the face's
 // normal line. Right above a face (or an edge shared with a coplanar neighbour) it is flat.
@@ -336,16 +339,12 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
   return complete;
 }
 
-GoalSolution ProxySolver::solveUpdateStage(const Vec3& toFinger) const
+Vec3 ProxySolver::shadedSubgoal(const Vec3& toFinger) const
 {
-  if (!m_anyShaded)
-  {
-    return solveGoal(toFinger, m_normals, m_numPlanes);
-  }
-  // Paper section 3: the first pass finds the subgoal of the curved surface the normals stand
-  // for, with the shaded planes; the second pass finds the goal nearest that subgoal with the
-  // true planes. A subgoal above every true plane is first projected onto the nearest one, so
-  // that the proxy stays on the surface (and friction and texture see a contact).
+  // Paper section 3: the first pass finds the subgoal of the curved (or bumpy) surface the
+  // normals stand for, with the first-pass planes. A subgoal above every true plane is projected
+  // onto the nearest one, so that the proxy stays on the surface (and friction and texture see a
+  // contact). The second pass is the plain loop with this subgoal for the finger.
   Vec3 subgoal = solveGoal(toFinger, m_firstPassNormals, m_numFirstPass).displacement;
   const double tolerance = 1e-12 * norm(toFinger);
   int nearest = -1;
@@ -365,7 +364,7 @@ GoalSolution ProxySolver::solveUpdateStage(const Vec3& toFinger) const
   {
     subgoal -= m_normals[nearest] * least;
   }
-  return solveGoal(subgoal, m_normals, m_numPlanes);
+  return subgoal;
 }
 
 bool ProxySolver::insideStaticCone(const Vec3& toFinger) const
@@ -434,6 +433,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
   refreshCache(result.queries);
   const Vec3 tickStart = m_proxy;
   GoalSolution solution;
+  Vec3 target = finger; // the shaded subgoal instead, on a shaded surface
   Vec3 previousGoal = m_proxy;
   bool blockedAtOnce = false;
   int stalled = 0;
@@ -447,9 +447,18 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
     // head straight for the finger, or every tick would push it a little deeper into the skin.
     result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    solution = solveUpdateStage(finger - m_proxy);
+    if (m_anyShaded && result.iterations < kMaxShadedIterations)
+    {
+      // Shading (and bump texture): each update stage's first pass picks the target that the
+      // second pass, the plain loop with the true planes, seeks. After a few moves the target is
+      // frozen: re-shading after every move can chase a shaded normal that turns as the proxy
+      // slides (near a sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap),
+      // while the plain loop toward a fixed target always settles.
+      target = m_proxy + shadedSubgoal(finger - m_proxy);
+      result.usedShading = true;
+    }
+    solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
     result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
-    result.usedShading = result.usedShading || m_anyShaded;
     if (m_anyFriction)
     {
       // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
@@ -475,8 +484,8 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     }
     // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
     // surface sends it elsewhere on purpose.
-    const Vec3 step = mayStretch && !m_anyShaded && !m_anyFriction
-                        ? curvatureCorrectedStep(solution, finger - m_proxy)
+    const Vec3 step = mayStretch && !result.usedShading && !m_anyFriction
+                        ? curvatureCorrectedStep(solution, target - m_proxy)
                         : solution.displacement;
     const bool stretched = step != solution.displacement;
     const Vec3 goal = m_proxy + step;
@@ -493,7 +502,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     ++result.iterations;
     const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
     const Vec3 before = m_proxy;
-    const double distanceBefore = norm(finger - before);
+    const double distanceBefore = norm(target - before);
     m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
     blockedAtOnce = m_proxy == before;
     previousGoal = goal;
@@ -501,12 +510,14 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     {
       viscousBudget = std::max(0.0, viscousBudget - distance(m_proxy, before));
     }
-    if (m_proxy == finger)
+    // Progress is measured toward a fixed target: not while shading still moves it.
+    const bool targetMoving = m_anyShaded && result.iterations < kMaxShadedIterations;
+    if (m_proxy == target && !targetMoving)
     {
       solution = GoalSolution{};
       break;
     }
-    const double toFinger = norm(finger - m_proxy);
+    const double toFinger = norm(target - m_proxy);
     if (stretched)
     {
       beforeStretch = distanceBefore;
@@ -517,7 +528,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       mayStretch = false; // the stretched slide and its fall ended no nearer: stop stretching
     }
     beforeStretch = -1.0;
-    if (toFinger < distanceBefore - stepTolerance || result.usedShading)
+    if (toFinger < distanceBefore - stepTolerance || targetMoving)
     {
       stalled = 0;
     }
@@ -526,7 +537,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       // No nearer after several moves: rounding traded between planes, not progress. The last
       // update stage's planes stand for the contact.
       result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-      solution = solveUpdateStage(finger - m_proxy);
+      solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
       break;
     }
   }

@@ -108,9 +108,9 @@ private:
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
   /// gatherPlanes without the reuse.
   bool collectPlanes(const Vec3& position, QueryStats& stats);
-  /// The update stage's goal for the gathered planes: one pass (paper 2.2), or, when a plane is
-  /// shaded, the two passes of section 3.
-  GoalSolution solveUpdateStage(const Vec3& toFinger) const;
+  /// The first pass of section 3 on the gathered planes: the subgoal (minus the proxy) of the
+  /// shaded and bumped planes, projected onto the nearest true plane when above them all.
+  Vec3 shadedSubgoal(const Vec3& toFinger) const;
   /// True if the finger lies inside the static friction cone of a plane at the proxy (4.1).
   bool insideStaticCone(const Vec3& toFinger) const;
   /// The slide `solution` may make under dynamic and viscous friction (4.2, eq. 21): its length
