@@ -3,6 +3,7 @@
 // through the IO layer (IO/TextureImageFile.h, OpenImageIO inside).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -23,12 +24,21 @@ public:
   std::uint32_t height() const { return m_height; }
   bool empty() const { return m_values.empty(); }
   /// Texel (i, j), no wrapping: i < width, j < height.
-  float texel(std::uint32_t i, std::uint32_t j) const { return m_values[j * m_width + i]; }
+  float texel(std::uint32_t i, std::uint32_t j) const
+  {
+    // In size_t: j * width overflows 32 bits on an image of more than 4 Gi texels.
+    return m_values[static_cast<std::size_t>(j) * m_width + i];
+  }
 
-  /// The bilinear interpolant at (u, v), repeating outside [0, 1) (the texture tiles).
+  /// The bilinear interpolant at (u, v), repeating outside [0, 1) (the texture tiles). Never
+  /// allocates and never returns NaN: any finite u and v work, however large or negative, and a
+  /// coordinate that is not finite is taken as 0. An empty image samples as 0.
   double sample(double u, double v) const;
   /// The derivatives of that interpolant with respect to u and v at (u, v) (per unit of u and v,
-  /// not per texel), for bump mapping. Piecewise constant across texel cells.
+  /// not per texel), for bump mapping. Each is linear in the other coordinate within a texel
+  /// cell (the cell between four texel centres); on a cell boundary, where the interpolant has a
+  /// kink, it is the derivative in the cell on the positive side. Same coordinate handling as
+  /// sample(); an empty image has gradient 0.
   void gradient(double u, double v, double& dSampleDu, double& dSampleDv) const;
 
 private:
