@@ -10,6 +10,23 @@ if(PROXIMA_BUILD_APPS)
                FiltersCore)
   # OFF reading and mesh preparation (welding, normals with a feature angle).
   find_package(OpenMesh REQUIRED)
+  # Texture images (PNG, JPEG, TIFF, OpenEXR) for the IO layer, and to write test images.
+  find_package(OpenImageIO CONFIG REQUIRED)
+  # Debian 12's OpenImageIO target names /usr/include/opencv4, which exists only with
+  # libopencv-dev (OIIO's headers do not need it); CMake refuses a target naming a missing folder,
+  # so drop the folders that are not there.
+  foreach(_property INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+    get_target_property(_folders OpenImageIO::OpenImageIO ${_property})
+    if(_folders)
+      set(_present)
+      foreach(_folder IN LISTS _folders)
+        if(EXISTS "${_folder}")
+          list(APPEND _present "${_folder}")
+        endif()
+      endforeach()
+      set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${_property} "${_present}")
+    endif()
+  endforeach()
   # Command-line parsing and JSON output.
   find_package(CLI11 REQUIRED)
   find_package(nlohmann_json 3.10 REQUIRED)
