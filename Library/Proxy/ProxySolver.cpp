@@ -543,6 +543,13 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
   }
   result.proxy = m_proxy;
   m_lastTravel = norm(m_proxy - tickStart);
+  if (result.usedShading || m_anyFriction)
+  {
+    // The contacts are the planes the finger pushes on, with the depths of eq. 19: where the loop
+    // sought a shaded subgoal, or friction cut its slide, its last solve says less than that.
+    result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
+    solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+  }
   for (int k = 0; k < solution.numActive; ++k)
   {
     ContactPlane plane = m_planes[solution.active[k]];
