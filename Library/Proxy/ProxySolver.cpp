@@ -137,6 +137,8 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
                                                        : parameters.radius;
   m_cache.invalidate();
   m_planesValid = false;
+  // DESIGN.md section 4's accuracy scale: 1 nm, or 1e-9 of the scene's size if larger.
+  m_shadingTolerance = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
 }
 
 void ProxySolver::refreshCache(QueryStats& stats)
@@ -434,6 +436,7 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
   const Vec3 tickStart = m_proxy;
   GoalSolution solution;
   Vec3 target = finger; // the shaded subgoal instead, on a shaded surface
+  bool shadingSettled = false;
   Vec3 previousGoal = m_proxy;
   bool blockedAtOnce = false;
   int stalled = 0;
@@ -447,14 +450,17 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
     // head straight for the finger, or every tick would push it a little deeper into the skin.
     result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    if (m_anyShaded && result.iterations < kMaxShadedIterations)
+    if (m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations)
     {
       // Shading (and bump texture): each update stage's first pass picks the target that the
-      // second pass, the plain loop with the true planes, seeks. After a few moves the target is
-      // frozen: re-shading after every move can chase a shaded normal that turns as the proxy
-      // slides (near a sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap),
-      // while the plain loop toward a fixed target always settles.
-      target = m_proxy + shadedSubgoal(finger - m_proxy);
+      // second pass, the plain loop with the true planes, seeks. The target is frozen once it
+      // moves by less than the accuracy scale between update stages, or after a few moves:
+      // re-shading after every move can chase a shaded normal that turns as the proxy slides
+      // (near a sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap), while the
+      // plain loop toward a fixed target always settles.
+      const Vec3 shaded = m_proxy + shadedSubgoal(finger - m_proxy);
+      shadingSettled = result.usedShading && distance(shaded, target) <= m_shadingTolerance;
+      target = shaded;
       result.usedShading = true;
     }
     solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
@@ -511,7 +517,8 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
       viscousBudget = std::max(0.0, viscousBudget - distance(m_proxy, before));
     }
     // Progress is measured toward a fixed target: not while shading still moves it.
-    const bool targetMoving = m_anyShaded && result.iterations < kMaxShadedIterations;
+    const bool targetMoving =
+      m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations;
     if (m_proxy == target && !targetMoving)
     {
       solution = GoalSolution{};

@@ -131,6 +131,8 @@ private:
   SphereTreeScratch m_scratch;
   CandidateCache m_cache;
   double m_coherenceMargin = 0.0;
+  /// A shaded target that moves less than this between update stages is settled.
+  double m_shadingTolerance = 1e-9;
   double m_lastTravel = 0.0;
   NearbyTriangle m_nearby[kMaxNearbyTriangles];
   std::uint32_t m_nearbyObject[kMaxNearbyTriangles];

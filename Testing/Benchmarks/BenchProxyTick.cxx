@@ -7,6 +7,8 @@
 #include "Geometry/ProceduralMeshes.h"
 #include "IO/MeshReader.h"
 #include "Proxy/ProxySolver.h"
+#include "Proxy/SurfaceMaterial.h"
+#include "Proxy/TextureImage.h"
 #include "Runtime/PathGenerators.h"
 
 #include <benchmark/benchmark.h>
@@ -159,6 +161,91 @@ void BM_ProxyTickIcosphere(benchmark::State& state)
   playPath(state, icosphereWorkload(static_cast<std::uint32_t>(state.range(0))));
 }
 BENCHMARK(BM_ProxyTickIcosphere)->Arg(5)->Arg(7)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+// Pay for what you use (issue: surface effects): the same press and stroke on the 1.3M-triangle
+// icosphere with each surface effect on alone, and with shading asked for on a copy of the mesh
+// without normals (which must cost what the plain surface costs). The bump map is a 1024 x 1024
+// sinusoidal height of 20 um on texture coordinates projected from above.
+enum SurfaceEffects : int
+{
+  kPlain,
+  kShadingWithoutNormals,
+  kShading,
+  kFriction,
+  kBump,
+  kEverything,
+  kNumEffects
+};
+
+const char* effectName(int effects)
+{
+  static const char* names[kNumEffects] = {"plain", "shading asked, no normals", "shading",
+                                           "friction", "bump texture", "all"};
+  return names[effects];
+}
+
+std::shared_ptr<const TextureImage> bumpImage()
+{
+  const std::uint32_t size = 1024;
+  std::vector<float> values(size * size);
+  for (std::uint32_t j = 0; j < size; ++j)
+  {
+    for (std::uint32_t i = 0; i < size; ++i)
+    {
+      values[j * size + i] = static_cast<float>(0.5 + 0.25 * std::sin(0.2 * i) + 0.25 * std::sin(0.2 * j));
+    }
+  }
+  return std::make_shared<const TextureImage>(size, size, std::move(values));
+}
+
+const Workload& effectsWorkload(int effects)
+{
+  static std::map<int, std::unique_ptr<Workload>> cache;
+  auto& slot = cache[effects];
+  if (!slot)
+  {
+    slot = std::make_unique<Workload>();
+    const std::uint32_t subdivisions = 8;
+    const double radius = kEdge * std::ldexp(1.0, static_cast<int>(subdivisions)) / 1.05;
+    TriangleSoup soup = makeIcosphere(subdivisions, radius);
+    if (effects == kShadingWithoutNormals)
+    {
+      soup.pointNormals.clear();
+    }
+    for (const Vec3& p : soup.points)
+    {
+      soup.texCoords.push_back({p.x / (2.0 * radius) + 0.5, p.y / (2.0 * radius) + 0.5});
+    }
+    SurfaceMaterial material;
+    material.shading = effects == kShadingWithoutNormals || effects == kShading || effects == kEverything;
+    if (effects == kFriction || effects == kEverything)
+    {
+      material.staticFriction = 0.5;
+      material.dynamicFriction = 0.3;
+      material.viscosity = 1.0;
+    }
+    if (effects == kBump || effects == kEverything)
+    {
+      material.textures.push_back(TextureMap{bumpImage(), TextureRole::Bump, 2e-5});
+    }
+    TriangleMesh mesh;
+    MeshError error;
+    mesh.build(std::move(soup), error);
+    slot->triangles = mesh.numTriangles();
+    slot->scene.addObject(std::move(mesh), SphereTreeOptions{}, material);
+    slot->path = slidingPath(slot->scene.objects.front());
+  }
+  return *slot;
+}
+
+void BM_ProxyTickSurfaceEffects(benchmark::State& state)
+{
+  const int effects = static_cast<int>(state.range(0));
+  state.SetLabel(effectName(effects));
+  playPath(state, effectsWorkload(effects));
+}
+BENCHMARK(BM_ProxyTickSurfaceEffects)->DenseRange(0, kNumEffects - 1)
+  ->Unit(benchmark::kMillisecond)->Iterations(5);
 
 void BM_ProxyTickSkull(benchmark::State& state)
 {

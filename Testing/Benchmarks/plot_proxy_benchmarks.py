@@ -19,15 +19,18 @@ P999_TARGET_NS = 20000.0  # and p99.9
 def load(path):
     with open(path) as f:
         data = json.load(f)
-    rows = []
+    rows, effects = [], []
     for b in data["benchmarks"]:
         if b.get("run_type", "iteration") != "iteration" or b.get("error_occurred"):
             continue
         name = b["name"].split("/")
+        if "SurfaceEffects" in name[0]:
+            effects.append(b)
+            continue
         mesh = "skull (CT, shared)" if "Skull" in name[0] else "icosphere %s" % name[1]
         rows.append(dict(b, mesh=mesh))
     rows.sort(key=lambda r: r["triangles"])
-    return data["context"], rows
+    return data["context"], rows, effects
 
 
 def machine(context):
@@ -81,15 +84,36 @@ def table(rows, path):
         f.write("\n".join(lines) + "\n")
 
 
+def effects_table(effects, path):
+    """The cost of each surface effect on the same path (pay for what you use)."""
+    if not effects:
+        return
+    plain = effects[0]["contact_median_ns"]
+    lines = [
+        "| surface | median / p99 / p99.9 in contact [us] | vs plain (median) | iterations per tick "
+        "| triangles tested per tick |",
+        "|---|---|---|---|---|",
+    ]
+    for b in effects:
+        lines.append("| %s | %.2f / %.1f / %.1f | %.2fx | %.2f | %.1f |" % (
+            b.get("label", b["name"]), b["contact_median_ns"] / 1e3, b["contact_p99_ns"] / 1e3,
+            b["contact_p999_ns"] / 1e3, b["contact_median_ns"] / plain, b["iterations_per_tick"],
+            b["triangles_tested_per_tick"]))
+    with open(path, "a") as f:
+        f.write("\nSurface effects on the 1.3M-triangle icosphere, same path:\n\n")
+        f.write("\n".join(lines) + "\n")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("results")
     parser.add_argument("--figure", required=True)
     parser.add_argument("--table", required=True)
     args = parser.parse_args()
-    context, rows = load(args.results)
+    context, rows, effects = load(args.results)
     plot(context, rows, args.figure)
     table(rows, args.table)
+    effects_table(effects, args.table)
 
 
 if __name__ == "__main__":
