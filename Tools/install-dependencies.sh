@@ -15,7 +15,7 @@ packages=(
   libopenmesh-dev
   # exact oracles in tests, AABB-tree baseline in benchmarks
   libcgal-dev
-  # texture images (later); the tools are needed by find_package(OpenImageIO)
+  # texture images; the tools are needed by find_package(OpenImageIO)
   libopenimageio-dev openimageio-tools
   # command line and reports
   libcli11-dev nlohmann-json3-dev
