@@ -63,6 +63,21 @@ bool interpolatedNormal(const TriangleMesh& mesh, std::uint32_t triangle,
   return true;
 }
 
+// Rotates v by the smallest rotation that takes unit vector `from` to unit vector `to`
+// (Rodrigues' formula); the identity when they agree.
+Vec3 rotateLike(const Vec3& from, const Vec3& to, const Vec3& v)
+{
+  const Vec3 axis = cross(from, to);
+  const double sine = norm(axis);
+  const double cosine = dot(from, to);
+  if (!(sine > 1e-15))
+  {
+    return cosine >= 0.0 ? v : v - from * (2.0 * dot(from, v)); // opposite: a half turn
+  }
+  const Vec3 k = axis / sine;
+  return v * cosine + cross(k, v) * sine + k * (dot(k, v) * (1.0 - cosine));
+}
+
 // The edge of `feature` as its two corners, or false for a vertex or the face.
 bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from, Vec3& to)
 {
@@ -75,6 +90,36 @@ bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from,
   }
 }
 } // namespace
+
+Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& plane) const
+{
+  // Paper 3.1, Fig. 7: a hypothetical configuration-space obstacle whose top face has the
+  // interpolated normal of the rim (and whose bottom face the flipped one) is tilted from the
+  // true one by the rotation that takes the face's normal to that interpolated normal; the shaded
+  // normal is the contact's true configuration-space normal turned by the same rotation. Right
+  // above the face it is the interpolated normal, right below it the flipped one, and in between
+  // it turns with the proxy around the rim instead of flipping where the two sides meet.
+  const TriangleCorners& c = mesh.corners(plane.triangle);
+  const Vec3 faceCross = cross(c.b - c.a, c.c - c.a);
+  const double faceLength = norm(faceCross);
+  const auto& index = mesh.indices(plane.triangle);
+  const std::vector<Vec3>& normals = mesh.pointNormals();
+  const Vec3 sum = normals[index[0]] * plane.closest.weights[0] +
+                   normals[index[1]] * plane.closest.weights[1] +
+                   normals[index[2]] * plane.closest.weights[2];
+  const double sumLength = norm(sum);
+  if (!(faceLength > 0.0) || !(sumLength > 0.0))
+  {
+    return plane.shadedNormal;
+  }
+  const Vec3 interpolated = sum / sumLength;
+  Vec3 face = faceCross / faceLength;
+  if (dot(face, interpolated) < 0.0)
+  {
+    face = -face; // the face's normal on the side the point normals are given for
+  }
+  return rotateLike(face, interpolated, plane.normal);
+}
 
 Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const
 {
@@ -290,54 +335,145 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     plane.closest = near.closest;
     plane.depth = 0.0;
     plane.curved = curved;
-    // Shading only where the material asks for it and the mesh has normals: a plain surface pays
-    // one branch per plane.
-    const CollisionObject& object = m_scene->objects[m_nearbyObject[i]];
-    plane.shaded = object.material.shading && object.mesh.hasPointNormals() &&
-                   interpolatedNormal(object.mesh, near.triangle, near.closest, normal,
-                                      plane.shadedNormal);
-    const SurfaceMaterial& material = object.material;
-    plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
-    plane.staticFriction = material.staticFriction;
-    plane.dynamicFriction = material.dynamicFriction;
-    plane.viscosity = material.viscosity;
-    const Vec3 firstPass = plane.shaded ? plane.shadedNormal : normal;
-    int bumps = 0;
-    if (plane.textured)
-    {
-      // Paper 4.3: the contact weights interpolate the texture coordinate; each bump map gives a
-      // first-pass plane of its own, and property maps scale the coefficients there.
-      plane.texCoord = interpolateTexCoord(object.mesh, near.triangle, near.closest);
-      const double friction = textureScale(material, TextureRole::Friction, plane.texCoord);
-      plane.staticFriction *= friction;
-      plane.dynamicFriction *= friction;
-      plane.viscosity *= textureScale(material, TextureRole::Viscosity, plane.texCoord);
-      for (const TextureMap& map : material.textures)
-      {
-        Vec3 bumped;
-        if (map.role != TextureRole::Bump ||
-            !bumpedNormal(object.mesh, near.triangle, plane.texCoord, firstPass, map, bumped))
-        {
-          continue;
-        }
-        if (m_numFirstPass == kMaxConstraintPlanes)
-        {
-          complete = false;
-          break;
-        }
-        m_firstPassNormals[m_numFirstPass++] = bumped;
-        ++bumps;
-      }
-    }
-    if (bumps == 0 && m_numFirstPass < kMaxConstraintPlanes)
-    {
-      m_firstPassNormals[m_numFirstPass++] = firstPass;
-    }
-    m_anyShaded = m_anyShaded || plane.shaded || bumps > 0;
-    m_anyFriction = m_anyFriction || material.hasFriction();
     m_normals[m_numPlanes] = normal;
     ++m_numPlanes;
   }
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    complete = dressPlane(m_planes[k], !sharesTouchedFeature(m_planes[k], stored)) && complete;
+  }
+  return complete;
+}
+
+bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t numNearby) const
+{
+  // The touched edge (both its points) or corner of the plane's triangle, looked for in the other
+  // triangles within reach: a rim no other triangle shares is the edge of an open sheet.
+  const auto& own = m_scene->objects[plane.object].mesh.indices(plane.triangle);
+  std::uint32_t points[2] = {0, 0};
+  int numPoints = 1;
+  switch (plane.closest.feature)
+  {
+    case TriangleFeature::VertexA: points[0] = own[0]; break;
+    case TriangleFeature::VertexB: points[0] = own[1]; break;
+    case TriangleFeature::VertexC: points[0] = own[2]; break;
+    case TriangleFeature::EdgeAB: points[0] = own[0]; points[1] = own[1]; numPoints = 2; break;
+    case TriangleFeature::EdgeBC: points[0] = own[1]; points[1] = own[2]; numPoints = 2; break;
+    case TriangleFeature::EdgeCA: points[0] = own[2]; points[1] = own[0]; numPoints = 2; break;
+    case TriangleFeature::Face: return true;
+  }
+  const TriangleMesh& mesh = m_scene->objects[plane.object].mesh;
+  if (numPoints == 2)
+  {
+    for (std::uint32_t i = 0; i < numNearby; ++i)
+    {
+      if (m_nearbyObject[i] != plane.object || m_nearby[i].triangle == plane.triangle)
+      {
+        continue;
+      }
+      const auto& other = mesh.indices(m_nearby[i].triangle);
+      int found = 0;
+      for (int p = 0; p < 2; ++p)
+      {
+        found += (other[0] == points[p] || other[1] == points[p] || other[2] == points[p]) ? 1 : 0;
+      }
+      if (found == 2)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  // A corner is inside a surface when its fan closes: every edge from it is used by two of the
+  // triangles around it (all of which are within reach, since the proxy touches the corner).
+  // An edge used once is on the rim of an open sheet.
+  std::uint32_t ends[2 * kMaxNearbyTriangles];
+  int numEnds = 0;
+  for (std::uint32_t i = 0; i < numNearby; ++i)
+  {
+    if (m_nearbyObject[i] != plane.object)
+    {
+      continue;
+    }
+    const auto& t = mesh.indices(m_nearby[i].triangle);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] == points[0])
+      {
+        ends[numEnds++] = t[(k + 1) % 3];
+        ends[numEnds++] = t[(k + 2) % 3];
+      }
+    }
+  }
+  for (int a = 0; a < numEnds; ++a)
+  {
+    int uses = 0;
+    for (int b = 0; b < numEnds; ++b)
+    {
+      uses += ends[b] == ends[a] ? 1 : 0;
+    }
+    if (uses < 2)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
+{
+  // Shading only where the material asks for it and the mesh has normals, texture only where it
+  // has maps and texture coordinates: a plain surface pays a few branches per plane.
+  const CollisionObject& object = m_scene->objects[plane.object];
+  const SurfaceMaterial& material = object.material;
+  plane.shaded = material.shading && object.mesh.hasPointNormals() &&
+                 interpolatedNormal(object.mesh, plane.triangle, plane.closest, plane.normal,
+                                    plane.shadedNormal);
+  if (plane.shaded && alone && plane.closest.feature != TriangleFeature::Face)
+  {
+    // An edge or corner that no other triangle shares here: the rim of an open sheet, where the
+    // proxy can roll from the top side to the bottom. Paper Fig. 7's tilted hypothetical surface.
+    plane.shadedNormal = tiltedRimNormal(object.mesh, plane);
+  }
+  plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
+  plane.staticFriction = material.staticFriction;
+  plane.dynamicFriction = material.dynamicFriction;
+  plane.viscosity = material.viscosity;
+  m_anyFriction = m_anyFriction || material.hasFriction();
+  const Vec3 firstPass = plane.shaded ? plane.shadedNormal : plane.normal;
+  int bumps = 0;
+  bool complete = true;
+  if (plane.textured)
+  {
+    // Paper 4.3: the contact weights interpolate the texture coordinate; each bump map gives a
+    // first-pass plane of its own, and property maps scale the coefficients there.
+    plane.texCoord = interpolateTexCoord(object.mesh, plane.triangle, plane.closest);
+    const double friction = textureScale(material, TextureRole::Friction, plane.texCoord);
+    plane.staticFriction *= friction;
+    plane.dynamicFriction *= friction;
+    plane.viscosity *= textureScale(material, TextureRole::Viscosity, plane.texCoord);
+    for (const TextureMap& map : material.textures)
+    {
+      Vec3 bumped;
+      if (map.role != TextureRole::Bump ||
+          !bumpedNormal(object.mesh, plane.triangle, plane.texCoord, firstPass, map, bumped))
+      {
+        continue;
+      }
+      if (m_numFirstPass == kMaxConstraintPlanes)
+      {
+        complete = false;
+        break;
+      }
+      m_firstPassNormals[m_numFirstPass++] = bumped;
+      ++bumps;
+    }
+  }
+  if (bumps == 0 && m_numFirstPass < kMaxConstraintPlanes)
+  {
+    m_firstPassNormals[m_numFirstPass++] = firstPass;
+  }
+  m_anyShaded = m_anyShaded || plane.shaded || bumps > 0;
   return complete;
 }
 

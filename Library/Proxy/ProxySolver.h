@@ -108,6 +108,14 @@ private:
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
   /// gatherPlanes without the reuse.
   bool collectPlanes(const Vec3& position, QueryStats& stats);
+  /// Gives a gathered plane its surface effects (shading, friction, texture) and its first-pass
+  /// normals; `alone`: no other triangle gave the same plane. False if the buffers overflowed.
+  bool dressPlane(ContactPlane& plane, bool alone);
+  /// True if another triangle within reach (of the first `numNearby` gathered) has the plane's
+  /// touched edge or corner: then it is no rim of an open sheet.
+  bool sharesTouchedFeature(const ContactPlane& plane, std::uint32_t numNearby) const;
+  /// The shaded normal at the rim of an open sheet (paper Fig. 7).
+  Vec3 tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& plane) const;
   /// The first pass of section 3 on the gathered planes: the subgoal (minus the proxy) of the
   /// shaded and bumped planes, projected onto the nearest true plane when above them all.
   Vec3 shadedSubgoal(const Vec3& toFinger) const;

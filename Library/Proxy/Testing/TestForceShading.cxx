@@ -223,6 +223,78 @@ TEST(ForceShadingCrevasse, TwoShadedCylindersHoldTheProxyInTheirCrevasse)
   EXPECT_EQ(twoContacts, ticks);
 }
 
+TEST(ForceShadingRim, ProxyRollsAroundAnOpenSheetsRimWithoutAKick)
+{
+  // Paper Fig. 7: a shaded open sheet (z = 0, x up to 0.1) whose point normals lean outward at the
+  // rim, n = normalise(0.5, 0, 1) there. The finger circles the rim's axis half a radius from it,
+  // from 80 degrees above the sheet to 80 degrees below: the proxy must roll around the rim. The
+  // interpolated normal alone would stay the top side's until the proxy passed the sheet's plane
+  // (and so holds the proxy on top: without the tilt it never gets round, measured); the tilted
+  // hypothetical surface turns it with the proxy, which rolls round without a kick.
+  TriangleSoup soup = makeGrid(0.2, 8);
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    if (soup.points[i].x > 0.0999)
+    {
+      soup.pointNormals[i] = Vec3{0.5, 0.0, 1.0} / std::sqrt(1.25);
+    }
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  TriangleMesh mesh;
+  MeshError error;
+  ASSERT_TRUE(mesh.build(std::move(soup), error));
+  SurfaceMaterial shaded;
+  shaded.shading = true;
+  scene->addObject(std::move(mesh), SphereTreeOptions{}, shaded);
+  const oracle::MeshOracle exact(*scene);
+  // Across a corner of the rim (shared by three triangles) and across the middle of a rim edge.
+  for (const double y : {0.0, 0.0125})
+  {
+    SCOPED_TRACE(y);
+    const Vec3 rim{0.1, y, 0.0};
+    ProxyParameters parameters;
+    parameters.radius = kRadius;
+    ProxySolver solver;
+    solver.setScene(scene.get(), parameters);
+    auto around = [&](double degrees, double distanceFromRim) {
+      const double a = degrees / kDegrees;
+      return rim + Vec3{std::cos(a), 0.0, std::sin(a)} * distanceFromRim;
+    };
+    solver.resetProxy(around(80.0, 3.0 * kRadius));
+    for (int i = 1; i <= 50; ++i)
+    {
+      solver.update(around(80.0, 3.0 * kRadius + (0.5 - 3.0) * kRadius * i / 50.0));
+    }
+    double largestTurn = 0.0;
+    double minClearance = 1.0;
+    Vec3 previous;
+    bool havePrevious = false;
+    const int ticks = 1600;
+    for (int i = 0; i <= ticks; ++i)
+    {
+      const Vec3 finger = around(80.0 - 160.0 * i / ticks, 0.5 * kRadius);
+      const ProxyTickResult r = solver.update(finger);
+      minClearance = std::min(minClearance, exact.distance(r.proxy, 2.0 * kRadius) - kRadius);
+      const Vec3 force = r.proxy - finger;
+      ASSERT_GT(norm(force), 0.0) << "tick " << i;
+      const Vec3 direction = force / norm(force);
+      if (havePrevious)
+      {
+        largestTurn = std::max(
+          largestTurn, std::acos(std::clamp(dot(direction, previous), -1.0, 1.0)) * kDegrees);
+      }
+      previous = direction;
+      havePrevious = true;
+    }
+    std::cout << "[rim] largest turn of the force between ticks " << largestTurn
+              << " deg, final proxy z " << solver.proxy().z << " m, min clearance " << minClearance
+              << " m\n";
+    EXPECT_LT(largestTurn, 2.0);
+    EXPECT_LT(solver.proxy().z, -0.5 * kRadius); // it made it round to the underside
+    EXPECT_GE(minClearance, -1e-12);
+  }
+}
+
 TEST(ForceShadingFigure6, PlainMeshWithoutNormalsTakesNoShadingPass)
 {
   // Shading asked for on a mesh without point normals: the plain algorithm runs (pay for what
