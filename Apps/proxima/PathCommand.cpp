@@ -36,7 +36,8 @@ int writePath(const PathOptions& options)
   {
     // The whole scene is built (trees and images too) so that its bounds are exactly those the
     // run will see; for a path, once, that cost does not matter.
-    for (const CollisionObject& object : loadSceneFile(options.scene).scene->objects)
+    const LoadedScene loaded = loadSceneFile(options.scene);
+    for (const CollisionObject& object : loaded.scene->objects)
     {
       bounds.expand(object.mesh.bounds().lower);
       bounds.expand(object.mesh.bounds().upper);
