@@ -56,7 +56,8 @@ Command addPathCommand(CLI::App& parent)
   auto options = std::make_shared<PathOptions>();
   CLI::App* app = parent.add_subcommand(
     "path",
-    "Write a scripted finger path (slide, press-stroke, circle, jab, wander) for a mesh or a scene");
+    "Write a scripted finger path (slide, press-stroke, circle, jab, wander) for a mesh or a "
+    "scene");
   app->add_option("kind", options->kind, "Path kind")
     ->required()
     ->check(CLI::IsMember(defaultPathKinds()));

@@ -55,7 +55,9 @@ struct RunOptions
 
 SceneShading shadingFrom(const std::string& name)
 {
-  return name == "on" ? SceneShading::On : (name == "auto" ? SceneShading::Auto : SceneShading::Off);
+  return name == "on"   ? SceneShading::On
+         : name == "auto" ? SceneShading::Auto
+                          : SceneShading::Off;
 }
 
 TextureRole roleFrom(const std::string& name)
@@ -93,9 +95,9 @@ SceneDescription sceneFromFlags(const RunOptions& options)
   if (!options.texture.empty())
   {
     const TextureRole role = roleFrom(options.textureRole);
+    const double amplitude = role == TextureRole::Bump ? options.textureAmplitude : 0.0;
     object.material.textures.push_back(
-      SceneTexture{options.texture, role, role == TextureRole::Bump ? options.textureAmplitude : 0.0,
-                   channelFrom(options.textureChannel)});
+      SceneTexture{options.texture, role, amplitude, channelFrom(options.textureChannel)});
   }
   SceneDescription scene;
   scene.objects.push_back(std::move(object));
@@ -235,7 +237,14 @@ int run(const RunOptions& options)
     numDegenerate += object.numDegenerateTriangles;
   }
   nlohmann::ordered_json json;
-  json[options.scene.empty() ? "mesh" : "scene"] = options.scene.empty() ? options.mesh : options.scene;
+  if (options.scene.empty())
+  {
+    json["mesh"] = options.mesh;
+  }
+  else
+  {
+    json["scene"] = options.scene;
+  }
   json["path"] = options.path;
   json["trace"] = options.out;
   json["triangles"] = numTriangles;

@@ -510,15 +510,15 @@ private:
                     "value, for a bump map)");
       }
       texture.amplitude = number(*amplitude, child(where, "amplitude"),
-                                 "a number other than 0 (metres)", [](double v) { return v != 0.0; });
+                                 "a number other than 0 (metres)",
+                                 [](double v) { return v != 0.0; });
     }
     else if (amplitude != nullptr)
     {
-      fail(child(where, "amplitude"), "is for bump maps only: a " +
-                                        std::string(texture.role == TextureRole::Friction
-                                                      ? "friction"
-                                                      : "viscosity") +
-                                        " map scales the material's coefficient by the image value");
+      const std::string role = texture.role == TextureRole::Friction ? "friction" : "viscosity";
+      fail(child(where, "amplitude"),
+           "is for bump maps only: a " + role +
+             " map scales the material's coefficient by the image value");
     }
     // A property map scales a coefficient; on a coefficient of 0 it would do nothing, which is
     // more likely a misunderstanding (the map taken for the coefficient itself) than intended.

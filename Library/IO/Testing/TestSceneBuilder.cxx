@@ -52,7 +52,8 @@ protected:
     TriangleSoup soup = proxima::makeBox({0.01, 0.02, 0.03});
     for (std::size_t i = 0; i < soup.points.size(); ++i)
     {
-      soup.texCoords.push_back({0.125 * static_cast<double>(i), 1.0 - 0.0625 * static_cast<double>(i)});
+      const double k = static_cast<double>(i);
+      soup.texCoords.push_back({0.125 * k, 1.0 - 0.0625 * k});
     }
     return soup;
   }

@@ -263,13 +263,17 @@ TEST_F(SceneFile, UnsupportedVersion)
 
 TEST_F(SceneFile, RepeatedKey)
 {
-  expectRefused(write("twice.json", R"({"objects": [{"mesh": "a.obj"}, {"mesh": "b.obj", "scale": 2, "mesh": "c.obj"}]})"),
+  expectRefused(write("twice.json", R"({"objects": [{"mesh": "a.obj"},)"
+                                    R"({"mesh": "b.obj", "scale": 2, "mesh": "c.obj"}]})"),
                 "objects[1].mesh: the key appears twice in the same object");
 }
 
 TEST_F(SceneFile, RepeatedKeyDeepInside)
 {
-  expectRefused(write("twice-deep.json", R"({"objects": [{"mesh": "a.obj", "material": {"textures": [{"image": "x.png", "role": "bump", "amplitude": 1}, {"image": "y.png", "image": "z.png"}]}}]})"),
+  expectRefused(write("twice-deep.json",
+                      R"({"objects": [{"mesh": "a.obj", "material": {"textures": [)"
+                      R"({"image": "x.png", "role": "bump", "amplitude": 1},)"
+                      R"({"image": "y.png", "image": "z.png"}]}}]})"),
                 "objects[0].material.textures[1].image: the key appears twice in the same object");
 }
 
@@ -416,7 +420,8 @@ TEST_F(SceneFile, MisspeltMaterialKey)
 TEST_F(SceneFile, TexturesNotAnArray)
 {
   expectRefused(oneObject("tex.json", R"("material": {"textures": {"image": "a.png"}})"),
-                R"(objects[0].material.textures: must be an array of texture maps [{...}], got {"image":"a.png"})");
+                R"(objects[0].material.textures: must be an array of texture maps [{...}], )"
+                R"(got {"image":"a.png"})");
 }
 
 TEST_F(SceneFile, TextureWithoutRole)
@@ -429,14 +434,16 @@ TEST_F(SceneFile, TextureRoleNotKnown)
 {
   expectRefused(oneObject("colour-role.json",
                           R"("material": {"textures": [{"image": "a.png", "role": "colour"}]})"),
-                R"(objects[0].material.textures[0].role: must be "bump", "friction" or "viscosity", got "colour")");
+                R"(objects[0].material.textures[0].role: must be "bump", "friction" or )"
+                R"("viscosity", got "colour")");
 }
 
 TEST_F(SceneFile, BumpWithoutAmplitude)
 {
   expectRefused(oneObject("noamp.json",
                           R"("material": {"textures": [{"image": "a.png", "role": "bump"}]})"),
-                R"(objects[0].material.textures[0]: missing the required key "amplitude" (metres of height per unit of image value, for a bump map))");
+                R"(objects[0].material.textures[0]: missing the required key "amplitude" )"
+                R"((metres of height per unit of image value, for a bump map))");
 }
 
 TEST_F(SceneFile, BumpOfZeroAmplitude)
@@ -451,7 +458,8 @@ TEST_F(SceneFile, AmplitudeOnAFrictionMap)
 {
   expectRefused(
     oneObject("famp.json",
-              R"("material": {"static_friction": 0.5, "textures": [{"image": "a.png", "role": "friction", "amplitude": 0.1}]})"),
+              R"("material": {"static_friction": 0.5, "textures": [)"
+              R"({"image": "a.png", "role": "friction", "amplitude": 0.1}]})"),
     "objects[0].material.textures[0].amplitude: is for bump maps only: a friction map scales the "
     "material's coefficient by the image value");
 }
@@ -468,7 +476,8 @@ TEST_F(SceneFile, ViscosityMapWithoutViscosity)
 {
   expectRefused(
     oneObject("vmap.json",
-              R"("material": {"dynamic_friction": 0.3, "textures": [{"image": "a.png", "role": "viscosity"}]})"),
+              R"("material": {"dynamic_friction": 0.3, "textures": [)"
+              R"({"image": "a.png", "role": "viscosity"}]})"),
     "objects[0].material.textures[0].role: a viscosity map scales viscosity, but the material "
     "does not set it above 0");
 }
@@ -477,8 +486,10 @@ TEST_F(SceneFile, TextureChannelNotKnown)
 {
   expectRefused(
     oneObject("purple.json",
-              R"("material": {"textures": [{"image": "a.png", "role": "bump", "amplitude": 1e-4, "channel": "purple"}]})"),
-    R"(objects[0].material.textures[0].channel: must be "luminance", "red", "green", "blue" or "alpha", got "purple")");
+              R"("material": {"textures": [)"
+              R"({"image": "a.png", "role": "bump", "amplitude": 1e-4, "channel": "purple"}]})"),
+    R"(objects[0].material.textures[0].channel: must be "luminance", "red", "green", "blue" )"
+    R"(or "alpha", got "purple")");
 }
 
 TEST_F(SceneFile, TextureImageNotAPath)
@@ -491,7 +502,8 @@ TEST_F(SceneFile, TextureImageNotAPath)
 
 TEST_F(SceneFile, LongValuesAreCutShortInTheMessage)
 {
-  expectRefused(oneObject("long.json", R"("scale": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17])"),
+  expectRefused(oneObject("long.json",
+                          R"("scale": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17])"),
                 "objects[0].scale: must be a number > 0, got [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15 ...");
 }
 
