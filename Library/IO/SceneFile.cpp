@@ -25,6 +25,23 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using Keys = std::initializer_list<std::string_view>;
 
+// `text` cut to at most `longest` bytes with " ..." at the end when it is longer, never inside a
+// UTF-8 sequence (a message is printed whole on a terminal).
+std::string cutShort(std::string text, std::size_t longest)
+{
+  if (text.size() <= longest)
+  {
+    return text;
+  }
+  std::size_t end = longest - 4;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u)
+  {
+    --end; // a continuation byte: back to the start of its character
+  }
+  text.resize(end);
+  return text + " ...";
+}
+
 std::string readWholeFile(const std::string& path)
 {
   std::error_code error;
@@ -119,7 +136,8 @@ private:
       }
       else
       {
-        where += (where.empty() ? "" : ".") + frame.key;
+        // A key written by mistake can be of any length; the message stays readable.
+        where += (where.empty() ? "" : ".") + cutShort(frame.key, 40);
       }
     }
     return where;
@@ -150,19 +168,60 @@ Json parseJson(const std::string& path, const std::string& text)
     {
       reason.erase(0, at.size());
     }
-    throw InputError(path, "not valid JSON: " + reason);
+    // The reason quotes the offending token, which may be a whole line of digits or a string.
+    throw InputError(path, "not valid JSON: " + cutShort(reason, 160));
   }
+}
+
+// Compact JSON of `value`, as dump() writes it, but stopping once `out` is longer than `limit`
+// and at a nesting depth of kMaxQuotedDepth: dump() recurses once per level, and a file of a
+// hundred thousand nested brackets (which the parser itself takes without recursion) would
+// overflow the stack while the message about it is written.
+constexpr int kMaxQuotedDepth = 8;
+
+void appendQuoted(const Json& value, std::size_t limit, int depth, std::string& out)
+{
+  if (!value.is_structured())
+  {
+    out += value.dump();
+    return;
+  }
+  if (depth == kMaxQuotedDepth)
+  {
+    out += "...";
+    return;
+  }
+  const bool array = value.is_array();
+  out += array ? '[' : '{';
+  bool first = true;
+  for (auto it = value.begin(); it != value.end(); ++it)
+  {
+    if (out.size() > limit)
+    {
+      return;
+    }
+    if (!first)
+    {
+      out += ',';
+    }
+    first = false;
+    if (!array)
+    {
+      out += Json(it.key()).dump();
+      out += ':';
+    }
+    appendQuoted(*it, limit, depth + 1, out);
+  }
+  out += array ? ']' : '}';
 }
 
 // The value as the file wrote it, cut short when long, for "got ..." in messages.
 std::string quoted(const Json& value)
 {
-  std::string text = value.dump();
-  if (text.size() > 40)
-  {
-    text = text.substr(0, 36) + " ...";
-  }
-  return text;
+  constexpr std::size_t kLongest = 40;
+  std::string text;
+  appendQuoted(value, kLongest, 0, text);
+  return cutShort(std::move(text), kLongest);
 }
 
 std::size_t editDistance(std::string_view a, std::string_view b)
@@ -272,7 +331,7 @@ private:
         }
         list += (list.empty() ? "" : ", ") + std::string(candidate);
       }
-      fail(child(where, key), nearest.empty()
+      fail(child(where, cutShort(key, 40)), nearest.empty()
                                 ? "unknown key (the keys here are " + list + ")"
                                 : "unknown key (did you mean \"" + std::string(nearest) + "\"?)");
     }

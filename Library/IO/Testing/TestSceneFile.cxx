@@ -507,4 +507,56 @@ TEST_F(SceneFile, LongValuesAreCutShortInTheMessage)
                 "objects[0].scale: must be a number > 0, got [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15 ...");
 }
 
+TEST_F(SceneFile, DeeplyNestedValuesAreQuotedWithoutRecursingThroughThem)
+{
+  // The parser takes any depth; the message about the value must not recurse through it either.
+  const std::size_t depth = 100000;
+  expectRefused(oneObject("deep.json", R"("scale": )" + std::string(depth, '[') +
+                                         std::string(depth, ']')),
+                "objects[0].scale: must be a number > 0, got [[[[[[[[...]]]]]]]]");
+  std::string wide = "[1";
+  for (int i = 0; i < 100000; ++i)
+  {
+    wide += ",1";
+  }
+  expectRefused(oneObject("wide.json", R"("scale": )" + wide + "]"),
+                "objects[0].scale: must be a number > 0, got [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1 ...");
+}
+
+TEST_F(SceneFile, LongTokensAreCutShortInJsonErrors)
+{
+  // nlohmann quotes the token it could not take: here 100,000 digits.
+  const std::string path = oneObject("digits.json", R"("scale": )" + std::string(100000, '9'));
+  std::string message;
+  try
+  {
+    (void)proxima::readSceneFile(path);
+  }
+  catch (const proxima::InputError& error)
+  {
+    message = error.defect();
+  }
+  EXPECT_TRUE(message.starts_with("not valid JSON: number overflow parsing '999")) << message;
+  EXPECT_TRUE(message.ends_with("99 ...")) << message;
+  EXPECT_EQ(message.size(), std::string("not valid JSON: ").size() + 160) << message;
+}
+
+TEST_F(SceneFile, LongKeysAreCutShortInTheLocation)
+{
+  const std::string key(1000, 'k');
+  expectRefused(oneObject("key.json", "\"" + key + "\": 1"),
+                "objects[0]." + std::string(36, 'k') +
+                  " ...: unknown key (the keys here are mesh, scale, pose, material)");
+  expectRefused(oneObject("key2.json", "\"" + key + "\": 1, \"" + key + "\": 2"),
+                "objects[0]." + std::string(36, 'k') + " ...: the key appears twice in the same object");
+}
+
+TEST_F(SceneFile, QuotedValuesAreNotCutInsideACharacter)
+{
+  // The quote and 34 ASCII bytes, then 2-byte characters, one across the cut at byte 36.
+  const std::string mesh = std::string(34, 'a') + "\u00e9\u00e9\u00e9";
+  expectRefused(oneObject("utf8.json", R"("scale": ")" + mesh + R"(")"),
+                "objects[0].scale: must be a number > 0, got \"" + std::string(34, 'a') + " ...");
+}
+
 } // namespace
