@@ -1,11 +1,11 @@
-// `proxima run`: plays a scripted finger path through a mesh in lockstep mode and writes the
-// trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
+// `proxima run`: plays a scripted finger path through a mesh or a scene file in lockstep mode and
+// writes the trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
 #include "Command.h"
 
 #include "IO/FingerPathFile.h"
 #include "IO/InputError.h"
-#include "IO/MeshReader.h"
-#include "IO/PointNormals.h"
+#include "IO/SceneBuilder.h"
+#include "IO/SceneFile.h"
 #include "IO/TraceWriter.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <unistd.h>
@@ -30,6 +31,7 @@ namespace
 struct RunOptions
 {
   std::string mesh;
+  std::string scene;
   double scale = 1.0;
   double radius = 0.001;
   double stiffness = 1000.0;
@@ -45,32 +47,61 @@ struct RunOptions
   double staticFriction = 0.0;
   double dynamicFriction = 0.0;
   double viscosity = 0.0;
+  std::string texture;
+  std::string textureRole;
+  double textureAmplitude = 0.0;
+  std::string textureChannel = "luminance";
 };
 
-// The mesh as the run shades it: --shading on gives a mesh whose file has no point normals
-// normals computed with --feature-angle (sharp CAD edges stay sharp); auto and off keep the file's.
-TriangleMesh meshFor(const RunOptions& options, std::string& normals)
+SceneShading shadingFrom(const std::string& name)
 {
-  TriangleSoup soup = readMeshFile(options.mesh, options.scale);
-  normals = soup.pointNormals.empty() ? "none" : "file";
-  if (options.shading == "on" && soup.pointNormals.empty())
-  {
-    soup = withFeatureAngleNormals(soup, options.featureAngle);
-    normals = "computed";
-  }
-  return buildTriangleMesh(std::move(soup), options.mesh);
+  return name == "on"   ? SceneShading::On
+         : name == "auto" ? SceneShading::Auto
+                          : SceneShading::Off;
 }
 
-// --shading: on shades (with the file's normals or computed ones), auto shades exactly when the
-// file has normals, off never.
-SurfaceMaterial materialFor(const RunOptions& options, const TriangleMesh& mesh)
+TextureRole roleFrom(const std::string& name)
 {
-  SurfaceMaterial material;
-  material.shading = options.shading == "on" || (options.shading == "auto" && mesh.hasPointNormals());
-  material.staticFriction = options.staticFriction;
-  material.dynamicFriction = options.dynamicFriction;
-  material.viscosity = options.viscosity;
-  return material;
+  return name == "friction" ? TextureRole::Friction
+                            : (name == "viscosity" ? TextureRole::Viscosity : TextureRole::Bump);
+}
+
+TextureChannel channelFrom(const std::string& name)
+{
+  for (TextureChannel channel : {TextureChannel::Red, TextureChannel::Green, TextureChannel::Blue,
+                                 TextureChannel::Alpha})
+  {
+    if (name == textureChannelName(channel))
+    {
+      return channel;
+    }
+  }
+  return TextureChannel::Luminance;
+}
+
+// A --mesh run is the scene of one object, at rest, whose material the flags spell out: --shading
+// on gives a mesh whose file has no point normals normals computed with --feature-angle (sharp
+// CAD edges stay sharp), auto shades exactly when the file has them, off never.
+SceneDescription sceneFromFlags(const RunOptions& options)
+{
+  SceneObject object;
+  object.mesh = options.mesh;
+  object.scale = options.scale;
+  object.material.shading = shadingFrom(options.shading);
+  object.material.featureAngleDegrees = options.featureAngle;
+  object.material.staticFriction = options.staticFriction;
+  object.material.dynamicFriction = options.dynamicFriction;
+  object.material.viscosity = options.viscosity;
+  if (!options.texture.empty())
+  {
+    const TextureRole role = roleFrom(options.textureRole);
+    const double amplitude = role == TextureRole::Bump ? options.textureAmplitude : 0.0;
+    object.material.textures.push_back(
+      SceneTexture{options.texture, role, amplitude, channelFrom(options.textureChannel)});
+  }
+  SceneDescription scene;
+  scene.objects.push_back(std::move(object));
+  return scene;
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -113,21 +144,32 @@ private:
   int m_lastPercent = -1;
 };
 
+// The nearest object to `point` within `radius`: its index and distance (infinity if none).
+std::pair<std::size_t, double> nearestObject(const CollisionScene& scene, const Vec3& point,
+                                             double radius)
+{
+  std::pair<std::size_t, double> nearest{0, std::numeric_limits<double>::infinity()};
+  SphereTreeScratch scratch;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+  {
+    const CollisionObject& object = scene.objects[i];
+    const NearestTriangle near = object.tree.nearest(object.mesh, point, radius, scratch);
+    if (near.found && std::sqrt(near.closest.squaredDistance) < nearest.second)
+    {
+      nearest = {i, std::sqrt(near.closest.squaredDistance)};
+    }
+  }
+  return nearest;
+}
+
 int run(const RunOptions& options)
 {
   const auto readStart = std::chrono::steady_clock::now();
-  CollisionScene scene;
-  std::string normals;
-  const TriangleMesh mesh = meshFor(options, normals);
+  const LoadedScene loaded =
+    options.scene.empty() ? buildScene(sceneFromFlags(options)) : loadSceneFile(options.scene);
   const FingerPath fingerPath = readFingerPathFile(options.path);
-  const double readMilliseconds = millisecondsSince(readStart);
-
-  const std::uint32_t numTriangles = mesh.numTriangles();
-  const std::uint32_t numDegenerate = mesh.numDegenerateTriangles();
-  const SurfaceMaterial material = materialFor(options, mesh);
-  const auto buildStart = std::chrono::steady_clock::now();
-  scene.addObject(mesh, SphereTreeOptions{}, material);
-  const double buildMilliseconds = millisecondsSince(buildStart);
+  const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
+  const CollisionScene& scene = *loaded.scene;
 
   ProxyParameters parameters;
   parameters.radius = options.radius;
@@ -138,17 +180,24 @@ int run(const RunOptions& options)
   ProxySolver solver;
   solver.setScene(&scene, parameters);
 
-  // The proxy starts at the first finger sample, which must leave room for the proxy sphere:
-  // a proxy that starts overlapping the surface has no free side to be pushed back to.
+  // The proxy starts at the first finger sample, which must leave room for the proxy sphere
+  // against every object: a proxy that starts overlapping a surface has no free side to be
+  // pushed back to.
   const Vec3 start = fingerPath.positions.front();
-  const CollisionObject& object = scene.objects.front();
-  SphereTreeScratch scratch;
-  const NearestTriangle nearest = object.tree.nearest(object.mesh, start, options.radius, scratch);
-  if (nearest.found && std::sqrt(nearest.closest.squaredDistance) < options.radius)
+  const auto [nearest, distance] = nearestObject(scene, start, options.radius);
+  if (distance < options.radius)
   {
     std::ostringstream defect;
-    defect << "the path starts " << std::sqrt(nearest.closest.squaredDistance)
-           << " m from the mesh, closer than the proxy radius " << options.radius
+    defect << "the path starts " << distance << " m from ";
+    if (options.scene.empty())
+    {
+      defect << "the mesh";
+    }
+    else
+    {
+      defect << "objects[" << nearest << "] (" << loaded.objects[nearest].mesh << ")";
+    }
+    defect << ", closer than the proxy radius " << options.radius
            << " m: start the path in free space";
     throw InputError(options.path, defect.str());
   }
@@ -180,8 +229,22 @@ int run(const RunOptions& options)
   trace.close();
   const double runMilliseconds = millisecondsSince(runStart);
 
+  std::uint64_t numTriangles = 0;
+  std::uint64_t numDegenerate = 0;
+  for (const LoadedObject& object : loaded.objects)
+  {
+    numTriangles += object.numTriangles;
+    numDegenerate += object.numDegenerateTriangles;
+  }
   nlohmann::ordered_json json;
-  json["mesh"] = options.mesh;
+  if (options.scene.empty())
+  {
+    json["mesh"] = options.mesh;
+  }
+  else
+  {
+    json["scene"] = options.scene;
+  }
   json["path"] = options.path;
   json["trace"] = options.out;
   json["triangles"] = numTriangles;
@@ -190,15 +253,58 @@ int run(const RunOptions& options)
   json["skin_m"] = solver.skin();
   json["stiffness_N_per_m"] = options.stiffness;
   json["rate_hz"] = options.rate;
-  json["shading"] = material.shading;
-  json["point_normals"] = normals;
-  if (normals == "computed")
+  if (options.scene.empty())
   {
-    json["feature_angle_deg"] = options.featureAngle;
+    // The keys of a one-mesh run, as before scene files.
+    const LoadedObject& object = loaded.objects.front();
+    const SurfaceMaterial& material = scene.objects.front().material;
+    json["shading"] = object.shaded;
+    json["point_normals"] = normalsSourceName(object.normals);
+    if (object.normals == NormalsSource::Computed)
+    {
+      json["feature_angle_deg"] = object.featureAngleDegrees;
+    }
+    json["static_friction"] = material.staticFriction;
+    json["dynamic_friction"] = material.dynamicFriction;
+    json["viscosity_N_s_per_m"] = material.viscosity;
+    if (!options.texture.empty())
+    {
+      nlohmann::ordered_json texture;
+      texture["image"] = options.texture;
+      texture["role"] = options.textureRole;
+      if (material.textures.front().role == TextureRole::Bump)
+      {
+        texture["amplitude_m"] = material.textures.front().amplitude;
+      }
+      texture["channel"] = options.textureChannel;
+      json["texture"] = std::move(texture);
+    }
   }
-  json["static_friction"] = material.staticFriction;
-  json["dynamic_friction"] = material.dynamicFriction;
-  json["viscosity_N_s_per_m"] = material.viscosity;
+  else
+  {
+    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < loaded.objects.size(); ++i)
+    {
+      const LoadedObject& object = loaded.objects[i];
+      const SurfaceMaterial& material = scene.objects[i].material;
+      nlohmann::ordered_json entry;
+      entry["mesh"] = object.mesh;
+      entry["triangles"] = object.numTriangles;
+      entry["degenerate_triangles"] = object.numDegenerateTriangles;
+      entry["shading"] = object.shaded;
+      entry["point_normals"] = normalsSourceName(object.normals);
+      if (object.normals == NormalsSource::Computed)
+      {
+        entry["feature_angle_deg"] = object.featureAngleDegrees;
+      }
+      entry["static_friction"] = material.staticFriction;
+      entry["dynamic_friction"] = material.dynamicFriction;
+      entry["viscosity_N_s_per_m"] = material.viscosity;
+      entry["textures"] = material.textures.size();
+      objects.push_back(std::move(entry));
+    }
+    json["objects"] = std::move(objects);
+  }
   json["ticks"] = summary.ticks();
   json["contact_ticks"] = summary.contactTicks();
   json["iterations"] = {
@@ -221,7 +327,7 @@ int run(const RunOptions& options)
                       {"max", summary.solveNanosecondsQuantile(1.0)}};
   json["triangles_tested_per_tick"] = summary.meanTrianglesTested();
   json["read_ms"] = readMilliseconds;
-  json["tree_build_ms"] = buildMilliseconds;
+  json["tree_build_ms"] = loaded.treeBuildMilliseconds;
   json["run_ms"] = runMilliseconds;
 
   const std::string text = json.dump(2);
@@ -237,17 +343,62 @@ int run(const RunOptions& options)
   std::cout << text << "\n";
   return kExitOk;
 }
+
+// Checks between options that CLI11 cannot say by itself, as usage errors (status 2).
+void checkCombinations(const RunOptions& options, const CLI::App& app)
+{
+  if (options.mesh.empty() && options.scene.empty())
+  {
+    throw CLI::RequiredError("--mesh or --scene");
+  }
+  if (options.texture.empty())
+  {
+    return;
+  }
+  const bool amplitudeGiven = app.get_option("--texture-amplitude")->count() > 0;
+  if (options.textureRole == "bump")
+  {
+    if (!amplitudeGiven)
+    {
+      throw CLI::ValidationError("--texture-role", "bump needs --texture-amplitude (metres of "
+                                                   "height per unit of image value)");
+    }
+  }
+  else if (amplitudeGiven)
+  {
+    throw CLI::ValidationError("--texture-amplitude", "is for bump maps only: a " +
+                                                        options.textureRole +
+                                                        " map scales the surface's coefficient");
+  }
+  // A property map scales a coefficient; on a coefficient of 0 it would do nothing, which is
+  // more likely a misunderstanding than intended (as in scene files).
+  if (options.textureRole == "friction" && options.staticFriction == 0.0 &&
+      options.dynamicFriction == 0.0)
+  {
+    throw CLI::ValidationError("--texture-role", "a friction map scales --static-friction and "
+                                                 "--dynamic-friction, but neither is above 0");
+  }
+  if (options.textureRole == "viscosity" && options.viscosity == 0.0)
+  {
+    throw CLI::ValidationError("--texture-role",
+                               "a viscosity map scales --viscosity, but it is not above 0");
+  }
+}
 } // namespace
 
 Command addRunCommand(CLI::App& parent)
 {
   auto options = std::make_shared<RunOptions>();
   CLI::App* app = parent.add_subcommand(
-    "run", "Play a finger path through a mesh in lockstep mode; write the trace and a summary");
-  app->add_option("--mesh", options->mesh, "Mesh file (STL, OBJ, PLY, VTP, OFF, glTF/GLB)")
-    ->required();
-  app->add_option("--scale", options->scale, "File units to metres (default 1)")
-    ->check(CLI::PositiveNumber);
+    "run", "Play a finger path through a mesh or a scene in lockstep mode; write the trace and a "
+           "summary");
+  CLI::Option* mesh = app->add_option(
+    "--mesh", options->mesh, "Mesh file (STL, OBJ, PLY, VTP, OFF, glTF/GLB); or --scene");
+  CLI::Option* scene = app->add_option(
+    "--scene", options->scene,
+    "Scene file (JSON: objects with meshes, poses and materials; Documentation/SceneFiles.md); "
+    "the surface options below are then the file's, per object");
+  mesh->excludes(scene);
   app->add_option("--radius", options->radius, "Proxy radius in metres (default 0.001)")
     ->check(CLI::PositiveNumber);
   app->add_option("--stiffness", options->stiffness, "Spring stiffness kp in N/m (default 1000)")
@@ -262,25 +413,84 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--max-iterations", options->maxIterations,
                   "Move/update iterations per tick (default 256)")
     ->check(CLI::Range(1, 1000));
-  app->add_option("--shading", options->shading,
-                  "Force shading from the mesh's point normals: off, on or auto (default off)")
-    ->check(CLI::IsMember({"off", "on", "auto"}));
-  app->add_option("--feature-angle", options->featureAngle,
-                  "With --shading on and a mesh without normals: edges sharper than this many "
-                  "degrees stay sharp (default 30)")
-    ->check(CLI::Range(0.0, 180.0));
-  app->add_option("--static-friction", options->staticFriction,
-                  "Static friction coefficient mu_s (default 0: none)")
-    ->check(CLI::NonNegativeNumber);
-  app->add_option("--dynamic-friction", options->dynamicFriction,
-                  "Dynamic friction coefficient mu_d (default 0: none)")
-    ->check(CLI::NonNegativeNumber);
-  app->add_option("--viscosity", options->viscosity,
-                  "Viscous friction b in N s/m (default 0: none)")
-    ->check(CLI::NonNegativeNumber);
   app->add_option("--skin", options->skin,
                   "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
     ->check(CLI::NonNegativeNumber);
+
+  // The mesh's scale and surface: for --mesh only (a scene file gives them per object).
+  const std::string meshOnly = "With --mesh only. ";
+  std::vector<CLI::Option*> surface;
+  surface.push_back(
+    app->add_option("--scale", options->scale, meshOnly + "File units to metres (default 1)")
+      ->check(CLI::PositiveNumber));
+  surface.push_back(
+    app->add_option("--shading", options->shading,
+                    meshOnly + "Force shading from the mesh's point normals: off, on or auto "
+                               "(default off)")
+      ->check(CLI::IsMember({"off", "on", "auto"})));
+  surface.push_back(
+    app->add_option("--feature-angle", options->featureAngle,
+                    meshOnly + "With --shading on and a mesh without normals: edges sharper than "
+                               "this many degrees stay sharp (default 30)")
+      ->check(CLI::Range(0.0, 180.0)));
+  surface.push_back(app->add_option("--static-friction", options->staticFriction,
+                                    meshOnly + "Static friction coefficient mu_s (default 0: none)")
+                      ->check(CLI::NonNegativeNumber));
+  surface.push_back(
+    app->add_option("--dynamic-friction", options->dynamicFriction,
+                    meshOnly + "Dynamic friction coefficient mu_d (default 0: none)")
+      ->check(CLI::NonNegativeNumber));
+  surface.push_back(app->add_option("--viscosity", options->viscosity,
+                                    meshOnly + "Viscous friction b in N s/m (default 0: none)")
+                      ->check(CLI::NonNegativeNumber));
+  CLI::Option* texture = app->add_option(
+    "--texture", options->texture,
+    meshOnly + "Texture image (PNG, JPEG, TIFF, OpenEXR) mapped by the mesh's texture "
+               "coordinates; needs --texture-role");
+  CLI::Option* role =
+    app->add_option("--texture-role", options->textureRole,
+                    meshOnly + "What --texture modulates: bump (height), friction or viscosity "
+                               "(scales those coefficients)")
+      ->check(CLI::IsMember({"bump", "friction", "viscosity"}));
+  CLI::Option* amplitude =
+    app->add_option("--texture-amplitude", options->textureAmplitude,
+                    meshOnly + "Bump maps: metres of height per unit of image value (required "
+                               "for bump, not 0)")
+      ->check(CLI::Validator(
+        [](std::string& input) -> std::string {
+          std::size_t used = 0;
+          double value = 0.0;
+          try
+          {
+            value = std::stod(input, &used);
+          }
+          catch (const std::exception&)
+          {
+            used = 0;
+          }
+          return used == input.size() && std::isfinite(value) && value != 0.0
+                   ? std::string()
+                   : "must be a finite number other than 0, not " + input;
+        },
+        "NONZERO"));
+  CLI::Option* channel =
+    app->add_option("--texture-channel", options->textureChannel,
+                    meshOnly + "Which value of each pixel --texture takes: luminance, red, green, "
+                               "blue or alpha (default luminance)")
+      ->check(CLI::IsMember({"luminance", "red", "green", "blue", "alpha"}));
+  texture->needs(role);
+  role->needs(texture);
+  amplitude->needs(texture);
+  channel->needs(texture);
+  for (CLI::Option* option : {texture, role, amplitude, channel})
+  {
+    surface.push_back(option);
+  }
+  for (CLI::Option* option : surface)
+  {
+    scene->excludes(option);
+  }
+  app->callback([options, app] { checkCombinations(*options, *app); });
   return Command{app, [options] { return run(*options); }};
 }
 
