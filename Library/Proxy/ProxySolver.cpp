@@ -483,6 +483,17 @@ Vec3 ProxySolver::shadedSubgoal(const Vec3& toFinger) const
   // normals stand for, with the first-pass planes. A subgoal above every true plane is projected
   // onto the nearest one, so that the proxy stays on the surface (and friction and texture see a
   // contact). The second pass is the plain loop with this subgoal for the finger.
+  // A finger above every true plane is leaving the surface: no shading, the proxy follows it
+  // (projecting its subgoal back onto a plane would glue the proxy down and pull the finger).
+  bool pressing = false;
+  for (int k = 0; k < m_numPlanes && !pressing; ++k)
+  {
+    pressing = dot(m_normals[k], toFinger) < 0.0;
+  }
+  if (!pressing)
+  {
+    return toFinger;
+  }
   Vec3 subgoal = solveGoal(toFinger, m_firstPassNormals, m_numFirstPass).displacement;
   const double tolerance = 1e-12 * norm(toFinger);
   int nearest = -1;
