@@ -62,6 +62,10 @@ SceneShading shadingFrom(const std::string& name)
 
 TextureRole roleFrom(const std::string& name)
 {
+  if (name == "stiffness")
+  {
+    return TextureRole::Stiffness;
+  }
   return name == "friction" ? TextureRole::Friction
                             : (name == "viscosity" ? TextureRole::Viscosity : TextureRole::Bump);
 }
@@ -451,7 +455,7 @@ Command addRunCommand(CLI::App& parent)
     app->add_option("--texture-role", options->textureRole,
                     meshOnly + "What --texture modulates: bump (height), friction or viscosity "
                                "(scales those coefficients)")
-      ->check(CLI::IsMember({"bump", "friction", "viscosity"}));
+      ->check(CLI::IsMember({"bump", "friction", "viscosity", "stiffness"}));
   CLI::Option* amplitude =
     app->add_option("--texture-amplitude", options->textureAmplitude,
                     meshOnly + "Bump maps: metres of height per unit of image value (required "

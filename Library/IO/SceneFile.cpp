@@ -556,10 +556,10 @@ private:
     SceneTexture texture;
     texture.image = filePath(require(value, "image", where), child(where, "image"));
     constexpr TextureRole kRoles[] = {TextureRole::Bump, TextureRole::Friction,
-                                      TextureRole::Viscosity};
+                                      TextureRole::Viscosity, TextureRole::Stiffness};
     texture.role =
       kRoles[choice(require(value, "role", where), child(where, "role"),
-                    {"bump", "friction", "viscosity"})];
+                    {"bump", "friction", "viscosity", "stiffness"})];
     const Json* amplitude = find(value, "amplitude");
     if (texture.role == TextureRole::Bump)
     {
@@ -574,7 +574,9 @@ private:
     }
     else if (amplitude != nullptr)
     {
-      const std::string role = texture.role == TextureRole::Friction ? "friction" : "viscosity";
+      const std::string role = texture.role == TextureRole::Friction
+                                 ? "friction"
+                                 : (texture.role == TextureRole::Viscosity ? "viscosity" : "stiffness");
       fail(child(where, "amplitude"),
            "is for bump maps only: a " + role +
              " map scales the material's coefficient by the image value");

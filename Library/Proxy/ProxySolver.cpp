@@ -436,6 +436,7 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
     plane.shadedNormal = tiltedRimNormal(object.mesh, plane);
   }
   plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
+  plane.stiffnessScale = 1.0;
   plane.staticFriction = material.staticFriction;
   plane.dynamicFriction = material.dynamicFriction;
   plane.viscosity = material.viscosity;
@@ -452,6 +453,7 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
     plane.staticFriction *= friction;
     plane.dynamicFriction *= friction;
     plane.viscosity *= textureScale(material, TextureRole::Viscosity, plane.texCoord);
+    plane.stiffnessScale = textureScale(material, TextureRole::Stiffness, plane.texCoord);
     for (const TextureMap& map : material.textures)
     {
       Vec3 bumped;
@@ -704,11 +706,19 @@ ProxyTickResult ProxySolver::update(const Vec3& finger)
     result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
     solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
   }
+  double depthSum = 0.0;
+  double scaledSum = 0.0;
   for (int k = 0; k < solution.numActive; ++k)
   {
     ContactPlane plane = m_planes[solution.active[k]];
     plane.depth = solution.depth[k];
     result.contacts[result.numContacts++] = plane;
+    depthSum += plane.depth;
+    scaledSum += plane.depth * plane.stiffnessScale;
+  }
+  if (depthSum > 0.0)
+  {
+    result.stiffnessScale = scaledSum / depthSum;
   }
   return result;
 }

@@ -36,6 +36,8 @@ struct ContactPlane
   /// Texture (paper 4.3): the texture coordinate at the contact, on a textured surface.
   bool textured = false;
   TexCoord texCoord;
+  /// The factor stiffness maps put on the servo's kp at this contact (1 without them).
+  double stiffnessScale = 1.0;
   /// The surface's friction coefficients and viscosity here (paper 4.1, 4.2); all 0 on a surface
   /// without friction.
   double staticFriction = 0.0;
@@ -66,6 +68,9 @@ struct ProxyTickResult
   bool stuck = false;
   /// Dynamic or viscous friction shortened a slide this tick (4.2).
   bool frictionLimited = false;
+  /// The factor on the servo's stiffness from stiffness maps at the contacts, weighted by their
+  /// depths (1 without contact or maps).
+  double stiffnessScale = 1.0;
   QueryStats queries;
 };
 

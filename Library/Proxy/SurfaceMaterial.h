@@ -19,7 +19,10 @@ enum class TextureRole
   /// Scales the static and dynamic friction coefficients by value.
   Friction,
   /// Scales the viscosity by value.
-  Viscosity
+  Viscosity,
+  /// Scales the servo's spring stiffness kp at the contact by value (a softer or harder spot):
+  /// the one effect applied to the force rather than to where the proxy goes.
+  Stiffness
 };
 
 struct TextureMap

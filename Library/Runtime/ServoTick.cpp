@@ -34,7 +34,9 @@ TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, Ha
   Vec3 force = lastForce;
   if (!record.fingerRefused)
   {
-    force = (record.proxy - sample.position) * parameters.stiffness;
+    // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays continuous,
+    // since proxy and finger coincide out of contact.
+    force = (record.proxy - sample.position) * (parameters.stiffness * result.stiffnessScale);
     const double magnitude = norm(force);
     if (magnitude > parameters.maxForce)
     {

@@ -434,8 +434,8 @@ TEST_F(SceneFile, TextureRoleNotKnown)
 {
   expectRefused(oneObject("colour-role.json",
                           R"("material": {"textures": [{"image": "a.png", "role": "colour"}]})"),
-                R"(objects[0].material.textures[0].role: must be "bump", "friction" or )"
-                R"("viscosity", got "colour")");
+                R"(objects[0].material.textures[0].role: must be "bump", "friction", )"
+                R"("viscosity" or "stiffness", got "colour")");
 }
 
 TEST_F(SceneFile, BumpWithoutAmplitude)

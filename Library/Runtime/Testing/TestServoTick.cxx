@@ -57,6 +57,55 @@ protected:
   FakeDevice device;
 };
 
+TEST(ServoTickStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
+{
+  // A grid with texture coordinates u = x / 0.2 + 1/2 and a stiffness map of 1 left of u = 1/2,
+  // 0.5 right of it: pressing 3 mm under the proxy's plane gives kp * 3 mm on the left, half that
+  // on the right, and nothing changes out of contact.
+  TriangleSoup soup = makeGrid(0.2, 16, 0.0);
+  for (const Vec3& p : soup.points)
+  {
+    soup.texCoords.push_back({p.x / 0.2 + 0.5, p.y / 0.2 + 0.5});
+  }
+  std::vector<float> values(64 * 2);
+  for (int j = 0; j < 2; ++j)
+  {
+    for (int i = 0; i < 64; ++i)
+    {
+      values[j * 64 + i] = i < 32 ? 1.0f : 0.5f;
+    }
+  }
+  SurfaceMaterial material;
+  material.textures.push_back(TextureMap{
+    std::make_shared<const TextureImage>(64, 2, std::move(values)), TextureRole::Stiffness, 0.0});
+  CollisionScene scene;
+  TriangleMesh mesh;
+  MeshError error;
+  ASSERT_TRUE(mesh.build(std::move(soup), error));
+  scene.addObject(std::move(mesh), SphereTreeOptions{}, material);
+  ProxyParameters parameters;
+  parameters.radius = 0.001;
+  ServoParameters servo;
+  servo.stiffness = 1000.0;
+  servo.maxForce = 100.0;
+  for (const double x : {-0.03, 0.03})
+  {
+    ProxySolver solver;
+    solver.setScene(&scene, parameters);
+    solver.resetProxy({x, 0.0, 0.01});
+    FakeDevice device;
+    Vec3 lastForce;
+    device.next = DeviceSample{{x, 0.0, 0.005}, true};
+    const TickRecord free = runServoTick(0, 0.0, solver, device, servo, lastForce);
+    EXPECT_EQ(norm(free.force), 0.0);
+    device.next = DeviceSample{{x, 0.0, -0.002}, true};
+    const TickRecord pressed = runServoTick(1, 0.001, solver, device, servo, lastForce);
+    const double scale = x < 0.0 ? 1.0 : 0.5;
+    EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x; // the skin: 1e-12 m
+    EXPECT_NEAR(pressed.force.x, 0.0, 1e-12);
+  }
+}
+
 TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
 {
   ServoParameters servo;
