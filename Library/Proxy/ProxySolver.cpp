@@ -387,7 +387,8 @@ bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t 
   // A corner is inside a surface when its fan closes: every edge from it is used by two of the
   // triangles around it (all of which are within reach, since the proxy touches the corner).
   // An edge used once is on the rim of an open sheet.
-  std::uint32_t ends[2 * kMaxNearbyTriangles];
+  // Up to six ends a triangle: a degenerate one may name the corner at all three of its places.
+  std::uint32_t ends[6 * kMaxNearbyTriangles];
   int numEnds = 0;
   for (std::uint32_t i = 0; i < numNearby; ++i)
   {
