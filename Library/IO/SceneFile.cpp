@@ -1,5 +1,7 @@
 #include "IO/SceneFile.h"
 
+#include "IO/Private/FileChecks.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -44,18 +46,7 @@ std::string cutShort(std::string text, std::size_t longest)
 
 std::string readWholeFile(const std::string& path)
 {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (error || !fs::exists(status))
-  {
-    throw InputError(path, "cannot open the file (" +
-                             (error ? error.message() : std::string("No such file or directory")) +
-                             ")");
-  }
-  if (fs::is_directory(status))
-  {
-    throw InputError(path, "is a directory, not a scene file");
-  }
+  detail::requireReadableFile(path, "scene file");
   std::ifstream stream(path, std::ios::binary);
   if (!stream)
   {

@@ -205,12 +205,7 @@ const char* textureChannelName(TextureChannel channel)
 
 TextureImage readTextureImage(const std::string& path, TextureChannel channel)
 {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-  {
-    throw InputError(path, "is a directory, not an image file");
-  }
-  detail::requireReadableFile(path);
+  detail::requireReadableFile(path, "image file");
   const std::optional<ImageFormat> format = formatFromSignature(detail::readFileHead(path, 8));
   if (!format)
   {

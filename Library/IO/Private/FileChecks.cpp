@@ -11,7 +11,7 @@
 namespace proxima::detail
 {
 
-std::uintmax_t requireReadableFile(const std::string& path)
+std::uintmax_t requireReadableFile(const std::string& path, const std::string& kind)
 {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -24,7 +24,7 @@ std::uintmax_t requireReadableFile(const std::string& path)
   }
   if (fs::is_directory(status))
   {
-    throw InputError(path, "is a directory, not a mesh file");
+    throw InputError(path, "is a directory, not a " + kind);
   }
   if (!fs::is_regular_file(status))
   {

@@ -9,8 +9,9 @@ namespace proxima::detail
 {
 
 /// Throws InputError unless `path` names a regular file this process can open and read and
-/// that holds at least one byte. Returns its size in bytes.
-std::uintmax_t requireReadableFile(const std::string& path);
+/// that holds at least one byte. Returns its size in bytes. `kind` names what was expected, for
+/// the message about a directory ("is a directory, not a mesh file").
+std::uintmax_t requireReadableFile(const std::string& path, const std::string& kind = "mesh file");
 
 /// Up to `count` bytes from the start of the file (fewer when it is shorter).
 std::string readFileHead(const std::string& path, std::size_t count);
