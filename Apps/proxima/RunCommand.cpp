@@ -166,6 +166,21 @@ std::pair<std::size_t, double> nearestObject(const CollisionScene& scene, const 
   return nearest;
 }
 
+// The surface keys of the summary, for a one-mesh run and for each object of a scene alike.
+void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
+                    const SurfaceMaterial& material)
+{
+  json["shading"] = object.shaded;
+  json["point_normals"] = normalsSourceName(object.normals);
+  if (object.normals == NormalsSource::Computed)
+  {
+    json["feature_angle_deg"] = object.featureAngleDegrees;
+  }
+  json["static_friction"] = material.staticFriction;
+  json["dynamic_friction"] = material.dynamicFriction;
+  json["viscosity_N_s_per_m"] = material.viscosity;
+}
+
 int run(const RunOptions& options)
 {
   const auto readStart = std::chrono::steady_clock::now();
@@ -262,15 +277,7 @@ int run(const RunOptions& options)
     // The keys of a one-mesh run, as before scene files.
     const LoadedObject& object = loaded.objects.front();
     const SurfaceMaterial& material = scene.objects.front().material;
-    json["shading"] = object.shaded;
-    json["point_normals"] = normalsSourceName(object.normals);
-    if (object.normals == NormalsSource::Computed)
-    {
-      json["feature_angle_deg"] = object.featureAngleDegrees;
-    }
-    json["static_friction"] = material.staticFriction;
-    json["dynamic_friction"] = material.dynamicFriction;
-    json["viscosity_N_s_per_m"] = material.viscosity;
+    addSurfaceKeys(json, object, material);
     if (!options.texture.empty())
     {
       nlohmann::ordered_json texture;
@@ -295,15 +302,7 @@ int run(const RunOptions& options)
       entry["mesh"] = object.mesh;
       entry["triangles"] = object.numTriangles;
       entry["degenerate_triangles"] = object.numDegenerateTriangles;
-      entry["shading"] = object.shaded;
-      entry["point_normals"] = normalsSourceName(object.normals);
-      if (object.normals == NormalsSource::Computed)
-      {
-        entry["feature_angle_deg"] = object.featureAngleDegrees;
-      }
-      entry["static_friction"] = material.staticFriction;
-      entry["dynamic_friction"] = material.dynamicFriction;
-      entry["viscosity_N_s_per_m"] = material.viscosity;
+      addSurfaceKeys(entry, object, material);
       entry["textures"] = material.textures.size();
       objects.push_back(std::move(entry));
     }
