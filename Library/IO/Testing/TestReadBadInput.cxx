@@ -2,6 +2,8 @@
 // defect (DESIGN.md section 6), and VTK prints nothing of its own meanwhile.
 #include "IO/MeshReader.h"
 
+#include "ScratchFolderTest.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -15,24 +17,11 @@ namespace
 {
 namespace fs = std::filesystem;
 
-class ReadBadInput : public testing::Test
+class ReadBadInput : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  void SetUp() override
-  {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("proxima-io-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
+  ReadBadInput() : ScratchFolderTest("proxima-io-") {}
 
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    const std::string path = (m_dir / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
 
   /// Reads `path`, expects an InputError naming the file and containing `defect`, and expects
   /// that nothing reached stderr.
@@ -71,7 +60,6 @@ protected:
     return bytes;
   }
 
-  fs::path m_dir;
 };
 
 const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";

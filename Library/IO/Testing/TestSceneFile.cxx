@@ -3,6 +3,8 @@
 // file is refused with one line naming the scene file, the JSON location and the defect.
 #include "IO/SceneFile.h"
 
+#include "ScratchFolderTest.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,24 +22,11 @@ using proxima::SceneShading;
 using proxima::TextureChannel;
 using proxima::TextureRole;
 
-class SceneFile : public testing::Test
+class SceneFile : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  void SetUp() override
-  {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("proxima-scene-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
+  SceneFile() : ScratchFolderTest("proxima-scene-") {}
 
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    const std::string path = (m_dir / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
 
   /// Expects readSceneFile(path) to throw an InputError whose one-line message is
   /// "<path>: <expected>" exactly.
@@ -83,7 +72,6 @@ protected:
                          "}]}");
   }
 
-  fs::path m_dir;
 };
 
 TEST_F(SceneFile, EveryKeyRoundTripsIntoTheDescription)

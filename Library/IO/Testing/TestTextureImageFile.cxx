@@ -4,6 +4,8 @@
 // spot_texture.png; and bad files, each refused with a one-line InputError naming the file.
 #include "IO/TextureImageFile.h"
 
+#include "ScratchFolderTest.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <gtest/gtest.h>
@@ -34,19 +36,11 @@ double pictureValue(int x, int y, int c)
   return (1 + x + kWidth * y + kWidth * kHeight * c) / 64.0;
 }
 
-class TextureImageFile : public testing::Test
+class TextureImageFile : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  void SetUp() override
-  {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("proxima-texture-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
+  TextureImageFile() : ScratchFolderTest("proxima-texture-") {}
 
-  std::string pathOf(const std::string& name) const { return (m_dir / name).string(); }
 
   /// Writes the kWidth x kHeight picture with `channels` channels in `type` (values rounded by
   /// OpenImageIO's conversion from float) and returns its path.
@@ -137,7 +131,6 @@ protected:
     }
   }
 
-  fs::path m_dir;
 };
 
 double rounded(double value, double levels) { return std::round(value * levels) / levels; }
