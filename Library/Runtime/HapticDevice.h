@@ -1,8 +1,15 @@
 // The device interface of the runtime, in SI units: where the finger is, and the force to apply.
-// Virtual by design: it sits at the servo loop's edge, outside the proxy update.
+// Virtual by design: it sits at the servo loop's edge, outside the proxy update. Errors are
+// values: a sample says whether it holds a position and whether the device is still there; no
+// call throws.
 #pragma once
 
+#include "Core/Aabb.h"
 #include "Core/Vec3.h"
+
+#include <array>
+#include <cstdint>
+#include <limits>
 
 namespace proxima
 {
@@ -11,8 +18,25 @@ struct DeviceSample
 {
   /// Finger (end-effector) position in metres, world frame.
   Vec3 position;
-  /// False when the device had nothing to report this tick (disconnect, read error).
+  /// False when the device had nothing to report this tick (a short or malformed read): the tick
+  /// holds the last force.
   bool valid = true;
+  /// False once the device is gone (unplugged, transport closed). The servo loop fades the force
+  /// out and reports the loss; `valid` is false too.
+  bool connected = true;
+  /// Button states, bit i for button i.
+  std::uint32_t buttons = 0;
+  /// Orientation as a unit quaternion (w, x, y, z), where the device has one.
+  bool hasOrientation = false;
+  std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};
+};
+
+/// What a device can reach and push. An empty workspace means unbounded.
+struct DeviceLimits
+{
+  Aabb workspace;
+  /// Largest force magnitude in newtons the device can render.
+  double maxForce = std::numeric_limits<double>::infinity();
 };
 
 class HapticDevice
@@ -23,6 +47,8 @@ public:
   virtual DeviceSample read(double time) = 0;
   /// Commands `force` (newtons, on the finger) for the tick at `time`.
   virtual void writeForce(const Vec3& force, double time) = 0;
+  /// The device's workspace and force limit; the servo clamps to the smaller of this and its own.
+  virtual DeviceLimits limits() const { return DeviceLimits{}; }
 };
 
 } // namespace proxima

@@ -16,6 +16,15 @@ struct ServoParameters
   double stiffness = 1000.0;
   /// Forces are clamped to this magnitude (the device's limit), in newtons.
   double maxForce = 10.0;
+  /// Watchdog: a proxy state older than this (seconds) means the proxy loop stalled, and the
+  /// force fades out. Only the threaded runtime has stale states.
+  double watchdogTimeout = 0.005;
+  /// Time in seconds over which the force fades to zero (stall, device lost).
+  double fadeTime = 0.05;
+  /// After a scene change, the force may change by at most this many newtons per second, for
+  /// `sceneChangeWindow` seconds, so that a new model does not kick the hand.
+  double forceRateLimit = 200.0;
+  double sceneChangeWindow = 0.1;
 };
 
 /// What one tick did: the rows of the trace file (DESIGN.md section 3).

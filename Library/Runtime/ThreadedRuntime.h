@@ -1,0 +1,89 @@
+// The threaded runtime (paper sections 7 and 8): a servo thread and a proxy-update thread with
+// fixed absolute deadlines. The servo thread reads the device, posts the finger to the proxy
+// thread and renders the spring force from the last published proxy; the proxy thread runs the
+// solver on the latest finger. Everything between threads is lock-free: the finger and the proxy
+// state go through single-writer snapshots, scenes through an atomic swap that only ever installs
+// a complete scene and never frees one on a haptic thread. The step functions are those of the
+// lockstep runner (ServoTick.h), so a threaded run and a lockstep run of a path agree.
+#pragma once
+
+#include "Proxy/CollisionScene.h"
+#include "Proxy/ProxyParameters.h"
+#include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/LoopStatistics.h"
+#include "Runtime/ServoTick.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+struct RuntimeSettings
+{
+  /// Servo loop rate in Hz, 1 to 10 kHz.
+  double servoRate = 4000.0;
+  /// Proxy-update loop rate in Hz; 0 runs it at the servo rate.
+  double proxyRate = 0.0;
+  /// Ask for SCHED_FIFO on both threads (servo above proxy). Refused without the privilege:
+  /// start() then says so and the threads run at normal priority.
+  bool realtimeScheduling = true;
+  int servoPriority = 80;
+  int proxyPriority = 70;
+  /// Keep the first `recordTicks` servo ticks as TickRecords (preallocated), for comparing a
+  /// threaded run with a lockstep one; 0 keeps none.
+  std::size_t recordTicks = 0;
+  /// When the device runs out (a scripted path that ended), stop after this time; 0: never.
+  double duration = 0.0;
+};
+
+class ThreadedRuntime
+{
+public:
+  /// `device` must outlive the runtime; it is used by the servo thread only while running.
+  ThreadedRuntime(HapticDevice& device, const ServoParameters& servo,
+                  const RuntimeSettings& settings);
+  ~ThreadedRuntime();
+  ThreadedRuntime(const ThreadedRuntime&) = delete;
+  ThreadedRuntime& operator=(const ThreadedRuntime&) = delete;
+
+  /// Hands a complete scene to the proxy loop; callable from any thread, before or while
+  /// running, and never blocks the haptic threads. The proxy loop installs it at its next tick
+  /// (the servo then limits the force's rate of change for a moment, so the change does not
+  /// kick). The first scene also places the proxy at `proxyStart`. Returns the scene's version
+  /// (1, 2, ...). Scenes the proxy loop has let go of are freed here, on the caller's thread.
+  std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
+                             const ProxyParameters& parameters, const Vec3& proxyStart);
+
+  /// Starts both threads; false (and `message` says why) if they could not start. `message`
+  /// also says whether real-time scheduling was granted.
+  bool start(std::string& message);
+  /// Stops both threads and waits for them. Idempotent.
+  void stop();
+  bool running() const;
+  /// True once the device ran out and `duration` passed (a scripted run ended).
+  bool finished() const;
+
+  /// The last state the servo thread published: lock-free, any thread.
+  HapticState latestState() const;
+  /// Version of the scene the proxy loop is using (0 before the first is installed).
+  std::uint64_t liveSceneVersion() const;
+  /// Period and deadline statistics of each loop, readable while running.
+  LoopStatistics servoStatistics() const;
+  LoopStatistics proxyStatistics() const;
+  /// The recorded ticks (RuntimeSettings::recordTicks), after stop().
+  std::vector<TickRecord> records() const;
+
+  /// Fault injection for tests and demonstrations: the proxy loop sleeps `seconds` at its next
+  /// tick, as if it had stalled, so the servo's watchdog fades the force.
+  void injectProxyStall(double seconds);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace proxima
