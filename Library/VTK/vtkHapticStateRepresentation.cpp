@@ -179,7 +179,7 @@ void vtkHapticStateRepresentation::UpdateForceArrow()
   {
     m_arrowTransform->RotateZ(180.0);
   }
-  m_arrowTransform->Translate(m_state.finger.x, m_state.finger.y, m_state.finger.z);
+  m_arrowTransform->Translate(m_state.proxy.x, m_state.proxy.y, m_state.proxy.z);
   m_forceActor->VisibilityOn();
 }
 

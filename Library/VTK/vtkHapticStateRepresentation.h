@@ -2,7 +2,7 @@
 // the finger as a translucent ghost sphere, the spring between them, a translucent disc on the
 // constraint plane of each contact, the friction cone at each contact with friction (closed and
 // green while the proxy sticks, open and orange while it slips) and the force on the finger as
-// an arrow. Render-thread only: feed it vtkHapticRenderer::GetState() each frame, or states
+// an arrow from the proxy's centre (from the finger it would start inside the surface, unseen). Render-thread only: feed it vtkHapticRenderer::GetState() each frame, or states
 // computed in lockstep.
 #pragma once
 

@@ -112,7 +112,7 @@ TEST(StateRepresentation, DiscLiesOnTheContactPlane)
   }
 }
 
-TEST(StateRepresentation, ArrowRunsAlongTheForceFromTheFinger)
+TEST(StateRepresentation, ArrowRunsAlongTheForceFromTheProxy)
 {
   vtkNew<vtkHapticStateRepresentation> representation;
   representation->SetForceScale(0.001);
@@ -120,7 +120,7 @@ TEST(StateRepresentation, ArrowRunsAlongTheForceFromTheFinger)
   representation->SetState(state);
   vtkActor* arrow = representation->GetForceActor();
   ASSERT_TRUE(arrow->GetVisibility());
-  // The arrow's unit +x, carried by the actor's transform, lands at finger + scale * force.
+  // The arrow's unit +x, carried by the actor's transform, lands at proxy + scale * force.
   vtkLinearTransform* transform = vtkLinearTransform::SafeDownCast(arrow->GetUserTransform());
   ASSERT_NE(transform, nullptr);
   double origin[3];
@@ -129,9 +129,9 @@ TEST(StateRepresentation, ArrowRunsAlongTheForceFromTheFinger)
   const double unitX[3] = {1, 0, 0};
   transform->TransformPoint(zero, origin);
   transform->TransformPoint(unitX, tip);
-  const Vec3 expectedTip = state.finger + state.force * 0.001;
-  EXPECT_NEAR(origin[0], state.finger.x, 1e-12);
-  EXPECT_NEAR(origin[2], state.finger.z, 1e-12);
+  const Vec3 expectedTip = state.proxy + state.force * 0.001;
+  EXPECT_NEAR(origin[0], state.proxy.x, 1e-12);
+  EXPECT_NEAR(origin[2], state.proxy.z, 1e-12);
   EXPECT_NEAR(tip[0], expectedTip.x, 1e-12);
   EXPECT_NEAR(tip[1], expectedTip.y, 1e-12);
   EXPECT_NEAR(tip[2], expectedTip.z, 1e-12);
