@@ -70,14 +70,26 @@ std::string statusText(const HapticState& state, const LoopStatistics& servo)
   return text;
 }
 
-// Looks at the proxy from `distance`, from the side of its first contact's normal (tilted, so
-// that the plane and the cone show in depth), or along the camera's current direction.
+// The mean of the contact normals: the side of free space the proxy is on.
+Vec3 freeSide(const HapticState& state)
+{
+  Vec3 sum;
+  for (int i = 0; i < state.numContacts; ++i)
+  {
+    sum += state.contacts[i].normal;
+  }
+  const double length = norm(sum);
+  return length > 0.0 ? sum / length : state.contacts[0].normal;
+}
+
+// Looks at the proxy from `distance`, from the free side of its contacts (tilted, so that the
+// planes and the cones show in depth), or along the camera's current direction.
 void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
 {
   Vec3 direction;
   if (state.numContacts > 0)
   {
-    const Vec3& n = state.contacts[0].normal;
+    const Vec3 n = freeSide(state);
     // Any vector not along n, to tilt the view by about 50 degrees off the normal.
     const Vec3 other = std::abs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
     Vec3 side = cross(n, other);
@@ -98,7 +110,7 @@ void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
   camera->SetPosition(eye.x, eye.y, eye.z);
   if (state.numContacts > 0)
   {
-    const Vec3& n = state.contacts[0].normal;
+    const Vec3 n = freeSide(state);
     camera->SetViewUp(n.x, n.y, n.z);
   }
   camera->OrthogonalizeViewUp();
@@ -138,13 +150,17 @@ int view(const ViewOptions& options)
   haptics->SetStiffness(shared.stiffness);
   haptics->SetMaxForce(shared.maxForce);
   haptics->SetMaxIterations(shared.maxIterations);
+  haptics->SetSkin(shared.skin);
   haptics->SetServoRate(shared.rate);
 
   // The surface the proxy touches, drawn from the kernel's own triangles.
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(proxima::vtk::scenePolyData(*scene));
-  normals->SplittingOff();
-  normals->ConsistencyOff();
+  // Sharp CAD edges (60 degrees and more) stay sharp in the picture; a scan's noisy bends below
+  // that stay smooth.
+  normals->SetFeatureAngle(60.0);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
   vtkNew<vtkPolyDataMapper> surfaceMapper;
   surfaceMapper->SetInputConnection(normals->GetOutputPort());
   surfaceMapper->ScalarVisibilityOff();

@@ -77,6 +77,7 @@ bool vtkHapticRenderer::Publish(std::shared_ptr<const proxima::CollisionScene> s
   proxima::ProxyParameters parameters;
   parameters.radius = this->ProxyRadius;
   parameters.maxIterations = this->MaxIterations;
+  parameters.skin = this->Skin;
   parameters.stiffness = this->Stiffness;
   parameters.timeStep = 1.0 / (this->ProxyRate > 0.0 ? this->ProxyRate : this->ServoRate);
   m_publishedVersion = m_runtime->publishScene(std::move(scene), parameters, m_proxyStart);
@@ -187,6 +188,7 @@ void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Stiffness: " << this->Stiffness << "\n";
   os << indent << "MaxForce: " << this->MaxForce << "\n";
   os << indent << "MaxIterations: " << this->MaxIterations << "\n";
+  os << indent << "Skin: " << this->Skin << " (0: from the scene)\n";
   os << indent << "ServoRate: " << this->ServoRate << "\n";
   os << indent << "ProxyRate: " << this->ProxyRate << "\n";
   os << indent << "RealtimeScheduling: " << (this->RealtimeScheduling ? "On" : "Off") << "\n";

@@ -63,6 +63,13 @@ public:
   ///@}
 
   ///@{
+  /// Contact skin in metres (ProxyParameters::skin; default 0: from the scene, see
+  /// Documentation/Epsilons.md).
+  vtkSetClampMacro(Skin, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Skin, double);
+  ///@}
+
+  ///@{
   /// Servo rate in Hz (default 4000, 1 to 10000) and proxy-update rate (default 0: the servo's).
   vtkSetClampMacro(ServoRate, double, 1.0, 10000.0);
   vtkGetMacro(ServoRate, double);
@@ -119,6 +126,7 @@ protected:
   double Stiffness = 1000.0;
   double MaxForce = 10.0;
   int MaxIterations = 256;
+  double Skin = 0.0;
   double ServoRate = 4000.0;
   double ProxyRate = 0.0;
   vtkTypeBool RealtimeScheduling = 0;

@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <functional>
+#include <sstream>
 #include <thread>
 
 namespace
@@ -88,4 +89,20 @@ TEST(HapticRenderer, RefusesToStartWithoutADeviceOrAScene)
   EXPECT_NE(renderer->GetStartMessage().find("no scene"), std::string::npos);
 }
 
+} // namespace
+
+namespace
+{
+TEST(HapticRenderer, PrintSelfStatesTheDocumentedDefaults)
+{
+  vtkNew<vtkHapticRenderer> renderer;
+  std::ostringstream out;
+  renderer->Print(out);
+  for (const char* line : {"ServoRate: 4000", "ProxyRate: 0", "ProxyRadius: 0.001",
+                           "Stiffness: 1000", "MaxForce: 10", "MaxIterations: 256",
+                           "RealtimeScheduling: Off", "Skin: 0"})
+  {
+    EXPECT_NE(out.str().find(line), std::string::npos) << line << " in\n" << out.str();
+  }
+}
 } // namespace
