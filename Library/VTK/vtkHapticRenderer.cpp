@@ -21,13 +21,10 @@ vtkHapticRenderer::~vtkHapticRenderer()
 
 void vtkHapticRenderer::SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene)
 {
+  m_current = scene;
   if (m_runtime)
   {
     this->Publish(std::move(scene));
-  }
-  else
-  {
-    m_pending = std::move(scene);
   }
   this->Modified();
 }
@@ -96,7 +93,7 @@ bool vtkHapticRenderer::Start()
     return false;
   }
   this->UpdateScene();
-  if (!m_pending)
+  if (!m_current)
   {
     m_startMessage = "no scene: SetScene (and a successful Update) or SetCollisionScene first";
     return false;
@@ -116,8 +113,8 @@ bool vtkHapticRenderer::Start()
   settings.duration = this->Duration;
   m_runtime.reset();
   m_runtime = std::make_unique<proxima::ThreadedRuntime>(*m_device, servo, settings);
-  this->Publish(std::move(m_pending));
-  m_pending.reset();
+  // A restart publishes the newest snapshot again: a new runtime starts without a scene.
+  this->Publish(m_current);
   return m_runtime->start(m_startMessage);
 }
 
@@ -147,13 +144,10 @@ std::uint64_t vtkHapticRenderer::UpdateScene()
     if (this->Scene->GetSceneVersion() != m_sceneVersionSeen && this->Scene->GetCollisionScene())
     {
       m_sceneVersionSeen = this->Scene->GetSceneVersion();
+      m_current = this->Scene->GetCollisionScene();
       if (m_runtime)
       {
-        this->Publish(this->Scene->GetCollisionScene());
-      }
-      else
-      {
-        m_pending = this->Scene->GetCollisionScene();
+        this->Publish(m_current);
       }
     }
   }

@@ -94,7 +94,8 @@ public:
   /// Where the proxy starts (in free space). Default: the device's first sample.
   void SetProxyStart(double x, double y, double z);
 
-  /// Builds the runtime, publishes the scene and starts both loops. False if there is no
+  /// Builds the runtime, publishes the scene and starts both loops; after Stop or a finished run,
+  /// starts a new run from the proxy start on the newest scene. False if there is no
   /// scene or device, or the threads did not start; GetStartMessage says why (and whether
   /// real-time scheduling was granted).
   bool Start();
@@ -141,7 +142,8 @@ private:
   std::unique_ptr<proxima::SimulatedDevice> m_ownedDevice;
   proxima::HapticDevice* m_device = nullptr;
   std::unique_ptr<proxima::ThreadedRuntime> m_runtime;
-  std::shared_ptr<const proxima::CollisionScene> m_pending;
+  /// The newest snapshot (published, or waiting for Start).
+  std::shared_ptr<const proxima::CollisionScene> m_current;
   std::uint64_t m_sceneVersionSeen = 0;
   std::uint64_t m_publishedVersion = 0;
   bool m_proxyStartSet = false;

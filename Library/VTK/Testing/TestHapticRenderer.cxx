@@ -106,3 +106,25 @@ TEST(HapticRenderer, PrintSelfStatesTheDocumentedDefaults)
   }
 }
 } // namespace
+
+namespace
+{
+TEST(HapticRenderer, ARunThatFinishedStartsAgainOnTheSameScene)
+{
+  auto sphere = proxima::vtk::testing::polyDataOf(makeIcosphere(2, 0.01));
+  vtkNew<vtkHapticScene> scene;
+  scene->AddObjectData(sphere);
+  vtkNew<vtkHapticRenderer> renderer;
+  renderer->SetScene(scene);
+  renderer->SetServoRate(1000.0);
+  renderer->SetDuration(0.05);
+  renderer->SetFingerPath(proxima::vtk::testing::linearPath({{0, 0, 0.02}, {0, 0, 0.007}}, 0.05));
+  ASSERT_TRUE(renderer->Start()) << renderer->GetStartMessage();
+  ASSERT_TRUE(waitFor([&] { return renderer->IsFinished(); }));
+  renderer->Stop();
+  ASSERT_TRUE(renderer->Start()) << renderer->GetStartMessage();
+  ASSERT_TRUE(waitFor([&] { return renderer->GetLiveSceneVersion() == 1; }));
+  ASSERT_TRUE(waitFor([&] { return renderer->IsFinished(); }));
+  renderer->Stop();
+}
+} // namespace
