@@ -321,6 +321,8 @@ int run(const RunOptions& options)
   json["refused_finger_ticks"] = summary.refusedTicks();
   json["contact_overflow_ticks"] = summary.overflowTicks();
   json["clamped_force_ticks"] = summary.clampedTicks();
+  json["fading_force_ticks"] = summary.fadingTicks();
+  json["device_lost_ticks"] = summary.deviceLostTicks();
   json["stuck_ticks"] = summary.stuckTicks();
   json["friction_limited_ticks"] = summary.frictionLimitedTicks();
   json["max_force_N"] = summary.maxForce();
