@@ -3,6 +3,7 @@
 #include <hidapi.h>
 
 #include <cwchar>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -105,11 +106,25 @@ std::optional<std::vector<std::uint8_t>> readHidReportDescriptor(const std::stri
 {
   const std::size_t slash = path.rfind('/');
   const std::string node = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string sysfs = "/sys/class/hidraw/" + node + "/device/report_descriptor";
+  // The hidraw node's "device" link leads to its HID device, which holds the descriptor; where
+  // that link is missing, the HID device is the node's grandparent in the sysfs tree
+  // (.../0003:VVVV:PPPP.NNNN/hidraw/hidrawN).
+  const std::string classNode = "/sys/class/hidraw/" + node;
+  std::string sysfs = classNode + "/device/report_descriptor";
   std::ifstream file(sysfs, std::ios::binary);
   if (!file)
   {
-    error = sysfs + ": cannot open the report descriptor";
+    std::error_code code;
+    const std::filesystem::path real = std::filesystem::canonical(classNode, code);
+    if (!code)
+    {
+      sysfs = (real.parent_path().parent_path() / "report_descriptor").string();
+      file.open(sysfs, std::ios::binary);
+    }
+  }
+  if (!file)
+  {
+    error = classNode + ": cannot open the HID report descriptor in sysfs";
     return std::nullopt;
   }
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),

@@ -96,9 +96,9 @@ void FalconEmulator::receive(const std::uint8_t* bytes, std::size_t size)
       m_received.push_back(byte);
       if (m_baud == ftdi::kBaud9600 && m_received == std::vector<std::uint8_t>{0x0a, 0x43, 0x0d})
       {
-        for (std::uint8_t reply : {0x00, 0x0a, 0x44, 0x2c, 0x0d})
+        for (int reply : {0x00, 0x0a, 0x44, 0x2c, 0x0d})
         {
-          m_outgoing.push_back(reply);
+          m_outgoing.push_back(static_cast<std::uint8_t>(reply));
         }
         m_received.clear();
       }
