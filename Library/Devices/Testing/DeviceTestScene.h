@@ -104,4 +104,40 @@ inline std::size_t contactTicks(const std::vector<TickRecord>& records)
   return count;
 }
 
+/// The tick at which the unplug tests pull the device: mid-stroke, in contact.
+constexpr std::size_t kUnplugTick = 150;
+
+/// After the device is lost at `lostTick`: every tick reports it, the force fades from what it
+/// was to zero over the servo's fade time without ever growing, and nothing is NaN.
+inline void expectFadeOut(const std::vector<TickRecord>& records, std::size_t lostTick)
+{
+  ASSERT_GT(records.size(), lostTick + 80);
+  ASSERT_GT(records[lostTick - 1].contacts, 0) << "the unplug should come in contact";
+  const double before = norm(records[lostTick - 1].force);
+  ASSERT_GT(before, 0.1);
+  const double fadeTicks = ServoParameters{}.fadeTime * kTestRate;
+  double previous = before;
+  for (std::size_t i = lostTick; i < records.size(); ++i)
+  {
+    const TickRecord& record = records[i];
+    EXPECT_TRUE(record.deviceLost) << i;
+    EXPECT_TRUE(isFinite(record.force)) << i;
+    const double magnitude = norm(record.force);
+    EXPECT_LE(magnitude, previous + 1e-12) << i;
+    previous = magnitude;
+    if (static_cast<double>(i - lostTick) >= fadeTicks + 1)
+    {
+      EXPECT_EQ(magnitude, 0.0) << i;
+    }
+    else if (static_cast<double>(i - lostTick) < fadeTicks - 2)
+    {
+      EXPECT_GT(magnitude, 0.0) << "faded too soon, tick " << i;
+    }
+  }
+  for (std::size_t i = 0; i < lostTick; ++i)
+  {
+    EXPECT_FALSE(records[i].deviceLost) << i;
+  }
+}
+
 } // namespace proxima::testing

@@ -4,6 +4,7 @@
 // real hidapi and libusb). The drivers' traces follow the simulated one within the devices'
 // quantization, and the forces reach the emulated Falcon as the motor commands J^T F.
 #include "Devices/FalconDevice.h"
+#include "Devices/FtdiRequests.h"
 #include "Devices/ReplayDevice.h"
 #include "Devices/SpaceMouseDevice.h"
 
@@ -144,6 +145,63 @@ TEST(DevicesDriveTheSolver, FalconOnItsEmulatorAndItsMotorCommands)
     }
   }
   EXPECT_GT(nonZero, 300u);
+}
+
+// Unplugged mid-stroke, in contact: the driver turns the vanished device into disconnected
+// samples and the servo fades the force out and reports the loss on every tick after.
+TEST(DevicesDriveTheSolver, SpaceMouseUnpluggedMidSessionFadesTheForce)
+{
+  GridScene scene;
+  const FingerPath path = pressStrokePath();
+  SpaceMouseEmulator emulator(SpaceMouseLayout::SplitReports);
+  SpaceMouseSettings settings;
+  settings.centre = path.positions.front();
+  settings.metresPerCount = 1e-5;
+  SpaceMouseDevice spaceMouse(std::make_unique<FakeReportTransport>(emulator), settings);
+  std::size_t hint = 0;
+  std::size_t tick = 0;
+  DrivenDevice device(spaceMouse, [&](double time) {
+    if (tick++ == kUnplugTick)
+    {
+      emulator.unplug();
+    }
+    const Vec3 offset = (path.positionAt(time, hint) - settings.centre) / settings.metresPerCount;
+    emulator.setAxes({static_cast<int>(std::lround(offset.x)), static_cast<int>(std::lround(offset.y)),
+                      static_cast<int>(std::lround(-offset.z))},
+                     {0, 0, 0});
+  });
+  expectFadeOut(scene.run(device, path), kUnplugTick);
+}
+
+TEST(DevicesDriveTheSolver, FalconUnpluggedMidSessionFadesTheForce)
+{
+  GridScene scene;
+  const FingerPath path = pressStrokePath();
+  FalconEmulator emulator({}, 1);
+  FalconSettings settings;
+  // No upload: an emulator whose firmware already runs (re-opened without a power cycle).
+  emulator.control(ftdi::kRequestModemControl, ftdi::kDtrHigh, 0);
+  emulator.control(ftdi::kRequestModemControl, ftdi::kDtrLow, 0);
+  emulator.control(ftdi::kRequestBaudRate, ftdi::kBaudFirmwareUpload, 0);
+  const std::uint8_t upload = 0x40;
+  emulator.receive(&upload, 1);
+  settings.worldOffset = path.positions.front();
+  FalconDevice falcon(std::make_unique<FakeBulkTransport>(emulator), settings);
+  std::string error;
+  ASSERT_TRUE(falcon.open(error)) << error;
+  ASSERT_EQ(emulator.stage(), FalconEmulator::Stage::Running);
+  (void)emulator.transmit(1000); // the upload request's answer
+  std::size_t hint = 0;
+  std::size_t tick = 0;
+  DrivenDevice device(falcon, [&](double time) {
+    if (tick++ == kUnplugTick)
+    {
+      emulator.unplug();
+    }
+    emulator.setGripPosition(path.positionAt(time, hint) - settings.worldOffset + falcon.neutral());
+  });
+  expectFadeOut(scene.run(device, path), kUnplugTick);
+  EXPECT_FALSE(falcon.connected());
 }
 
 } // namespace

@@ -141,5 +141,28 @@ TEST_F(HidapiUmockdev, ScriptedPathDrivesTheSolver)
   EXPECT_EQ(spaceMouse->refusedReports(), 0u);
 }
 
+TEST_F(HidapiUmockdev, UnplugMidStrokeFadesTheForceAndReportsIt)
+{
+  GridScene scene;
+  const FingerPath path = pressStrokePath();
+  SpaceMouseSettings settings;
+  settings.centre = path.positions.front();
+  settings.metresPerCount = 1e-5;
+  auto spaceMouse = openByHand(settings);
+  std::size_t hint = 0;
+  std::size_t tick = 0;
+  DrivenDevice device(*spaceMouse, [&](double time) {
+    if (tick++ == kUnplugTick)
+    {
+      bed.unplugHidraw();
+    }
+    const Vec3 offset = (path.positionAt(time, hint) - settings.centre) / settings.metresPerCount;
+    emulator.setAxes({static_cast<int>(std::lround(offset.x)), static_cast<int>(std::lround(offset.y)),
+                      static_cast<int>(std::lround(-offset.z))},
+                     {0, 0, 0});
+  });
+  expectFadeOut(scene.run(device, path), kUnplugTick);
+}
+
 } // namespace
 } // namespace proxima

@@ -188,5 +188,25 @@ TEST_F(LibusbUmockdev, ScriptedPathDrivesTheSolverAndForcesReachTheMotors)
   EXPECT_GT(nonZero, 300u);
 }
 
+TEST_F(LibusbUmockdev, UnplugMidStrokeFadesTheForceAndReportsIt)
+{
+  GridScene scene;
+  const FingerPath path = pressStrokePath();
+  auto falcon = openFalcon(path.positions.front());
+  ASSERT_TRUE(falcon);
+  std::size_t hint = 0;
+  std::size_t tick = 0;
+  DrivenDevice device(*falcon, [&](double time) {
+    if (tick++ == kUnplugTick)
+    {
+      bed.unplugFalcon();
+    }
+    emulator.setGripPosition(path.positionAt(time, hint) - path.positions.front() +
+                             falcon->neutral());
+  });
+  expectFadeOut(scene.run(device, path), kUnplugTick);
+  EXPECT_FALSE(falcon->connected());
+}
+
 } // namespace
 } // namespace proxima
