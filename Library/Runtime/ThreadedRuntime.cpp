@@ -195,6 +195,7 @@ struct ThreadedRuntime::Impl
   std::atomic<bool> stopRequested{false};
   std::atomic<bool> finishedFlag{false};
   std::atomic<Nanoseconds> stallRequest{0};
+  std::atomic<Nanoseconds> longestInstall{0};
   bool started = false;
 
   LoopStatisticsRecorder servoStatistics;
@@ -218,6 +219,7 @@ void ThreadedRuntime::Impl::installPendingScene()
   {
     return;
   }
+  const Nanoseconds begin = monotonicNow();
   solver->setScene(next->scene.get(), next->parameters);
   if (live == nullptr)
   {
@@ -225,6 +227,11 @@ void ThreadedRuntime::Impl::installPendingScene()
   }
   SceneSlot* previous = live;
   live = next;
+  const Nanoseconds took = monotonicNow() - begin;
+  if (took > longestInstall.load(std::memory_order_relaxed))
+  {
+    longestInstall.store(took, std::memory_order_relaxed);
+  }
   liveVersion.store(next->version, std::memory_order_release);
   // Only this thread fills `retired`, and it was empty above: the store loses nothing.
   retired.store(previous, std::memory_order_release);
@@ -481,6 +488,11 @@ HapticState ThreadedRuntime::latestState() const
 std::uint64_t ThreadedRuntime::liveSceneVersion() const
 {
   return m_impl->liveVersion.load(std::memory_order_acquire);
+}
+
+std::int64_t ThreadedRuntime::longestSceneInstallNanoseconds() const
+{
+  return m_impl->longestInstall.load(std::memory_order_relaxed);
 }
 
 LoopStatistics ThreadedRuntime::servoStatistics() const
