@@ -5,7 +5,7 @@ press-and-stroke run (--record-device), the recording is cut at 0.9 s, in contac
 unplugged SpaceMouse or Falcon does, and the servo fades the force to zero over its fade time.
 Plots the force magnitude on the finger of both runs against time.
 
-Usage: Tools/device-fade.py [--proxima build/bin/proxima] [--out Documentation/Figures/device-fade.png]
+Usage: Tools/device_fade.py [--proxima build/bin/proxima] [--out Documentation/Figures/device-fade.png]
 """
 import argparse
 import math
