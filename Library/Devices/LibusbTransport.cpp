@@ -89,9 +89,10 @@ public:
                                                            payloadPerPacket);
     const std::size_t rawSize = std::min(packets * ftdi::kPacketSize, m_raw.size());
     int transferred = 0;
+    // libusb waits forever on a timeout of 0; "do not wait" is the shortest wait it has.
     const int code =
       libusb_bulk_transfer(m_handle, kEndpointIn, m_raw.data(), static_cast<int>(rawSize),
-                           &transferred, static_cast<unsigned>(std::max(0, timeoutMilliseconds)));
+                           &transferred, static_cast<unsigned>(std::max(1, timeoutMilliseconds)));
     if (code != 0)
     {
       return finish(code, 0);
