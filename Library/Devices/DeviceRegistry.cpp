@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 
 namespace proxima
 {
@@ -73,6 +74,14 @@ std::unique_ptr<HapticDevice> openFalcon(const DeviceOptions& options, std::stri
   {
     error = "falcon: the Falcon needs its firmware, which Proxima does not ship: give your own "
             "copy with --falcon-firmware FILE (Documentation/Devices.md)";
+    return nullptr;
+  }
+  // The file first: a missing firmware is the user's to fix before any device is touched.
+  if (!std::ifstream(settings.firmwarePath, std::ios::binary))
+  {
+    error = settings.firmwarePath +
+            ": cannot open the Falcon firmware file; Proxima does not ship it: give your own copy "
+            "with --falcon-firmware (Documentation/Devices.md)";
     return nullptr;
   }
   auto transport = openFtdiTransport(kFalconVendor, kFalconProduct, error);
