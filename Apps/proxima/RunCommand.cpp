@@ -1,6 +1,7 @@
 // `proxima run`: plays a scripted finger path through a mesh or a scene file in lockstep mode and
 // writes the trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
 #include "Command.h"
+#include "DeviceChoice.h"
 
 #include "IO/FingerPathFile.h"
 #include "IO/InputError.h"
@@ -10,7 +11,6 @@
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/RunSummary.h"
-#include "Runtime/SimulatedDevice.h"
 
 #include <nlohmann/json.hpp>
 
@@ -51,6 +51,7 @@ struct RunOptions
   std::string textureRole;
   double textureAmplitude = 0.0;
   std::string textureChannel = "luminance";
+  DeviceChoiceOptions device;
 };
 
 SceneShading shadingFrom(const std::string& name)
@@ -230,12 +231,12 @@ int run(const RunOptions& options)
   servo.stiffness = options.stiffness;
   servo.maxForce = options.maxForce;
 
-  SimulatedDevice device(fingerPath);
+  RunDevice device(options.device, fingerPath, settings.numTicks);
   TraceWriter trace(options.out);
   RunSummary summary;
   Progress progress(settings.numTicks);
   const auto runStart = std::chrono::steady_clock::now();
-  runLockstep(settings, solver, device, servo, [&](const TickRecord& record) {
+  runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
     trace.write(record);
     summary.add(record);
     if ((record.tick & 1023u) == 0)
@@ -246,6 +247,7 @@ int run(const RunOptions& options)
   progress.update(settings.numTicks);
   progress.finish();
   trace.close();
+  device.finish();
   const double runMilliseconds = millisecondsSince(runStart);
 
   std::uint64_t numTriangles = 0;
@@ -265,6 +267,7 @@ int run(const RunOptions& options)
     json["scene"] = options.scene;
   }
   json["path"] = options.path;
+  json["device"] = options.device.device;
   json["trace"] = options.out;
   json["triangles"] = numTriangles;
   json["degenerate_triangles"] = numDegenerate;
@@ -411,6 +414,7 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--path", options->path, "Finger path CSV (t,x,y,z)")->required();
   app->add_option("--out", options->out, "Trace CSV to write (trace v1)")->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
+  addDeviceOptions(*app, options->device);
   app->add_option("--rate", options->rate, "Servo rate in Hz (default 1000)")
     ->check(CLI::PositiveNumber);
   app->add_option("--max-force", options->maxForce, "Force clamp in newtons (default 10)")
