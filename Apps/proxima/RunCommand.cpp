@@ -1,6 +1,7 @@
 // `proxima run`: plays a scripted finger path through a mesh or a scene file in lockstep mode and
 // writes the trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
 #include "Command.h"
+#include "DeviceChoice.h"
 #include "SceneOptions.h"
 
 #include "IO/FingerPathFile.h"
@@ -10,7 +11,6 @@
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/RunSummary.h"
-#include "Runtime/SimulatedDevice.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +30,7 @@ struct RunOptions
   SceneOptions scene;
   std::string out;
   std::string summary;
+  DeviceChoiceOptions device;
 };
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -107,12 +108,12 @@ int run(const RunOptions& options)
   settings.numTicks = ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate);
   const ServoParameters servo = servoParameters(shared);
 
-  SimulatedDevice device(fingerPath);
+  RunDevice device(options.device, fingerPath, settings.numTicks);
   TraceWriter trace(options.out);
   RunSummary summary;
   Progress progress(settings.numTicks);
   const auto runStart = std::chrono::steady_clock::now();
-  runLockstep(settings, solver, device, servo, [&](const TickRecord& record) {
+  runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
     trace.write(record);
     summary.add(record);
     if ((record.tick & 1023u) == 0)
@@ -123,6 +124,7 @@ int run(const RunOptions& options)
   progress.update(settings.numTicks);
   progress.finish();
   trace.close();
+  device.finish();
   const double runMilliseconds = millisecondsSince(runStart);
 
   std::uint64_t numTriangles = 0;
@@ -142,6 +144,7 @@ int run(const RunOptions& options)
     json["scene"] = shared.scene;
   }
   json["path"] = shared.path;
+  json["device"] = options.device.device;
   json["trace"] = options.out;
   json["triangles"] = numTriangles;
   json["degenerate_triangles"] = numDegenerate;
@@ -237,6 +240,7 @@ Command addRunCommand(CLI::App& parent)
   addSceneOptionsThroughPath(*app, options->scene);
   app->add_option("--out", options->out, "Trace CSV to write (trace v1)")->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
+  addDeviceOptions(*app, options->device);
   addSceneOptionsAfterPath(*app, options->scene);
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return run(*options); }};

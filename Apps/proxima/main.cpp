@@ -22,6 +22,7 @@ constexpr Command (*kCommands[])(CLI::App&) = {
   proxima::cli::addPathCommand,
   proxima::cli::addTreeCommand,
   proxima::cli::addGenerateCommand,
+  proxima::cli::addDevicesCommand,
 };
 } // namespace
 

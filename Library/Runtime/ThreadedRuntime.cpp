@@ -154,7 +154,8 @@ ProxyPost makeProxyPost(const FingerPost& finger, const ProxyStepOutcome& outcom
 struct ThreadedRuntime::Impl
 {
   Impl(HapticDevice& device_, const ServoParameters& servo_, const RuntimeSettings& settings_)
-    : device(device_), servo(servo_), settings(settings_), solver(std::make_unique<ProxySolver>())
+    : device(device_), limits(device_.limits()), servo(servo_), settings(settings_),
+      solver(std::make_unique<ProxySolver>())
   {
     settings.servoRate = std::clamp(settings.servoRate, 1000.0, 10000.0);
     if (!(settings.proxyRate > 0.0))
@@ -175,6 +176,8 @@ struct ThreadedRuntime::Impl
   }
 
   HapticDevice& device;
+  /// Asked once here, so that only the servo thread ever calls the device.
+  DeviceLimits limits;
   ServoParameters servo;
   RuntimeSettings settings;
   std::unique_ptr<ProxySolver> solver;
@@ -192,6 +195,7 @@ struct ThreadedRuntime::Impl
   std::atomic<bool> stopRequested{false};
   std::atomic<bool> finishedFlag{false};
   std::atomic<Nanoseconds> stallRequest{0};
+  std::atomic<Nanoseconds> longestInstall{0};
   bool started = false;
 
   LoopStatisticsRecorder servoStatistics;
@@ -215,6 +219,7 @@ void ThreadedRuntime::Impl::installPendingScene()
   {
     return;
   }
+  const Nanoseconds begin = monotonicNow();
   solver->setScene(next->scene.get(), next->parameters);
   if (live == nullptr)
   {
@@ -222,6 +227,11 @@ void ThreadedRuntime::Impl::installPendingScene()
   }
   SceneSlot* previous = live;
   live = next;
+  const Nanoseconds took = monotonicNow() - begin;
+  if (took > longestInstall.load(std::memory_order_relaxed))
+  {
+    longestInstall.store(took, std::memory_order_relaxed);
+  }
   liveVersion.store(next->version, std::memory_order_release);
   // Only this thread fills `retired`, and it was empty above: the store loses nothing.
   retired.store(previous, std::memory_order_release);
@@ -231,7 +241,7 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
 {
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
   LoopClock clock(start, settings.proxyRate, proxyStatistics);
-  ServoForce recordForce(servo, device.limits());
+  ServoForce recordForce(servo, limits);
   std::uint64_t lastPost = 0;
   while (!stopRequested.load(std::memory_order_acquire) &&
          !finishedFlag.load(std::memory_order_acquire))
@@ -295,7 +305,7 @@ void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
 {
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
   LoopClock clock(start, settings.servoRate, servoStatistics);
-  ServoForce force(servo, device.limits());
+  ServoForce force(servo, limits);
   while (!stopRequested.load(std::memory_order_acquire))
   {
     const std::uint64_t tick = clock.waitForNextTick();
@@ -478,6 +488,11 @@ HapticState ThreadedRuntime::latestState() const
 std::uint64_t ThreadedRuntime::liveSceneVersion() const
 {
   return m_impl->liveVersion.load(std::memory_order_acquire);
+}
+
+std::int64_t ThreadedRuntime::longestSceneInstallNanoseconds() const
+{
+  return m_impl->longestInstall.load(std::memory_order_relaxed);
 }
 
 LoopStatistics ThreadedRuntime::servoStatistics() const

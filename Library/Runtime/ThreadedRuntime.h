@@ -73,6 +73,9 @@ public:
   HapticState latestState() const;
   /// Version of the scene the proxy loop is using (0 before the first is installed).
   std::uint64_t liveSceneVersion() const;
+  /// The longest time the proxy loop spent installing a published scene, in nanoseconds: the
+  /// whole cost of a model swap on the haptic side.
+  std::int64_t longestSceneInstallNanoseconds() const;
   /// Period and deadline statistics of each loop, readable while running.
   LoopStatistics servoStatistics() const;
   LoopStatistics proxyStatistics() const;

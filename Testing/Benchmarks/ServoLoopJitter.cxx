@@ -142,6 +142,8 @@ int main(int argc, char** argv)
     swapJson = {{"read_and_build_ms", buildMs},
                 {"publish_ms", publishMs - buildMs},
                 {"build_to_live_ms", millisecondsSince(start)},
+                {"install_in_proxy_loop_us",
+                 static_cast<double>(runtime.longestSceneInstallNanoseconds()) / 1e3},
                 {"triangles", next->objects[0].mesh.numTriangles()}};
   }
   while (!runtime.finished())
