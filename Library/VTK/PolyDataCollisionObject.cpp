@@ -70,9 +70,9 @@ ScenePose rigidPose(vtkLinearTransform* transform)
 }
 } // namespace
 
-CollisionObject buildCollisionObject(vtkPolyData* data, const std::string& name,
-                                     const PolyDataObjectSettings& settings,
-                                     PolyDataObjectReport* report)
+CollisionObject prepareCollisionObject(vtkPolyData* data, const std::string& name,
+                                       const PolyDataObjectSettings& settings,
+                                       PolyDataObjectReport* report)
 {
   const auto conversionStart = std::chrono::steady_clock::now();
   TriangleSoup soup = detail::polyDataToSoup(data, name, settings.scale);
@@ -91,16 +91,25 @@ CollisionObject buildCollisionObject(vtkPolyData* data, const std::string& name,
   object.mesh = buildTriangleMesh(std::move(soup), name);
   object.material = settings.material;
   object.material.shading = settings.shading;
-  const double conversionMilliseconds = millisecondsSince(conversionStart);
-
-  const auto buildStart = std::chrono::steady_clock::now();
-  object.tree.build(object.mesh, settings.tree);
   if (report)
   {
     report->numTriangles = object.mesh.numTriangles();
     report->numDegenerateTriangles = object.mesh.numDegenerateTriangles();
     report->computedNormals = computedNormals;
-    report->conversionMilliseconds = conversionMilliseconds;
+    report->conversionMilliseconds = millisecondsSince(conversionStart);
+  }
+  return object;
+}
+
+CollisionObject buildCollisionObject(vtkPolyData* data, const std::string& name,
+                                     const PolyDataObjectSettings& settings,
+                                     PolyDataObjectReport* report)
+{
+  CollisionObject object = prepareCollisionObject(data, name, settings, report);
+  const auto buildStart = std::chrono::steady_clock::now();
+  object.tree.build(object.mesh, settings.tree);
+  if (report)
+  {
     report->treeBuildMilliseconds = millisecondsSince(buildStart);
   }
   return object;

@@ -41,7 +41,14 @@ struct PolyDataObjectReport
   double treeBuildMilliseconds = 0.0;
 };
 
-/// Builds the object. `name` says where the data came from in error messages. Throws
+/// The object without its tree (mesh checked, posed, material set): the part that touches VTK,
+/// for one thread at a time (the checks collect VTK's messages per thread). Throws as below.
+CollisionObject prepareCollisionObject(vtkPolyData* data, const std::string& name,
+                                       const PolyDataObjectSettings& settings,
+                                       PolyDataObjectReport* report = nullptr);
+
+/// prepareCollisionObject, then the sphere tree (plain kernel code, safe to run for several
+/// objects at once). `name` says where the data came from in error messages. Throws
 /// InputError for data the kernel cannot use (non-finite points, ids out of range, no
 /// triangles) and std::invalid_argument for a pose that is not rigid.
 CollisionObject buildCollisionObject(vtkPolyData* data, const std::string& name,

@@ -1,6 +1,7 @@
 #include "VTK/vtkHapticScene.h"
 
 #include "VTK/PolyDataCollisionObject.h"
+#include "VTK/Private/ParallelFor.h"
 #include "VTK/ScenePolyData.h"
 
 #include <vtkAlgorithmOutput.h>
@@ -173,8 +174,17 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
   }
 
   // Build every changed object first; only when all are complete does a new snapshot replace
-  // the old one, so a failure leaves the last good scene in place.
-  std::vector<std::shared_ptr<const proxima::CollisionObject>> objects;
+  // the old one, so a failure leaves the last good scene in place. The checks and conversion
+  // touch VTK and run one object at a time; the trees, plain kernel code and most of the work,
+  // are built in parallel (vtkSMPTools), one object per task.
+  struct Staged
+  {
+    int index;
+    vtkDataObject* input;
+    vtkMTimeType poseTime;
+    proxima::CollisionObject object;
+  };
+  std::vector<Staged> staged;
   for (int i = 0; i < numObjects; ++i)
   {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], i);
@@ -186,43 +196,89 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
                        entry.builtSettingsVersion != entry.settingsVersion ||
                        entry.builtLeafSizeFactor != this->LeafSizeFactor ||
                        entry.builtMaxLeafSpheres != this->MaxLeafSpheresPerNode;
-    if (stale)
+    if (!stale)
     {
-      proxima::vtk::PolyDataObjectSettings settings;
-      settings.scale = entry.scale;
-      settings.pose = entry.pose;
-      settings.shading = entry.shading;
-      settings.material.staticFriction = entry.staticFriction;
-      settings.material.dynamicFriction = entry.dynamicFriction;
-      settings.material.viscosity = entry.viscosity;
-      settings.tree.leafSizeFactor = this->LeafSizeFactor;
-      settings.tree.maxLeafSpheresPerNode = static_cast<std::uint32_t>(this->MaxLeafSpheresPerNode);
-      try
-      {
-        entry.built = std::make_shared<const proxima::CollisionObject>(
-          proxima::vtk::buildCollisionObject(input, "vtkHapticScene object " + std::to_string(i),
-                                             settings));
-      }
-      catch (const std::exception& error)
-      {
-        vtkErrorMacro("Cannot build object " << i << ": " << error.what()
-                                             << " (the previous scene stays in use)");
-        return 0;
-      }
-      entry.builtFrom = input;
-      entry.builtFromTime = input->GetMTime();
-      entry.builtPoseTime = poseTime;
-      entry.builtSettingsVersion = entry.settingsVersion;
-      entry.builtLeafSizeFactor = this->LeafSizeFactor;
-      entry.builtMaxLeafSpheres = this->MaxLeafSpheresPerNode;
-      ++m_numRebuilt;
+      continue;
     }
-    objects.push_back(entry.built);
-    this->UpdateProgress(0.8 * (i + 1) / numObjects);
+    proxima::vtk::PolyDataObjectSettings settings;
+    settings.scale = entry.scale;
+    settings.pose = entry.pose;
+    settings.shading = entry.shading;
+    settings.material.staticFriction = entry.staticFriction;
+    settings.material.dynamicFriction = entry.dynamicFriction;
+    settings.material.viscosity = entry.viscosity;
+    try
+    {
+      staged.push_back(Staged{i, input, poseTime,
+                              proxima::vtk::prepareCollisionObject(
+                                input, "vtkHapticScene object " + std::to_string(i), settings)});
+    }
+    catch (const std::exception& error)
+    {
+      vtkErrorMacro("Cannot build object " << i << ": " << error.what()
+                                           << " (the previous scene stays in use)");
+      return 0;
+    }
+    this->UpdateProgress(0.2 * (i + 1) / numObjects);
     if (this->GetAbortExecute())
     {
       return 1;
     }
+  }
+
+  proxima::SphereTreeOptions treeOptions;
+  treeOptions.leafSizeFactor = this->LeafSizeFactor;
+  treeOptions.maxLeafSpheresPerNode = static_cast<std::uint32_t>(this->MaxLeafSpheresPerNode);
+  std::vector<char> failed(staged.size(), 0);
+  auto buildTree = [&](long k) {
+    try
+    {
+      auto& object = staged[static_cast<std::size_t>(k)].object;
+      object.tree.build(object.mesh, treeOptions);
+    }
+    catch (...)
+    {
+      failed[static_cast<std::size_t>(k)] = 1;
+    }
+  };
+  if (this->ParallelTreeBuild && staged.size() > 1)
+  {
+    proxima::vtk::detail::parallelForEach(static_cast<long>(staged.size()), buildTree);
+  }
+  else
+  {
+    for (std::size_t k = 0; k < staged.size(); ++k)
+    {
+      buildTree(static_cast<long>(k));
+    }
+  }
+  for (std::size_t k = 0; k < staged.size(); ++k)
+  {
+    if (failed[k])
+    {
+      vtkErrorMacro("Cannot build the sphere tree of object "
+                    << staged[k].index << " (out of memory?); the previous scene stays in use");
+      return 0;
+    }
+  }
+  this->UpdateProgress(0.8);
+
+  for (Staged& built : staged)
+  {
+    ObjectEntry& entry = this->Entry(built.index);
+    entry.built = std::make_shared<const proxima::CollisionObject>(std::move(built.object));
+    entry.builtFrom = built.input;
+    entry.builtFromTime = built.input->GetMTime();
+    entry.builtPoseTime = built.poseTime;
+    entry.builtSettingsVersion = entry.settingsVersion;
+    entry.builtLeafSizeFactor = this->LeafSizeFactor;
+    entry.builtMaxLeafSpheres = this->MaxLeafSpheresPerNode;
+    ++m_numRebuilt;
+  }
+  std::vector<std::shared_ptr<const proxima::CollisionObject>> objects;
+  for (int i = 0; i < numObjects; ++i)
+  {
+    objects.push_back(this->Entry(i).built);
   }
 
   const bool sameObjects = m_scene && m_scene->objects.size() == objects.size();
@@ -256,6 +312,7 @@ void vtkHapticScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LeafSizeFactor: " << this->LeafSizeFactor << "\n";
   os << indent << "MaxLeafSpheresPerNode: " << this->MaxLeafSpheresPerNode << "\n";
   os << indent << "GenerateSurface: " << (this->GenerateSurface ? "On" : "Off") << "\n";
+  os << indent << "ParallelTreeBuild: " << (this->ParallelTreeBuild ? "On" : "Off") << "\n";
   os << indent << "SceneVersion: " << m_sceneVersion << "\n";
   for (std::size_t i = 0; i < m_objects.size(); ++i)
   {

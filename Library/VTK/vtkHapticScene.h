@@ -65,6 +65,16 @@ public:
   ///@}
 
   ///@{
+  /// Build the trees of several changed objects at once with vtkSMPTools, one object per task
+  /// (default on; off builds one tree at a time). Two edited 1.5M-triangle objects on two cores:
+  /// 955 ms from the edit to live instead of 1325-1470 ms (Documentation/VtkPipeline.md). One
+  /// object's tree is one serial build either way.
+  vtkSetMacro(ParallelTreeBuild, vtkTypeBool);
+  vtkGetMacro(ParallelTreeBuild, vtkTypeBool);
+  vtkBooleanMacro(ParallelTreeBuild, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// Make the output surface (default on). Off saves a copy of every mesh per rebuild where
   /// nothing draws the scene's own output.
   vtkSetMacro(GenerateSurface, vtkTypeBool);
@@ -94,6 +104,7 @@ protected:
   double LeafSizeFactor = 2.0;
   int MaxLeafSpheresPerNode = 4;
   vtkTypeBool GenerateSurface = 1;
+  vtkTypeBool ParallelTreeBuild = 1;
 
 private:
   vtkHapticScene(const vtkHapticScene&) = delete;

@@ -1,7 +1,8 @@
 // Measures the time from a vtkPolyData modification to the new sphere tree being live in the
 // haptic thread, through vtkHapticScene and vtkHapticRenderer with the loops running at 4 kHz:
-//   scene-swap-latency MESH [SCALE] [REPEATS]
-// Each repeat moves every point of the mesh by 0.1 mm, calls Modified(), then UpdateScene (the
+//   scene-swap-latency MESH [SCALE] [REPEATS] [COPIES] [serial]
+// COPIES (default 1) objects of the mesh stand side by side. Each repeat moves every point of
+// every copy by 0.1 mm, calls Modified(), then UpdateScene (the
 // rebuild and publish, on this thread) and waits for the proxy loop to report the new version
 // live. Prints one JSON object with each repeat's times in milliseconds. A measurement program,
 // not a test: run it by hand (Documentation/VtkPipeline.md has the numbers).
@@ -15,22 +16,29 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTransform.h>
+
+#include <algorithm>
+#include <vector>
 
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <thread>
 
 int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::cerr << "usage: scene-swap-latency MESH [SCALE] [REPEATS]\n";
+    std::cerr << "usage: scene-swap-latency MESH [SCALE] [REPEATS] [COPIES]\n";
     return 2;
   }
   using Clock = std::chrono::steady_clock;
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+  const int copies = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
   const proxima::TriangleSoup soup = proxima::readMeshFile(argv[1], scale);
   auto data = proxima::vtk::testing::polyDataOf(soup);
 
@@ -45,8 +53,21 @@ int main(int argc, char** argv)
   const double treeMs = filter->GetTreeBuildMilliseconds();
 
   vtkNew<vtkHapticScene> scene;
+  std::vector<vtkSmartPointer<vtkPolyData>> objects{data};
   scene->AddObjectData(data);
+  double size[6];
+  data->GetBounds(size);
+  for (int c = 1; c < copies; ++c)
+  {
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(data);
+    vtkNew<vtkTransform> beside;
+    beside->Translate(1.5 * c * (size[1] - size[0]), 0.0, 0.0);
+    scene->SetObjectPose(scene->AddObjectData(copy), beside);
+    objects.push_back(copy);
+  }
   scene->GenerateSurfaceOff();
+  scene->SetParallelTreeBuild(!(argc > 5 && std::string(argv[5]) == "serial"));
   vtkNew<vtkHapticRenderer> renderer;
   renderer->SetScene(scene);
   renderer->SetServoRate(4000.0);
@@ -71,19 +92,22 @@ int main(int argc, char** argv)
     std::chrono::duration<double, std::milli>(Clock::now() - firstStart).count();
 
   std::cout << "{\n  \"mesh\": \"" << argv[1] << "\",\n  \"triangles\": " << soup.triangles.size()
-            << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
+            << ",\n  \"copies\": " << copies << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
             << ",\n  \"start_to_first_live_ms\": " << firstMs << ",\n  \"repeats\": [\n";
   for (int r = 0; r < repeats; ++r)
   {
-    vtkPoints* points = data->GetPoints();
     const auto start = Clock::now();
-    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    for (vtkPolyData* object : objects)
     {
-      double p[3];
-      points->GetPoint(i, p);
-      points->SetPoint(i, p[0], p[1], p[2] + 0.0001);
+      vtkPoints* points = object->GetPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        points->GetPoint(i, p);
+        points->SetPoint(i, p[0], p[1], p[2] + 0.0001);
+      }
+      points->Modified();
     }
-    points->Modified();
     const auto modified = Clock::now();
     const std::uint64_t version = renderer->UpdateScene();
     const auto published = Clock::now();

@@ -117,6 +117,32 @@ TEST_F(TwoObjects, AnEditRebuildsOnlyItsObjectIntoANewSnapshot)
   EXPECT_EQ(scene->GetCollisionScene()->objects[1].material.staticFriction, 0.2);
 }
 
+TEST_F(TwoObjects, ParallelTreeBuildsEqualSerialOnes)
+{
+  scene->Update();
+  const auto parallel = scene->GetCollisionScene();
+  vtkNew<vtkHapticScene> serial;
+  serial->AddObjectData(box);
+  serial->AddObjectData(sphere);
+  serial->SetObjectPose(1, pose);
+  serial->SetObjectScale(1, 2.0);
+  serial->ParallelTreeBuildOff();
+  serial->Update();
+  const auto oracle = serial->GetCollisionScene();
+  ASSERT_EQ(parallel->objects.size(), oracle->objects.size());
+  for (std::size_t i = 0; i < oracle->objects.size(); ++i)
+  {
+    const auto& a = parallel->objects[i].tree.nodes();
+    const auto& b = oracle->objects[i].tree.nodes();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t n = 0; n < a.size(); ++n)
+    {
+      EXPECT_EQ(a[n].radius, b[n].radius);
+      EXPECT_EQ(a[n].rightOrFirst, b[n].rightOrFirst);
+    }
+  }
+}
+
 TEST_F(TwoObjects, ABadEditKeepsTheLastGoodScene)
 {
   scene->Update();
