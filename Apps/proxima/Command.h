@@ -29,6 +29,7 @@ struct Command
 };
 
 Command addRunCommand(CLI::App& parent);
+Command addViewCommand(CLI::App& parent);
 Command addPathCommand(CLI::App& parent);
 Command addTreeCommand(CLI::App& parent);
 Command addGenerateCommand(CLI::App& parent);

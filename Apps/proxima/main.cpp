@@ -18,6 +18,7 @@ using proxima::cli::Command;
 // Every subcommand, in the order `proxima --help` lists them.
 constexpr Command (*kCommands[])(CLI::App&) = {
   proxima::cli::addRunCommand,
+  proxima::cli::addViewCommand,
   proxima::cli::addPathCommand,
   proxima::cli::addTreeCommand,
   proxima::cli::addGenerateCommand,
