@@ -52,13 +52,26 @@ std::array<std::int16_t, 3> FalconDevice::countsFromAngles(const JointAngles& an
 
 std::array<std::int16_t, 3> FalconDevice::commandsFromTorques(const JointAngles& torques) const
 {
-  std::array<std::int16_t, 3> commands{};
-  const double limit = m_settings.maxCommand;
+  std::array<double, 3> values{};
+  double largest = 0.0;
+  std::array<std::int16_t, 3> commands{0, 0, 0};
   for (std::size_t i = 0; i < 3; ++i)
   {
-    const double value = std::round(torques[i] * m_settings.commandsPerNewtonMetre);
-    commands[i] = static_cast<std::int16_t>(std::isfinite(value) ? std::clamp(value, -limit, limit)
-                                                                 : 0.0);
+    values[i] = torques[i] * m_settings.commandsPerNewtonMetre;
+    // One torque that is not a number makes the force unknown: send none.
+    if (!std::isfinite(values[i]))
+    {
+      return commands;
+    }
+    largest = std::max(largest, std::abs(values[i]));
+  }
+  // Clamping one motor alone would turn the force on the grip; scaling all three keeps its
+  // direction (libnifalcon scales its torques so, for the same reason).
+  const double limit = m_settings.maxCommand;
+  const double scale = largest > limit ? limit / largest : 1.0;
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    commands[i] = static_cast<std::int16_t>(std::clamp(std::round(values[i] * scale), -limit, limit));
   }
   return commands;
 }

@@ -9,6 +9,7 @@
 #include "Devices/DeviceTransport.h"
 #include "Devices/FalconFrame.h"
 #include "Devices/FalconKinematics.h"
+#include "Devices/FalconSpecification.h"
 #include "Runtime/HapticDevice.h"
 
 #include <cstdint>
@@ -25,18 +26,23 @@ struct FalconSettings
   /// device already runs firmware (re-opened without a power cycle) and the upload is skipped.
   std::string firmwarePath;
   DeltaGeometry geometry;
-  /// Encoder counts to upper-arm angle: theta = thetaAtZero + counts / countsPerRadian. From
-  /// libnifalcon's example programs: counts -2000..2000 span the arm's 0..90 degrees.
-  double thetaAtZeroCounts = 0.785398163397448; // pi / 4
-  double countsPerRadian = 4000.0 / 1.5707963267948966;
-  /// Motor command units per N m of joint torque, and the largest command sent. Not from a
-  /// public source: calibrate on a device (Documentation/Devices.md).
-  double commandsPerNewtonMetre = 10000.0;
+  /// Encoder counts to arm angle: theta = thetaAtZeroCounts + counts / countsPerRadian
+  /// (FalconSpecification.h: 35 degrees at zero counts, 1572.6 counts per radian, from
+  /// libnifalcon's encoder wheel and capstan measurements).
+  double thetaAtZeroCounts = falcon::kThetaAtZeroCounts;
+  double countsPerRadian = falcon::kCountsPerArmRadian;
+  /// Motor command units per N m of joint torque toward a larger angle (libnifalcon's -10000;
+  /// negative: a positive command turns the arm toward fewer counts).
+  double commandsPerNewtonMetre = falcon::kCommandsPerNewtonMetre;
+  /// The largest command magnitude sent; larger commands are scaled down together, which keeps
+  /// the force's direction. Not from a public source (the frame carries 16 bits; libnifalcon
+  /// sets no limit): calibrate on a device (Documentation/Devices.md).
   int maxCommand = 4096;
-  /// Largest force the servo may ask for, in newtons.
+  /// Largest force the servo may ask for, in newtons. Not from a public source.
   double maxForce = 8.0;
-  /// World position = grip position (device frame, z up) - neutral + worldOffset, where
-  /// neutral is the grip with all arms at thetaAtZeroCounts.
+  /// World position = grip position (device frame: libnifalcon's, z along the delta axis
+  /// toward the user) - neutral + worldOffset, where neutral is the grip with all arms at
+  /// thetaAtZeroCounts (on the axis, 134.6 mm out from the base centre).
   Vec3 worldOffset;
   /// How long read() waits for the device's frame. Until every axis reports homed, samples are
   /// invalid (no position is trusted before homing).

@@ -1,12 +1,25 @@
-// The Falcon as a rotary delta robot: three motors on a base triangle, each turning an upper arm
-// by an angle theta; parallelogram lower arms of one length carry the grip, which only
-// translates. Forward kinematics solves the grip position from the three angles (the
-// intersection of three spheres), inverse kinematics each angle from a position, and the
-// Jacobian J = d(position)/d(angles) maps a force on the grip to motor torques, tau = J^T F.
-// The geometry is the Falcon's size, not its exact linkage (Documentation/Devices.md).
+// The Falcon's linkage as libnifalcon measures it (FalconSpecification.h), in our own
+// derivation. Three motors turn upper arms by angles theta; each upper arm carries, through a
+// short knee link, a parallelogram shin whose far end joins the grip through another short link;
+// the grip only translates.
+//
+// Arm i has its own frame: u = (cos phi_i, sin phi_i, 0), v = (-sin phi_i, cos phi_i, 0) (the
+// motor axis), w = z. Its hip is at H = r u + s v, its knee at K(theta) = H + a (cos theta u +
+// sin theta w), and the shin reaches the grip centre P at the joint Q = P + c u + f v. The two
+// short links (lengths d, e) turn about axes parallel to v, so they stay in the u-w plane and
+// point the way the shin leans in that plane. Writing D = Q - K, with D_v its component along v
+// and rho the length of the rest, the shin of length b requires
+//   (rho - (d + e))^2 + D_v^2 = b^2,  rho >= d + e:
+// Q lies on a torus about K, not a sphere, so the three arms are not a plain trilateration.
+// Forward kinematics solves it by repeated trilateration: for a guess of P, each torus touches
+// the sphere of radius b about K + (d + e) n (n: the unit u-w direction of D), and the three
+// spheres' intersection is the next guess; at the fixed point the torus equations hold exactly.
+// The inverse is closed-form per arm, and the Jacobian J = d(position)/d(angles) maps a force on
+// the grip to motor torques, tau = J^T F.
 #pragma once
 
 #include "Core/Vec3.h"
+#include "Devices/FalconSpecification.h"
 
 #include <array>
 #include <optional>
@@ -14,15 +27,20 @@
 namespace proxima
 {
 
+/// The linkage dimensions in metres and the arms' directions in radians; libnifalcon's letters
+/// in brackets.
 struct DeltaGeometry
 {
-  /// Distance from the base centre to each motor axis, and from the grip centre to each lower
-  /// arm's attachment, in metres.
-  double baseRadius = 0.055;
-  double effectorRadius = 0.015;
-  /// Upper (motor) arm and lower (parallelogram) arm lengths in metres.
-  double upperArm = 0.060;
-  double lowerArm = 0.1025;
+  double upperArm = falcon::kUpperArm;                    // [a]
+  double lowerArm = falcon::kLowerArm;                    // [b]
+  double kneeLink = falcon::kKneeLink;                    // [e]
+  double effectorLink = falcon::kEffectorLink;            // [d]
+  double effectorRadial = falcon::kEffectorRadial;        // [c]
+  double effectorAlongAxis = falcon::kEffectorAlongAxis;  // [f]
+  double hipRadial = falcon::kHipRadial;                  // [r]
+  double hipAlongAxis = falcon::kHipAlongAxis;            // [s]
+  std::array<double, 3> armAngles{falcon::kArmAngles[0], falcon::kArmAngles[1],
+                                  falcon::kArmAngles[2]}; // [phy]
 };
 
 using JointAngles = std::array<double, 3>;
@@ -34,28 +52,42 @@ class DeltaKinematics
 public:
   explicit DeltaKinematics(const DeltaGeometry& geometry = DeltaGeometry{});
 
-  /// Grip position for the three upper-arm angles (radians, 0 = arm horizontal, positive =
-  /// down); the solution below the base. nullopt where the arms cannot meet.
+  /// Grip centre for the three arm angles (radians, from each arm's u axis toward +z, the side
+  /// the grip is on), in the base frame (z along the delta axis, toward the user). nullopt where
+  /// the arms cannot meet.
   std::optional<Vec3> forward(const JointAngles& angles) const;
-  /// Angles that put the grip at `position`, elbows out; nullopt outside the reachable space.
+  /// Angles that put the grip centre at `position`, knees out; nullopt outside the reachable
+  /// space.
   std::optional<JointAngles> inverse(const Vec3& position) const;
   /// d(position)/d(angles) at `angles`; nullopt at a singular pose.
   std::optional<Matrix3> jacobian(const JointAngles& angles) const;
-  /// Motor torques (N m) that balance `force` (N) on the grip: tau = J^T F. Zero at a singular
-  /// pose, where no finite torques would do.
+  /// Motor torques (N m, toward larger angles) that balance `force` (N) on the grip:
+  /// tau = J^T F. Zero at a singular pose, where no finite torques would do.
   JointAngles torques(const JointAngles& angles, const Vec3& force) const;
 
   const DeltaGeometry& geometry() const { return m_geometry; }
 
 private:
-  /// Centre of the sphere the grip centre must lie on for arm i at angle theta (the elbow,
-  /// shifted in by the effector radius), and its derivative in theta.
-  Vec3 sphereCentre(int arm, double theta) const;
-  Vec3 sphereCentreDerivative(int arm, double theta) const;
+  struct ArmFrame
+  {
+    Vec3 u;
+    Vec3 v;
+    Vec3 hip;
+    /// Q - P: where the shin joins the grip, relative to the grip centre.
+    Vec3 effectorOffset;
+  };
+
+  Vec3 knee(int arm, double theta) const;
+  Vec3 kneeDerivative(int arm, double theta) const;
+  /// Centre of the sphere of radius b that touches arm `arm`'s torus where the grip centre
+  /// `position` is (the knee, moved out along the shin's lean by the two short links, and back
+  /// by the effector offset).
+  Vec3 sphereCentre(int arm, const Vec3& kneePoint, const Vec3& position) const;
+  /// Distance of `position` from arm `arm`'s torus constraint (zero on it), in metres.
+  double constraintError(int arm, double theta, const Vec3& position) const;
 
   DeltaGeometry m_geometry;
-  std::array<double, 3> m_cos{};
-  std::array<double, 3> m_sin{};
+  std::array<ArmFrame, 3> m_arms{};
 };
 
 } // namespace proxima

@@ -7,6 +7,7 @@
 
 #include "Devices/FalconFrame.h"
 #include "Devices/FalconKinematics.h"
+#include "Devices/FalconSpecification.h"
 
 #include <cstdint>
 #include <deque>
@@ -56,8 +57,8 @@ public:
   std::vector<std::pair<std::uint8_t, std::uint16_t>> controlRequests() const;
 
   /// Counts per radian and angle at zero counts, as the driver's defaults.
-  double countsPerRadian = 4000.0 / 1.5707963267948966;
-  double thetaAtZeroCounts = 0.785398163397448;
+  double countsPerRadian = falcon::kCountsPerArmRadian;
+  double thetaAtZeroCounts = falcon::kThetaAtZeroCounts;
 
 private:
   void handleFrame(const FalconFrameBytes& bytes);

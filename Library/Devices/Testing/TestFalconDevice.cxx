@@ -10,8 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 namespace proxima
 {
@@ -156,6 +158,39 @@ TEST_F(FalconDeviceTest, HomesThenReportsTheGripPosition)
   EXPECT_NE(frames.front().info & kFalconLedRed, 0);
 }
 
+TEST_F(FalconDeviceTest, CountsTurnIntoArmAnglesThroughTheEncoderAndCapstan)
+{
+  // libnifalcon's encoder wheel has 320 slots, read in quadrature: 1280 counts per motor turn.
+  // The 14.25 mm shaft drives the arm's 110 mm sector, so a motor turn turns the arm by
+  // 360 degrees x 14.25 / 110; zero counts is 35 degrees.
+  auto device = makeDevice();
+  const double degree = std::numbers::pi / 180.0;
+  const JointAngles zero = device->anglesFromCounts({0, 0, 0});
+  const JointAngles turned = device->anglesFromCounts({1280, -1280, 2560});
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    EXPECT_NEAR(zero[i], 35.0 * degree, 1e-12);
+  }
+  const double perTurn = 360.0 * degree * 14.25 / 110.0;
+  EXPECT_NEAR(turned[0] - zero[0], perTurn, 1e-12);
+  EXPECT_NEAR(turned[1] - zero[1], -perTurn, 1e-12);
+  EXPECT_NEAR(turned[2] - zero[2], 2.0 * perTurn, 1e-12);
+  EXPECT_EQ(device->countsFromAngles(turned), (std::array<std::int16_t, 3>{1280, -1280, 2560}));
+}
+
+TEST_F(FalconDeviceTest, SaturatedCommandsKeepTheirRatios)
+{
+  // libnifalcon's sign and scale, -10000 commands per N m; past the limit all three shrink by
+  // one factor, so the force on the grip keeps its direction.
+  auto device = makeDevice();
+  const auto small = device->commandsFromTorques({0.01, -0.02, 0.03});
+  EXPECT_EQ(small, (std::array<std::int16_t, 3>{-100, 200, -300}));
+  const auto large = device->commandsFromTorques({1.0, -0.5, 0.25});
+  EXPECT_EQ(large, (std::array<std::int16_t, 3>{-4096, 2048, -1024}));
+  const auto broken = device->commandsFromTorques({1.0, std::nan(""), 0.0});
+  EXPECT_EQ(broken, (std::array<std::int16_t, 3>{0, 0, 0}));
+}
+
 TEST_F(FalconDeviceTest, ForceBecomesTheJacobianTransposeMotorCommands)
 {
   auto device = makeDevice();
@@ -181,10 +216,12 @@ TEST_F(FalconDeviceTest, ForceBecomesTheJacobianTransposeMotorCommands)
     const Vec3 column = (*kinematics.forward(plus) - *kinematics.forward(minus)) / 2e-6;
     tau[joint] = dot(column, force);
   }
+  // libnifalcon's scale and sign: -10000 commands per N m; this force needs no saturation.
   for (std::size_t joint = 0; joint < 3; ++joint)
   {
-    const double expected = std::round(tau[joint] * 10000.0);
-    EXPECT_NEAR(sent.values[joint], std::clamp(expected, -4096.0, 4096.0), 1.0) << joint;
+    const double expected = std::round(-10000.0 * tau[joint]);
+    ASSERT_LT(std::abs(expected), 4096.0) << joint;
+    EXPECT_NEAR(sent.values[joint], expected, 1.0) << joint;
     EXPECT_NE(sent.values[joint], 0);
   }
   EXPECT_EQ(sent.info & kFalconHomingMode, 0);
