@@ -1,4 +1,5 @@
-// `proxima run`: plays a scripted finger path through a mesh or a scene file in lockstep mode and
+// `proxima run`: plays a scripted finger path through a mesh or a scene file in lockstep mode (or,
+// with --realtime, through the threaded runtime on the real clock, as a real device needs) and
 // writes the trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
 #include "Command.h"
 #include "DeviceChoice.h"
@@ -11,14 +12,17 @@
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/RunSummary.h"
+#include "Runtime/ThreadedRuntime.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <thread>
 #include <unistd.h>
 
 namespace proxima::cli
@@ -31,6 +35,7 @@ struct RunOptions
   std::string out;
   std::string summary;
   DeviceChoiceOptions device;
+  bool realtime = false;
 };
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -88,18 +93,79 @@ void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
   json["viscosity_N_s_per_m"] = material.viscosity;
 }
 
+nlohmann::ordered_json loopJson(const LoopStatistics& statistics)
+{
+  return {{"ticks", statistics.ticks},
+          {"missed_deadlines", statistics.missedDeadlines},
+          {"over_budget_ticks", statistics.overBudgetTicks},
+          {"jitter_us",
+           {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
+            {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
+            {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}}},
+          {"max_work_us", static_cast<double>(statistics.maxWorkNanoseconds) / 1e3}};
+}
+
+/// Plays the path through the threaded runtime on the real clock: the servo and proxy loops on
+/// their own threads, as with a real device. One trace row per proxy update; the summary gains
+/// the loops' statistics.
+void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene> scene,
+                 const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
+                 const std::function<void(const TickRecord&)>& onTick,
+                 nlohmann::ordered_json& report)
+{
+  const SceneOptions& shared = options.scene;
+  RuntimeSettings settings;
+  settings.servoRate = shared.rate;
+  settings.recordTicks = numTicks;
+  settings.duration = fingerPath.endTime();
+  ThreadedRuntime runtime(device, servoParameters(shared), settings);
+  runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front());
+  std::string message;
+  if (!runtime.start(message))
+  {
+    throw std::runtime_error(message);
+  }
+  if (message.find("refused") != std::string::npos)
+  {
+    // The run goes on at normal priority; the summary's "scheduling" says so too.
+    std::cerr << "proxima run: " << message << "\n";
+  }
+  Progress progress(numTicks);
+  while (!runtime.finished())
+  {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    progress.update(runtime.latestState().tick);
+  }
+  runtime.stop();
+  progress.update(numTicks);
+  progress.finish();
+  for (const TickRecord& record : runtime.records())
+  {
+    onTick(record);
+  }
+  report["scheduling"] = message;
+  report["servo"] = loopJson(runtime.servoStatistics());
+  report["proxy"] = loopJson(runtime.proxyStatistics());
+}
+
 int run(const RunOptions& options)
 {
   const SceneOptions& shared = options.scene;
+  if (options.realtime && !(shared.rate >= 1000.0 && shared.rate <= 10000.0))
+  {
+    throw InputError("--rate", "must be from 1000 to 10000 Hz with --realtime (the servo loop's range)");
+  }
   const auto readStart = std::chrono::steady_clock::now();
-  const LoadedScene loaded = loadScene(shared);
+  LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
   const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
-  const CollisionScene& scene = *loaded.scene;
+  checkPathStart(shared, loaded, fingerPath);
+  // Shared from here on: the threaded runtime keeps the scene for as long as its loops use it.
+  const std::shared_ptr<const CollisionScene> sceneHolder(std::move(loaded.scene));
+  const CollisionScene& scene = *sceneHolder;
 
   ProxySolver solver;
   solver.setScene(&scene, proxyParameters(shared));
-  checkPathStart(shared, loaded, fingerPath);
   solver.resetProxy(fingerPath.positions.front());
 
   LockstepSettings settings;
@@ -111,18 +177,31 @@ int run(const RunOptions& options)
   RunDevice device(options.device, fingerPath, settings.numTicks);
   TraceWriter trace(options.out);
   RunSummary summary;
-  Progress progress(settings.numTicks);
   const auto runStart = std::chrono::steady_clock::now();
-  runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
-    trace.write(record);
-    summary.add(record);
-    if ((record.tick & 1023u) == 0)
-    {
-      progress.update(record.tick);
-    }
-  });
-  progress.update(settings.numTicks);
-  progress.finish();
+  nlohmann::ordered_json realtimeReport;
+  if (options.realtime)
+  {
+    runRealtime(options, sceneHolder, fingerPath, settings.numTicks, device.device(),
+                [&](const TickRecord& record) {
+                  trace.write(record);
+                  summary.add(record);
+                },
+                realtimeReport);
+  }
+  else
+  {
+    Progress progress(settings.numTicks);
+    runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
+      trace.write(record);
+      summary.add(record);
+      if ((record.tick & 1023u) == 0)
+      {
+        progress.update(record.tick);
+      }
+    });
+    progress.update(settings.numTicks);
+    progress.finish();
+  }
   trace.close();
   device.finish();
   const double runMilliseconds = millisecondsSince(runStart);
@@ -152,6 +231,7 @@ int run(const RunOptions& options)
   json["skin_m"] = solver.skin();
   json["stiffness_N_per_m"] = shared.stiffness;
   json["rate_hz"] = shared.rate;
+  json["mode"] = options.realtime ? "realtime" : "lockstep";
   if (shared.scene.empty())
   {
     // The keys of a one-mesh run, as before scene files.
@@ -214,6 +294,10 @@ int run(const RunOptions& options)
   json["read_ms"] = readMilliseconds;
   json["tree_build_ms"] = loaded.treeBuildMilliseconds;
   json["run_ms"] = runMilliseconds;
+  if (options.realtime)
+  {
+    json["realtime"] = std::move(realtimeReport);
+  }
 
   const std::string text = json.dump(2);
   if (!options.summary.empty())
@@ -241,6 +325,9 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--out", options->out, "Trace CSV to write (trace v1)")->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
   addDeviceOptions(*app, options->device);
+  app->add_flag("--realtime", options->realtime,
+                "Run on the real clock through the threaded runtime (servo and proxy threads at "
+                "--rate, 1000 to 10000 Hz), as a real device needs; the default is lockstep");
   addSceneOptionsAfterPath(*app, options->scene);
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return run(*options); }};
