@@ -3,10 +3,12 @@
 // planes, the friction cones and the force, with the loops' statistics. `--screenshot PNG`
 // renders offscreen at a chosen moment of the path and exits instead.
 #include "Command.h"
+#include "DeviceChoice.h"
 #include "SceneOptions.h"
 
 #include "IO/FingerPathFile.h"
 #include "IO/InputError.h"
+#include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "VTK/ScenePolyData.h"
 #include "VTK/vtkHapticRenderer.h"
@@ -49,6 +51,7 @@ namespace
 struct ViewOptions
 {
   SceneOptions scene;
+  DeviceChoiceOptions device;
   std::string screenshot;
   double at = -1.0;
   int width = 800;
@@ -135,15 +138,19 @@ int view(const ViewOptions& options)
     }
   }
 
-  vtkNew<vtkHapticRenderer> haptics;
-  haptics->SetCollisionScene(scene);
   // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
   FingerPath shifted = fingerPath;
   for (double& time : shifted.times)
   {
     time -= fingerPath.startTime();
   }
-  haptics->SetFingerPath(shifted);
+  // The finger's device, as for `proxima run --device` (sim plays the path); made before the
+  // renderer, so that it outlives the haptic threads.
+  RunDevice device(options.device, shifted,
+                   ticksCovering(0.0, pathSeconds + 0.5, shared.rate));
+  vtkNew<vtkHapticRenderer> haptics;
+  haptics->SetCollisionScene(scene);
+  haptics->SetDevice(&device.device());
   haptics->SetProxyStart(fingerPath.positions.front().x, fingerPath.positions.front().y,
                          fingerPath.positions.front().z);
   haptics->SetProxyRadius(shared.radius);
@@ -223,6 +230,7 @@ int view(const ViewOptions& options)
     writer->SetFileName(options.screenshot.c_str());
     writer->SetInputConnection(capture->GetOutputPort());
     writer->Write();
+    device.finish();
     std::printf("%s: %dx%d at t = %.4f s, %d contacts%s, force %.4f N\n",
                 options.screenshot.c_str(), options.width, options.height, state.time,
                 state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
@@ -276,6 +284,7 @@ int view(const ViewOptions& options)
   window->Render();
   interactor->Start();
   haptics->Stop();
+  device.finish();
   return kExitOk;
 }
 } // namespace
@@ -303,6 +312,7 @@ Command addViewCommand(CLI::App& parent)
                   "Force arrow length in metres per newton (default: 30 proxy radii at "
                   "--max-force)")
     ->check(CLI::PositiveNumber);
+  addDeviceOptions(*app, options->device);
   addSceneOptionsAfterPath(*app, options->scene);
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return view(*options); }};
