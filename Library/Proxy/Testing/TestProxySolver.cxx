@@ -436,6 +436,51 @@ TEST(ProxySolverFound, ConvexEdgeConvergesWithinTheIterationCap)
   rig.expectClean("found-zigzag-icosphere");
 }
 
+TEST(ProxySolverFound, FingerAtTheApexOfANarrowConcaveCornerConverges)
+{
+  // Stress seed 6010 (StressPlanes.ConcaveCornersEnteredFromASphereOfDirections): a trihedral
+  // corner too narrow for the proxy to reach its apex; the finger 5 um from the apex, the proxy
+  // touching only the apex corner. The Hessian across the corner's sphere vanishes there, and
+  // the plain slides crept along the sphere: 2752 iterations, the cap ending 0.8 mm short.
+  TriangleSoup corner;
+  corner.points = {{0, 0, 0},
+                   {-0.007307013309434083, -0.049439088928338176, -0.00154403446581447},
+                   {-0.0006428439240449843, 0.019032608987268225, -0.046231445433028324},
+                   {0.027293161911775318, -0.00993007124619735, -0.04069984026876595}};
+  corner.triangles = {{0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  Rig rig(corner, {-0.0012556588587140172, -0.00068060738288177138, -0.0019432438991826028});
+  const ProxyTickResult r =
+    rig.step({-1.0777595127525665e-07, 2.0409831476357046e-06, 4.7842233758979384e-06});
+  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_LE(r.iterations, 16);
+  rig.expectClean("found-narrow-corner-apex");
+}
+
+TEST(ProxySolverFound, AbsurdlyFarFingerNeitherTunnelsNorStrandsTheProxy)
+{
+  // Stress suite (StressFingerInput.AbsurdlyFarFiniteFingers): a finger 1e200 m below a 3 cm
+  // sphere let the proxy through it (the swept-sphere quadratic overflowed), and a proxy sent
+  // 1e30 m up came back 2 mm inside the sphere (a move of 1e30 m rounds by 1e14 m). The solver
+  // now seeks such a finger at its reach, 16 (M + L) from the scene's centre.
+  TriangleSoup sphere = makeIcosphere(3, 0.03);
+  sphere.pointNormals.clear();
+  const Vec3 start{0, 0, 0.05};
+  Rig rig(sphere, start);
+  for (const double far : {1e3, 1e30, 1e200, 1e300, 1.7e308})
+  {
+    for (const Vec3& direction : {Vec3{0, 0, -1}, Vec3{0.6, 0, -0.8}, Vec3{0, 0, 1}})
+    {
+      const ProxyTickResult away = rig.step(direction * far);
+      EXPECT_TRUE(isFinite(away.proxy));
+      EXPECT_LE(distance(away.proxy, rig.solver().reachCenter()),
+                rig.solver().reachRadius() * (1.0 + 1e-12));
+      rig.step(start);
+    }
+  }
+  EXPECT_LT(distance(rig.solver().proxy(), start), 1e-12); // back where it began, to rounding
+  rig.expectClean("found-absurd-fingers");
+}
+
 TEST(ProxySolverLimits, IterationCapIsReported)
 {
   // One move stage cannot both reach the floor and slide into the corner.
