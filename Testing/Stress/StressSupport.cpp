@@ -193,6 +193,20 @@ CaseSeeds caseSeeds(std::uint64_t defaultBase, int defaultCount)
   return seeds;
 }
 
+void runCases(std::uint64_t defaultBase, int defaultCount,
+              const std::function<void(Random&, StressCase&)>& make)
+{
+  const CaseSeeds seeds = caseSeeds(defaultBase, defaultCount);
+  for (int k = 0; k < seeds.count; ++k)
+  {
+    StressCase c;
+    c.seed = seeds.base + static_cast<std::uint64_t>(k);
+    Random random(c.seed);
+    make(random, c);
+    runStressCase(c);
+  }
+}
+
 oracle::InvariantStats runStressCase(const StressCase& c)
 {
   TriangleMesh mesh;

@@ -18,6 +18,7 @@
 #include "Runtime/FingerPath.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <memory>
@@ -86,6 +87,12 @@ struct StressCase
   std::map<std::uint64_t, Vec3> fingerOverrides;
   double rate = 1000.0;
 };
+
+/// The cases of one test: for each seed of caseSeeds(defaultBase, defaultCount), `make` builds
+/// the case from a generator seeded with it (the case's seed is set already), and the case runs
+/// through runStressCase.
+void runCases(std::uint64_t defaultBase, int defaultCount,
+              const std::function<void(Random&, StressCase&)>& make);
 
 /// Runs the case tick by tick under the oracle and fails the current test for every violation;
 /// on a failure also prints the seed and writes `<build>/stress-failures/<name>-<seed>.obj` and

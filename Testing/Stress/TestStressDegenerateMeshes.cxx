@@ -115,13 +115,7 @@ FingerPath pressesAndCircle(Random& random, double half, double radius, double r
 
 TEST(StressDegenerateMeshes, SliverFansToAspect1e12)
 {
-  const CaseSeeds seeds = caseSeeds(1000, 12);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(1000, 12, [&](Random& random, StressCase& c) {
     c.proxy.radius = 0.001;
     const double half = 0.02;
     // Flat, or a shallow tent (convex), or a shallow funnel (concave) at the centre.
@@ -135,19 +129,12 @@ TEST(StressDegenerateMeshes, SliverFansToAspect1e12)
       // Free space is above; a funnel's centre is below the rim: lower the path with it.
       c.path = transform(c.path, Rotation{}, Vec3{0, 0, lift});
     }
-    runStressCase(c);
-  }
+  });
 }
 
 TEST(StressDegenerateMeshes, LooseSliverSoup)
 {
-  const CaseSeeds seeds = caseSeeds(2000, 6);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(2000, 6, [&](Random& random, StressCase& c) {
     c.name = "sliver-soup";
     c.proxy.radius = random.logUniform(2e-4, 2e-3);
     c.soup = sliverSoup(random, 60, 0.04);
@@ -155,8 +142,7 @@ TEST(StressDegenerateMeshes, LooseSliverSoup)
     box.expand(Vec3{-0.025, -0.025, -0.025});
     box.expand(Vec3{0.025, 0.025, 0.025});
     c.path = randomWander(random, box, 8, random.logUniform(0.02, 2.0), c.rate);
-    runStressCase(c);
-  }
+  });
 }
 
 // Zero-area and duplicated triangles added to a closed icosphere: each of a random subset of its
@@ -164,13 +150,7 @@ TEST(StressDegenerateMeshes, LooseSliverSoup)
 // zero-area neighbour on one of its edges or corners.
 TEST(StressDegenerateMeshes, ZeroAreaAndDuplicatedTrianglesOnASphere)
 {
-  const CaseSeeds seeds = caseSeeds(3000, 6);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(3000, 6, [&](Random& random, StressCase& c) {
     c.name = "sphere-with-degenerates";
     c.proxy.radius = 0.001;
     TriangleSoup soup = makeIcosphere(static_cast<std::uint32_t>(random.integer(2, 3)), 0.02);
@@ -225,8 +205,7 @@ TEST(StressDegenerateMeshes, ZeroAreaAndDuplicatedTrianglesOnASphere)
     const Rotation rotation = Rotation::random(random);
     c.path = transform(concatenatePaths(parts, c.rate), rotation);
     c.soup = transform(std::move(c.soup), rotation);
-    runStressCase(c);
-  }
+  });
 }
 
 } // namespace

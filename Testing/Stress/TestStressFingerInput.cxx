@@ -34,13 +34,7 @@ Aabb sceneBox()
 
 TEST(StressFingerInput, JumpsOfAMetre)
 {
-  const CaseSeeds seeds = caseSeeds(9000, 6);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(9000, 6, [&](Random& random, StressCase& c) {
     c.name = "jumps";
     c.proxy.radius = 0.001;
     c.soup = jumpScene();
@@ -58,21 +52,14 @@ TEST(StressFingerInput, JumpsOfAMetre)
         c.fingerOverrides[t] = there;
       }
     }
-    runStressCase(c);
-  }
+  });
 }
 
 TEST(StressFingerInput, NaNAndInfinityAreRefused)
 {
-  const CaseSeeds seeds = caseSeeds(9100, 4);
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(9100, 4, [&](Random& random, StressCase& c) {
     c.name = "nan-and-infinity";
     c.proxy.radius = 0.001;
     c.soup = jumpScene();
@@ -103,21 +90,14 @@ TEST(StressFingerInput, NaNAndInfinityAreRefused)
       }
       c.fingerOverrides[tick] = finger;
     }
-    runStressCase(c);
-  }
+  });
 }
 
 // Finite but far beyond any device: the proxy heads off toward it (nothing is in the way, or the
 // scene stops it) and must come back intact; forces stay finite and are clamped.
 TEST(StressFingerInput, AbsurdlyFarFiniteFingers)
 {
-  const CaseSeeds seeds = caseSeeds(9200, 4);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(9200, 4, [&](Random& random, StressCase& c) {
     c.name = "absurd-fingers";
     c.proxy.radius = 0.001;
     c.soup = jumpScene();
@@ -129,8 +109,7 @@ TEST(StressFingerInput, AbsurdlyFarFiniteFingers)
       const auto tick = static_cast<std::uint64_t>(random.integer(1, ticks - 1));
       c.fingerOverrides[tick] = random.direction() * random.logUniform(1e30, 1e300);
     }
-    runStressCase(c);
-  }
+  });
 }
 
 } // namespace

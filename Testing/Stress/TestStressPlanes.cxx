@@ -53,13 +53,7 @@ TriangleSoup crease(double half, double angle, bool crossing)
 
 TEST(StressPlanes, NearParallelCreasesDownTo1e12Radians)
 {
-  const CaseSeeds seeds = caseSeeds(4000, 16);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(4000, 16, [&](Random& random, StressCase& c) {
     c.proxy.radius = 0.001;
     const double half = 0.02;
     const bool crossing = random.uniform() < 0.3;
@@ -77,19 +71,12 @@ TEST(StressPlanes, NearParallelCreasesDownTo1e12Radians)
     const Rotation rotation = Rotation::random(random);
     c.soup = transform(crease(half, angle, crossing), rotation);
     c.path = transform(acrossTheCrease(random, half, c.proxy.radius, c.rate), rotation);
-    runStressCase(c);
-  }
+  });
 }
 
 TEST(StressPlanes, ApexesAndFunnelsOfFourToSixteenFaces)
 {
-  const CaseSeeds seeds = caseSeeds(5000, 16);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(5000, 16, [&](Random& random, StressCase& c) {
     c.proxy.radius = 0.001;
     const int sides = random.integer(4, 16);
     const double base = 0.02;
@@ -116,8 +103,7 @@ TEST(StressPlanes, ApexesAndFunnelsOfFourToSixteenFaces)
     const Rotation rotation = Rotation::random(random);
     c.soup = transform(scenes::makePyramid(sides, base, height), rotation);
     c.path = transform(concatenatePaths(parts, c.rate), rotation);
-    runStressCase(c);
-  }
+  });
 }
 
 // A trihedral cone: free space {x : n_i . x >= 0}, walls the three faces between its edge rays,
@@ -171,13 +157,7 @@ TriangleSoup concaveCorner(Random& random, double length, Vec3 normals[3])
 
 TEST(StressPlanes, ConcaveCornersEnteredFromASphereOfDirections)
 {
-  const CaseSeeds seeds = caseSeeds(6000, 16);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(6000, 16, [&](Random& random, StressCase& c) {
     c.name = "concave-corner";
     c.proxy.radius = 0.001;
     Vec3 normals[3];
@@ -203,8 +183,7 @@ TEST(StressPlanes, ConcaveCornersEnteredFromASphereOfDirections)
                                    1.0, c.rate));
     c.path = concatenatePaths(parts, c.rate);
     c.start = inside * 0.02;
-    runStressCase(c);
-  }
+  });
 }
 
 } // namespace

@@ -66,13 +66,7 @@ FingerPath pathsFor(const Aabb& bounds, double radius, double rate, bool jabs = 
 
 TEST(StressScales, CoordinatesOffsetFrom1e6To1e4Metres)
 {
-  const CaseSeeds seeds = caseSeeds(7000, 12);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(7000, 12, [&](Random& random, StressCase& c) {
     c.proxy.radius = 0.001;
     std::string scene;
     TriangleSoup soup = someScene(random, scene);
@@ -86,19 +80,12 @@ TEST(StressScales, CoordinatesOffsetFrom1e6To1e4Metres)
     const Rotation rotation = Rotation::random(random);
     c.soup = transform(std::move(soup), rotation, offset);
     c.path = transform(path, rotation, offset);
-    runStressCase(c);
-  }
+  });
 }
 
 TEST(StressScales, ProxyRadiiFrom1e5To1e1Metres)
 {
-  const CaseSeeds seeds = caseSeeds(8000, 12);
-  for (int k = 0; k < seeds.count; ++k)
-  {
-    const std::uint64_t seed = seeds.base + k;
-    Random random(seed);
-    StressCase c;
-    c.seed = seed;
+  runCases(8000, 12, [&](Random& random, StressCase& c) {
     c.proxy.radius = random.logUniform(1e-5, 1e-1);
     // The faceted sphere only under proxies smaller than a facet row: a proxy as big as the
     // sphere rolls over many facets a tick (up to the iteration cap), and the oracle replays every
@@ -115,8 +102,7 @@ TEST(StressScales, ProxyRadiiFrom1e5To1e1Metres)
     const Rotation rotation = Rotation::random(random);
     c.soup = transform(std::move(soup), rotation);
     c.path = transform(path, rotation);
-    runStressCase(c);
-  }
+  });
 }
 
 } // namespace
