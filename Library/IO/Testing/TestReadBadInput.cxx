@@ -195,6 +195,10 @@ TEST_F(ReadBadInput, NanInAsciiStlAndPly)
                                 "property list uchar int vertex_indices\nend_header\n";
   expectRefused(write("nan.ply", plyHeader + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n"),
                 "point 1 has a non-finite coordinate (1, inf, 0)");
+  // Found by fuzzing (Testing/Fuzz/Findings/FuzzMeshReader-ply): an ASCII list length far
+  // beyond its uchar type sized the index buffer (2.7 GB) before a value was read.
+  expectRefused(write("list-length.ply", plyHeader + "0 0 0\n1 0 0\n0 1 0\n333333333 0 1\n"),
+                "list length 333333333 is more than the file has bytes left");
   expectRefused(write("index.ply", plyHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"),
                 "face 0 refers to vertex 9, out of range (the file has 3 vertices)");
   expectRefused(write("word.ply", plyHeader + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"),
