@@ -5,9 +5,13 @@
 find_package(Threads REQUIRED)
 
 if(PROXIMA_BUILD_APPS)
-  # Mesh readers (STL, OBJ, PLY, VTP, glTF) and, later, the pipeline and rendering.
-  find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel IOGeometry IOPLY IOXML
-               FiltersCore)
+  # Mesh readers (STL, OBJ, PLY, VTP, glTF); the haptic pipeline of Library/VTK (filters, scene,
+  # representations) and its rendering, offscreen image tests (IOImage, ImagingCore's
+  # vtkImageDifference) and the viewer's window (InteractionStyle, RenderingFreeType for text).
+  find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel CommonExecutionModel
+               CommonMath CommonTransforms IOGeometry IOPLY IOXML IOImage FiltersCore
+               FiltersSources FiltersGeneral ImagingCore RenderingCore RenderingOpenGL2
+               InteractionStyle RenderingFreeType)
   # OFF reading and mesh preparation (welding, normals with a feature angle).
   find_package(OpenMesh REQUIRED)
   # Texture images (PNG, JPEG, TIFF, OpenEXR) for the IO layer, and to write test images.

@@ -29,8 +29,10 @@ struct Command
 };
 
 Command addRunCommand(CLI::App& parent);
+Command addViewCommand(CLI::App& parent);
 Command addPathCommand(CLI::App& parent);
 Command addTreeCommand(CLI::App& parent);
 Command addGenerateCommand(CLI::App& parent);
+Command addDevicesCommand(CLI::App& parent);
 
 } // namespace proxima::cli

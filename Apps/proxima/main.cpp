@@ -18,9 +18,11 @@ using proxima::cli::Command;
 // Every subcommand, in the order `proxima --help` lists them.
 constexpr Command (*kCommands[])(CLI::App&) = {
   proxima::cli::addRunCommand,
+  proxima::cli::addViewCommand,
   proxima::cli::addPathCommand,
   proxima::cli::addTreeCommand,
   proxima::cli::addGenerateCommand,
+  proxima::cli::addDevicesCommand,
 };
 } // namespace
 

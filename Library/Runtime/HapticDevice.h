@@ -1,7 +1,8 @@
 // The device interface of the runtime, in SI units: where the finger is, and the force to apply.
 // Virtual by design: it sits at the servo loop's edge, outside the proxy update. Errors are
 // values: a sample says whether it holds a position and whether the device is still there; no
-// call throws.
+// call throws. `read` is the device's deterministic step: a device driven by a recording or an
+// emulator gives the same samples for the same sequence of times.
 #pragma once
 
 #include "Core/Aabb.h"
@@ -49,6 +50,8 @@ public:
   virtual void writeForce(const Vec3& force, double time) = 0;
   /// The device's workspace and force limit; the servo clamps to the smaller of this and its own.
   virtual DeviceLimits limits() const { return DeviceLimits{}; }
+  /// The device's kind as `proxima run --device` names it (sim, replay, spacemouse, falcon).
+  virtual const char* name() const { return "device"; }
 };
 
 } // namespace proxima

@@ -1,5 +1,7 @@
 #include "Runtime/LockstepRuntime.h"
 
+#include "Runtime/ServoForce.h"
+
 #include <cmath>
 
 namespace proxima
@@ -19,12 +21,12 @@ void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDe
                  const ServoParameters& parameters,
                  const std::function<void(const TickRecord&)>& onTick)
 {
-  Vec3 lastForce;
+  ServoForce servo(parameters, device.limits());
   for (std::uint64_t tick = 0; tick < settings.numTicks; ++tick)
   {
     // Time from the tick count, not by accumulating 1/rate: no drift over millions of ticks.
     const double time = settings.startTime + static_cast<double>(tick) / settings.rate;
-    onTick(runServoTick(tick, time, solver, device, parameters, lastForce));
+    onTick(runServoTick(tick, time, solver, device, servo));
   }
 }
 

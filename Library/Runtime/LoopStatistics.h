@@ -20,13 +20,16 @@ struct LoopStatistics
 
   double rate = 0.0;
   std::uint64_t ticks = 0;
-  /// Ticks that started after their deadline had already passed (the loop then skips ahead to
-  /// the next deadline rather than bunching ticks).
+  /// Deadlines missed: ticks that woke more than half a period after their deadline, plus the
+  /// deadlines a late loop skipped (it then goes on from the next deadline in the future rather
+  /// than bunching ticks).
   std::uint64_t missedDeadlines = 0;
   std::int64_t minPeriodNanoseconds = 0;
   std::int64_t maxPeriodNanoseconds = 0;
-  /// Longest time a tick's work took (from wake-up to done), in nanoseconds.
+  /// Longest time a tick's work took (from wake-up to done), in nanoseconds, and the ticks whose
+  /// work took longer than one nominal period (over budget).
   std::int64_t maxWorkNanoseconds = 0;
+  std::uint64_t overBudgetTicks = 0;
   std::array<std::uint64_t, kBins> periodHistogram{};
 
   /// Quantile q in [0, 1] of the tick period in nanoseconds, at the bin's upper edge.
@@ -40,10 +43,13 @@ class LoopStatisticsRecorder
 {
 public:
   void reset(double rate);
-  /// A tick started `periodNanoseconds` after the previous one and did `workNanoseconds` of work;
-  /// `missed`: it started after its deadline.
-  void record(std::int64_t periodNanoseconds, std::int64_t workNanoseconds, bool missed);
+  /// A tick started `periodNanoseconds` after the previous one; `missed`: it started more than
+  /// half a period after its deadline.
+  void record(std::int64_t periodNanoseconds, bool missed);
+  /// A tick's work took `workNanoseconds`.
   void recordWork(std::int64_t workNanoseconds);
+  /// Deadlines that passed while the loop was late, whose ticks were skipped.
+  void recordMissed(std::uint64_t count);
   LoopStatistics snapshot() const;
 
 private:
@@ -53,6 +59,7 @@ private:
   std::atomic<std::int64_t> m_minPeriod{0};
   std::atomic<std::int64_t> m_maxPeriod{0};
   std::atomic<std::int64_t> m_maxWork{0};
+  std::atomic<std::uint64_t> m_overBudget{0};
   std::array<std::atomic<std::uint64_t>, LoopStatistics::kBins> m_histogram{};
 };
 

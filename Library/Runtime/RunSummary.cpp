@@ -16,6 +16,8 @@ void RunSummary::add(const TickRecord& record)
   m_refusedTicks += record.fingerRefused ? 1 : 0;
   m_overflowTicks += record.contactOverflow ? 1 : 0;
   m_clampedTicks += record.forceClamped ? 1 : 0;
+  m_fadingTicks += record.fading ? 1 : 0;
+  m_deviceLostTicks += record.deviceLost ? 1 : 0;
   m_stuckTicks += record.stuck ? 1 : 0;
   m_frictionLimitedTicks += record.frictionLimited ? 1 : 0;
   m_trianglesTested += record.trianglesTested;

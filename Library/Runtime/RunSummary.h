@@ -22,6 +22,10 @@ public:
   std::uint64_t refusedTicks() const { return m_refusedTicks; }
   std::uint64_t overflowTicks() const { return m_overflowTicks; }
   std::uint64_t clampedTicks() const { return m_clampedTicks; }
+  /// Ticks whose force was fading (proxy stall, lost device, or back in after either), and ticks
+  /// with the device lost.
+  std::uint64_t fadingTicks() const { return m_fadingTicks; }
+  std::uint64_t deviceLostTicks() const { return m_deviceLostTicks; }
   std::uint64_t stuckTicks() const { return m_stuckTicks; }
   std::uint64_t frictionLimitedTicks() const { return m_frictionLimitedTicks; }
   double maxForce() const { return m_maxForce; }
@@ -38,6 +42,8 @@ private:
   std::uint64_t m_refusedTicks = 0;
   std::uint64_t m_overflowTicks = 0;
   std::uint64_t m_clampedTicks = 0;
+  std::uint64_t m_fadingTicks = 0;
+  std::uint64_t m_deviceLostTicks = 0;
   std::uint64_t m_stuckTicks = 0;
   std::uint64_t m_frictionLimitedTicks = 0;
   std::uint64_t m_trianglesTested = 0;

@@ -1,27 +1,21 @@
 #include "Runtime/ServoTick.h"
 
-#include <chrono>
+#include "Runtime/ProxyStep.h"
+#include "Runtime/ServoForce.h"
 
 namespace proxima
 {
 
-TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
-                        const ServoParameters& parameters, Vec3& lastForce)
+TickRecord makeTickRecord(std::uint64_t tick, double time, const DeviceSample& sample,
+                          const ProxyStepOutcome& outcome, const ServoForceOutput& force)
 {
   TickRecord record;
   record.tick = tick;
   record.time = time;
-  const DeviceSample sample = device.read(time);
   record.finger = sample.position;
-
-  const auto begin = std::chrono::steady_clock::now();
-  const ProxyTickResult result =
-    sample.valid ? solver.update(sample.position) : ProxyTickResult{};
-  const auto end = std::chrono::steady_clock::now();
-  record.solveNanoseconds =
-    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
-
-  record.proxy = solver.proxy();
+  record.proxy = outcome.proxy;
+  record.solveNanoseconds = outcome.solveNanoseconds;
+  const ProxyTickResult& result = outcome.result;
   record.contacts = result.numContacts;
   record.iterations = result.iterations;
   record.hitIterationCap = result.hitIterationCap;
@@ -29,25 +23,29 @@ TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, Ha
   record.stuck = result.stuck;
   record.frictionLimited = result.frictionLimited;
   record.trianglesTested = result.queries.trianglesTested;
-  record.fingerRefused = !sample.valid || result.refusedFinger;
-
-  Vec3 force = lastForce;
-  if (!record.fingerRefused)
-  {
-    // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays continuous,
-    // since proxy and finger coincide out of contact.
-    force = (record.proxy - sample.position) * (parameters.stiffness * result.stiffnessScale);
-    const double magnitude = norm(force);
-    if (magnitude > parameters.maxForce)
-    {
-      force = force * (parameters.maxForce / magnitude);
-      record.forceClamped = true;
-    }
-  }
-  record.force = force;
-  lastForce = force;
-  device.writeForce(force, time);
+  record.fingerRefused = outcome.refused;
+  record.force = force.force;
+  record.forceClamped = force.clamped;
+  record.fading = force.fading;
+  record.deviceLost = force.deviceLost;
+  record.rateLimited = force.rateLimited;
   return record;
+}
+
+TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
+                        ServoForce& servo)
+{
+  const DeviceSample sample = device.read(time);
+  const ProxyStepOutcome outcome = runProxyStep(solver, sample);
+  ServoForceInput input;
+  input.sample = sample;
+  input.proxy = outcome.proxy;
+  input.stiffnessScale = outcome.result.stiffnessScale;
+  input.proxyRefused = outcome.refused;
+  input.time = time;
+  const ServoForceOutput force = servo.step(input);
+  device.writeForce(force.force, time);
+  return makeTickRecord(tick, time, sample, outcome, force);
 }
 
 } // namespace proxima

@@ -1,5 +1,6 @@
-// One servo tick, the step function shared by the lockstep runner and the threaded runtime:
-// read the device, update the proxy, compute the spring force, write it to the device.
+// One servo tick of the lockstep runner: read the device, run the proxy step, run the force stage,
+// write the force. The threaded runtime runs the same two steps (ProxyStep.h, ServoForce.h) on
+// two threads.
 #pragma once
 
 #include "Proxy/ProxySolver.h"
@@ -43,15 +44,28 @@ struct TickRecord
   bool hitIterationCap = false;
   bool contactOverflow = false;
   bool forceClamped = false;
+  /// The force was fading (proxy loop stalled, device lost, or coming back after either), the
+  /// device was lost, or the force's rate of change was limited after a scene change.
+  bool fading = false;
+  bool deviceLost = false;
+  bool rateLimited = false;
   /// Static friction held the proxy; dynamic or viscous friction shortened its slide.
   bool stuck = false;
   bool frictionLimited = false;
   std::uint32_t trianglesTested = 0;
 };
 
-/// Runs one tick at `time`. `lastForce` is the force of the previous tick, held when the finger
-/// sample is invalid or not finite; it is updated on return.
+struct ProxyStepOutcome;
+struct ServoForceOutput;
+class ServoForce;
+
+/// The record of a tick whose proxy step on `sample` gave `outcome` and whose force stage gave
+/// `force`.
+TickRecord makeTickRecord(std::uint64_t tick, double time, const DeviceSample& sample,
+                          const ProxyStepOutcome& outcome, const ServoForceOutput& force);
+
+/// Runs one tick at `time`; `servo` keeps the force stage's state (last force, fade) across ticks.
 TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
-                        const ServoParameters& parameters, Vec3& lastForce);
+                        ServoForce& servo);
 
 } // namespace proxima

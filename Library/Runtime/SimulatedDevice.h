@@ -18,6 +18,7 @@ public:
     return DeviceSample{m_path.positionAt(time, m_hint), true};
   }
   void writeForce(const Vec3& force, double /*time*/) override { m_lastForce = force; }
+  const char* name() const override { return "sim"; }
 
   const FingerPath& path() const { return m_path; }
   const Vec3& lastForce() const { return m_lastForce; }

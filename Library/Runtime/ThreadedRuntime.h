@@ -14,6 +14,7 @@
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoTick.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -36,7 +37,8 @@ struct RuntimeSettings
   /// Keep the first `recordTicks` servo ticks as TickRecords (preallocated), for comparing a
   /// threaded run with a lockstep one; 0 keeps none.
   std::size_t recordTicks = 0;
-  /// When the device runs out (a scripted path that ended), stop after this time; 0: never.
+  /// The run ends by itself when the servo clock reaches this many seconds (finished() turns
+  /// true); 0 runs until stop().
   double duration = 0.0;
 };
 
@@ -64,13 +66,16 @@ public:
   /// Stops both threads and waits for them. Idempotent.
   void stop();
   bool running() const;
-  /// True once the device ran out and `duration` passed (a scripted run ended).
+  /// True once the servo clock reached `duration`: both loops have ended.
   bool finished() const;
 
   /// The last state the servo thread published: lock-free, any thread.
   HapticState latestState() const;
   /// Version of the scene the proxy loop is using (0 before the first is installed).
   std::uint64_t liveSceneVersion() const;
+  /// The longest time the proxy loop spent installing a published scene, in nanoseconds: the
+  /// whole cost of a model swap on the haptic side.
+  std::int64_t longestSceneInstallNanoseconds() const;
   /// Period and deadline statistics of each loop, readable while running.
   LoopStatistics servoStatistics() const;
   LoopStatistics proxyStatistics() const;

@@ -3,6 +3,8 @@
 // (DESIGN.md section 6: never NaN into a force).
 #include "Runtime/ServoTick.h"
 
+#include "Runtime/ServoForce.h"
+
 #include "Geometry/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
@@ -94,12 +96,12 @@ TEST(ServoTickStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
     solver.setScene(&scene, parameters);
     solver.resetProxy({x, 0.0, 0.01});
     FakeDevice device;
-    Vec3 lastForce;
+    ServoForce stage(servo);
     device.next = DeviceSample{{x, 0.0, 0.005}, true};
-    const TickRecord free = runServoTick(0, 0.0, solver, device, servo, lastForce);
+    const TickRecord free = runServoTick(0, 0.0, solver, device, stage);
     EXPECT_EQ(norm(free.force), 0.0);
     device.next = DeviceSample{{x, 0.0, -0.002}, true};
-    const TickRecord pressed = runServoTick(1, 0.001, solver, device, servo, lastForce);
+    const TickRecord pressed = runServoTick(1, 0.001, solver, device, stage);
     const double scale = x < 0.0 ? 1.0 : 0.5;
     EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x; // the skin: 1e-12 m
     EXPECT_NEAR(pressed.force.x, 0.0, 1e-12);
@@ -111,9 +113,9 @@ TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
   ServoParameters servo;
   servo.stiffness = 750.0;
   servo.maxForce = 100.0;
-  Vec3 lastForce;
+  ServoForce stage(servo);
   device.next = DeviceSample{{0.002, -0.001, -0.004}, true};
-  const TickRecord r = runServoTick(7, 0.25, *solver, device, servo, lastForce);
+  const TickRecord r = runServoTick(7, 0.25, *solver, device, stage);
   EXPECT_EQ(r.tick, 7u);
   EXPECT_EQ(r.time, 0.25);
   EXPECT_EQ(r.finger, device.next.position);
@@ -129,24 +131,24 @@ TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
   EXPECT_EQ(r.contacts, 1);
   EXPECT_GE(r.iterations, 1);
   EXPECT_GE(r.solveNanoseconds, 0);
-  // The device got that force at that time, and lastForce is it.
+  // The device got that force at that time, and the stage keeps it as its last force.
   ASSERT_EQ(device.forces.size(), 1u);
   EXPECT_EQ(device.forces[0], r.force);
   EXPECT_EQ(device.writeTimes[0], 0.25);
   EXPECT_EQ(device.readTimes[0], 0.25);
-  EXPECT_EQ(lastForce, r.force);
+  EXPECT_EQ(stage.lastForce(), r.force);
 }
 
 TEST_F(ServoTickTest, FreeFingerGivesZeroForce)
 {
   ServoParameters servo;
-  Vec3 lastForce{1, 2, 3};
+  ServoForce stage(servo);
   device.next = DeviceSample{{0.01, 0.02, 0.03}, true};
-  const TickRecord r = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  const TickRecord r = runServoTick(0, 0.0, *solver, device, stage);
   EXPECT_EQ(r.proxy, r.finger);
   EXPECT_EQ(r.force, Vec3{});
   EXPECT_EQ(r.contacts, 0);
-  EXPECT_EQ(lastForce, Vec3{});
+  EXPECT_EQ(stage.lastForce(), Vec3{});
 }
 
 TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
@@ -154,9 +156,9 @@ TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
   ServoParameters servo;
   servo.stiffness = 5000.0;
   servo.maxForce = 3.0;
-  Vec3 lastForce;
+  ServoForce stage(servo);
   device.next = DeviceSample{{0.003, 0.0, -0.02}, true};
-  const TickRecord r = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  const TickRecord r = runServoTick(0, 0.0, *solver, device, stage);
   const Vec3 spring = (r.proxy - r.finger) * servo.stiffness;
   ASSERT_GT(norm(spring), servo.maxForce);
   EXPECT_TRUE(r.forceClamped);
@@ -168,9 +170,9 @@ TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
 TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
 {
   ServoParameters servo;
-  Vec3 lastForce;
+  ServoForce stage(servo);
   device.next = DeviceSample{{0.0, 0.0, -0.003}, true};
-  const TickRecord pressed = runServoTick(0, 0.0, *solver, device, servo, lastForce);
+  const TickRecord pressed = runServoTick(0, 0.0, *solver, device, stage);
   const Vec3 proxy = solver->proxy();
   ASSERT_NE(pressed.force, Vec3{});
   const double inf = std::numeric_limits<double>::infinity();
@@ -179,25 +181,25 @@ TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
   for (const Vec3& bad : {Vec3{nan, 0, 0}, Vec3{0, inf, 0}, Vec3{0, 0, -inf}, Vec3{nan, nan, nan}})
   {
     device.next = DeviceSample{bad, true};
-    const TickRecord r = runServoTick(tick, tick * 0.001, *solver, device, servo, lastForce);
+    const TickRecord r = runServoTick(tick, tick * 0.001, *solver, device, stage);
     ++tick;
     EXPECT_TRUE(r.fingerRefused);
     EXPECT_EQ(r.force, pressed.force);
     EXPECT_EQ(device.forces.back(), pressed.force);
-    EXPECT_EQ(lastForce, pressed.force);
+    EXPECT_EQ(stage.lastForce(), pressed.force);
     EXPECT_EQ(r.proxy, proxy);
     EXPECT_EQ(solver->proxy(), proxy);
     EXPECT_FALSE(r.forceClamped);
   }
   // An invalid sample (device read error) is refused the same way, whatever it holds.
   device.next = DeviceSample{{0.0, 0.0, -0.5}, false};
-  const TickRecord invalid = runServoTick(tick, tick * 0.001, *solver, device, servo, lastForce);
+  const TickRecord invalid = runServoTick(tick, tick * 0.001, *solver, device, stage);
   EXPECT_TRUE(invalid.fingerRefused);
   EXPECT_EQ(invalid.force, pressed.force);
   EXPECT_EQ(solver->proxy(), proxy);
   // A good sample again: the spring law resumes.
   device.next = DeviceSample{{0.001, 0.0, -0.003}, true};
-  const TickRecord again = runServoTick(tick + 1, 0.01, *solver, device, servo, lastForce);
+  const TickRecord again = runServoTick(tick + 1, 0.01, *solver, device, stage);
   EXPECT_FALSE(again.fingerRefused);
   const Vec3 expected = (again.proxy - again.finger) * servo.stiffness;
   EXPECT_NEAR(distance(again.force, expected), 0.0, 1e-15 * norm(expected));

@@ -1,0 +1,311 @@
+// `proxima view`: replays a finger path through a mesh or a scene in the threaded runtime and
+// draws it in a VTK window: the surface, the proxy, the finger's ghost, the spring, the contact
+// planes, the friction cones and the force, with the loops' statistics. `--screenshot PNG`
+// renders offscreen at a chosen moment of the path and exits instead.
+#include "Command.h"
+#include "SceneOptions.h"
+
+#include "IO/FingerPathFile.h"
+#include "IO/InputError.h"
+#include "Runtime/LoopStatistics.h"
+#include "VTK/ScenePolyData.h"
+#include "VTK/vtkHapticRenderer.h"
+#include "VTK/vtkHapticStateRepresentation.h"
+
+#include <vtkActor.h>
+#include <vtkAutoInit.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+VTK_MODULE_INIT(vtkInteractionStyle);
+VTK_MODULE_INIT(vtkRenderingFreeType);
+
+namespace proxima::cli
+{
+namespace
+{
+struct ViewOptions
+{
+  SceneOptions scene;
+  std::string screenshot;
+  double at = -1.0;
+  int width = 800;
+  int height = 600;
+  double viewDistance = 0.0;
+  double forceScale = 0.0;
+};
+
+std::string statusText(const HapticState& state, const LoopStatistics& servo)
+{
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "t %.3f s   contacts %d%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   "
+                "missed %llu",
+                state.time, state.numContacts, state.stuck ? "   sticking" : "",
+                state.fading ? "   FADING" : "", norm(state.force), servo.rate,
+                servo.jitterQuantileNanoseconds(0.99) / 1000.0,
+                static_cast<unsigned long long>(servo.missedDeadlines));
+  return text;
+}
+
+// The mean of the contact normals: the side of free space the proxy is on.
+Vec3 freeSide(const HapticState& state)
+{
+  Vec3 sum;
+  for (int i = 0; i < state.numContacts; ++i)
+  {
+    sum += state.contacts[i].normal;
+  }
+  const double length = norm(sum);
+  return length > 0.0 ? sum / length : state.contacts[0].normal;
+}
+
+// Looks at the proxy from `distance`, from the free side of its contacts (tilted, so that the
+// planes and the cones show in depth), or along the camera's current direction.
+void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
+{
+  Vec3 direction;
+  if (state.numContacts > 0)
+  {
+    const Vec3 n = freeSide(state);
+    // Any vector not along n, to tilt the view by about 50 degrees off the normal.
+    const Vec3 other = std::abs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    Vec3 side = cross(n, other);
+    side = side / norm(side);
+    direction = n + side * 1.2;
+  }
+  else
+  {
+    double position[3];
+    double focus[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focus);
+    direction = {position[0] - focus[0], position[1] - focus[1], position[2] - focus[2]};
+  }
+  direction = direction / norm(direction);
+  const Vec3 eye = state.proxy + direction * distance;
+  camera->SetFocalPoint(state.proxy.x, state.proxy.y, state.proxy.z);
+  camera->SetPosition(eye.x, eye.y, eye.z);
+  if (state.numContacts > 0)
+  {
+    const Vec3 n = freeSide(state);
+    camera->SetViewUp(n.x, n.y, n.z);
+  }
+  camera->OrthogonalizeViewUp();
+}
+
+int view(const ViewOptions& options)
+{
+  const SceneOptions& shared = options.scene;
+  LoadedScene loaded = loadScene(shared);
+  const FingerPath fingerPath = readFingerPathFile(shared.path);
+  checkPathStart(shared, loaded, fingerPath);
+  std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
+  const double pathSeconds = fingerPath.endTime() - fingerPath.startTime();
+  const double at = options.at >= 0.0 ? options.at : pathSeconds;
+  if (!options.screenshot.empty())
+  {
+    // Fail on an unwritable screenshot before the run, not after it.
+    std::ofstream probe(options.screenshot, std::ios::binary | std::ios::app);
+    if (!probe)
+    {
+      throw InputError(options.screenshot, "cannot write the file");
+    }
+  }
+
+  vtkNew<vtkHapticRenderer> haptics;
+  haptics->SetCollisionScene(scene);
+  // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
+  FingerPath shifted = fingerPath;
+  for (double& time : shifted.times)
+  {
+    time -= fingerPath.startTime();
+  }
+  haptics->SetFingerPath(shifted);
+  haptics->SetProxyStart(fingerPath.positions.front().x, fingerPath.positions.front().y,
+                         fingerPath.positions.front().z);
+  haptics->SetProxyRadius(shared.radius);
+  haptics->SetStiffness(shared.stiffness);
+  haptics->SetMaxForce(shared.maxForce);
+  haptics->SetMaxIterations(shared.maxIterations);
+  haptics->SetSkin(shared.skin);
+  haptics->SetServoRate(shared.rate);
+
+  // The surface the proxy touches, drawn from the kernel's own triangles.
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(proxima::vtk::scenePolyData(*scene));
+  // Sharp CAD edges (60 degrees and more) stay sharp in the picture; a scan's noisy bends below
+  // that stay smooth.
+  normals->SetFeatureAngle(60.0);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
+  vtkNew<vtkPolyDataMapper> surfaceMapper;
+  surfaceMapper->SetInputConnection(normals->GetOutputPort());
+  surfaceMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> surface;
+  surface->SetMapper(surfaceMapper);
+  surface->GetProperty()->SetColor(0.85, 0.8, 0.72);
+  surface->GetProperty()->SetSpecular(0.2);
+
+  vtkNew<vtkHapticStateRepresentation> representation;
+  const double forceScale =
+    options.forceScale > 0.0 ? options.forceScale : 30.0 * shared.radius / shared.maxForce;
+  representation->SetForceScale(forceScale);
+  vtkNew<vtkTextActor> status;
+  status->GetTextProperty()->SetFontSize(14);
+  status->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+  status->SetPosition(10, 10);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(surface);
+  representation->AddToRenderer(renderer);
+  renderer->AddViewProp(status);
+  renderer->SetBackground(0.1, 0.12, 0.16);
+  renderer->SetBackground2(0.25, 0.28, 0.34);
+  renderer->GradientBackgroundOn();
+  renderer->SetUseDepthPeeling(1);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(options.width, options.height);
+  window->SetAlphaBitPlanes(1);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  window->SetWindowName("proxima view");
+  renderer->ResetCamera();
+  const double distance = options.viewDistance > 0.0 ? options.viewDistance : 40.0 * shared.radius;
+
+  if (!options.screenshot.empty())
+  {
+    haptics->SetDuration(at + 0.5);
+    if (!haptics->Start())
+    {
+      throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+    }
+    while (haptics->GetState().time < at && !haptics->IsFinished())
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    const HapticState state = haptics->GetState();
+    const LoopStatistics servo = haptics->GetServoStatistics();
+    haptics->Stop();
+    representation->SetState(state);
+    status->SetInput(statusText(state, servo).c_str());
+    aimAtProxy(renderer->GetActiveCamera(), state, distance);
+    renderer->ResetCameraClippingRange();
+    window->SetOffScreenRendering(1);
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(window);
+    capture->SetInputBufferTypeToRGB();
+    capture->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(options.screenshot.c_str());
+    writer->SetInputConnection(capture->GetOutputPort());
+    writer->Write();
+    std::printf("%s: %dx%d at t = %.4f s, %d contacts%s, force %.4f N\n",
+                options.screenshot.c_str(), options.width, options.height, state.time,
+                state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
+    return kExitOk;
+  }
+
+  // Interactive: the path plays in real time, looped by restarting when it ends; a timer at
+  // about 60 Hz moves the representation to the latest state.
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(window);
+  interactor->Initialize();
+  haptics->SetDuration(pathSeconds + 0.5);
+  if (!haptics->Start())
+  {
+    throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+  }
+  struct Frame
+  {
+    vtkHapticRenderer* haptics;
+    vtkHapticStateRepresentation* representation;
+    vtkTextActor* status;
+    vtkRenderer* renderer;
+    double distance;
+    bool aimed;
+  } frame{haptics, representation, status, renderer, distance, false};
+  vtkNew<vtkCallbackCommand> onTimer;
+  onTimer->SetClientData(&frame);
+  onTimer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
+    auto* f = static_cast<Frame*>(clientData);
+    if (f->haptics->IsFinished())
+    {
+      f->haptics->Stop();
+      f->haptics->Start();
+    }
+    const HapticState state = f->haptics->GetState();
+    f->representation->SetState(state);
+    f->status->SetInput(statusText(state, f->haptics->GetServoStatistics()).c_str());
+    if (!f->aimed && state.tick > 0)
+    {
+      // Once, at the start: close to the proxy; the mouse moves the camera from there.
+      aimAtProxy(f->renderer->GetActiveCamera(), state, f->distance * 4.0);
+      f->aimed = true;
+    }
+    f->renderer->ResetCameraClippingRange();
+    static_cast<vtkRenderWindowInteractor*>(caller)->Render();
+  });
+  interactor->AddObserver(vtkCommand::TimerEvent, onTimer);
+  interactor->CreateRepeatingTimer(16);
+  window->Render();
+  interactor->Start();
+  haptics->Stop();
+  return kExitOk;
+}
+} // namespace
+
+Command addViewCommand(CLI::App& parent)
+{
+  auto options = std::make_shared<ViewOptions>();
+  CLI::App* app = parent.add_subcommand(
+    "view", "Replay a finger path through a mesh or a scene in the threaded runtime and draw it "
+            "(proxy, finger, spring, contact planes, friction cones, force)");
+  addSceneOptionsThroughPath(*app, options->scene);
+  app->add_option("--screenshot", options->screenshot,
+                  "Render offscreen to this PNG at --at and exit, instead of opening a window");
+  app->add_option("--at", options->at,
+                  "With --screenshot: seconds into the path to capture (default: its end)")
+    ->check(CLI::NonNegativeNumber);
+  app->add_option("--width", options->width, "Window width in pixels (default 800)")
+    ->check(CLI::Range(64, 8192));
+  app->add_option("--height", options->height, "Window height in pixels (default 600)")
+    ->check(CLI::Range(64, 8192));
+  app->add_option("--view-distance", options->viewDistance,
+                  "Camera distance from the proxy in metres (default 40 proxy radii)")
+    ->check(CLI::PositiveNumber);
+  app->add_option("--force-scale", options->forceScale,
+                  "Force arrow length in metres per newton (default: 30 proxy radii at "
+                  "--max-force)")
+    ->check(CLI::PositiveNumber);
+  addSceneOptionsAfterPath(*app, options->scene);
+  app->callback([options, app] { checkSceneOptions(options->scene, *app); });
+  return Command{app, [options] { return view(*options); }};
+}
+
+} // namespace proxima::cli

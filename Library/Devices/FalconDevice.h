@@ -1,0 +1,102 @@
+// The Novint Falcon (USB 0403:cb48, an FTDI serial bridge) as a haptic device: uploads the
+// firmware the user supplies (never shipped), homes, turns encoder counts into the grip position
+// through the delta kinematics, and a force on the finger into motor commands through J^T. One
+// frame goes out per writeForce and one comes back per read, so a lockstep run against the
+// emulator is deterministic. All I/O goes through a BulkTransport (LibusbTransport for a real
+// device); a vanished device becomes disconnected samples, never an exception.
+#pragma once
+
+#include "Devices/DeviceTransport.h"
+#include "Devices/FalconFrame.h"
+#include "Devices/FalconKinematics.h"
+#include "Runtime/HapticDevice.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+struct FalconSettings
+{
+  /// The firmware image to upload (the user's own copy; Documentation/Devices.md). Empty: the
+  /// device already runs firmware (re-opened without a power cycle) and the upload is skipped.
+  std::string firmwarePath;
+  DeltaGeometry geometry;
+  /// Encoder counts to upper-arm angle: theta = thetaAtZero + counts / countsPerRadian. From
+  /// libnifalcon's example programs: counts -2000..2000 span the arm's 0..90 degrees.
+  double thetaAtZeroCounts = 0.785398163397448; // pi / 4
+  double countsPerRadian = 4000.0 / 1.5707963267948966;
+  /// Motor command units per N m of joint torque, and the largest command sent. Not from a
+  /// public source: calibrate on a device (Documentation/Devices.md).
+  double commandsPerNewtonMetre = 10000.0;
+  int maxCommand = 4096;
+  /// Largest force the servo may ask for, in newtons.
+  double maxForce = 8.0;
+  /// World position = grip position (device frame, z up) - neutral + worldOffset, where
+  /// neutral is the grip with all arms at thetaAtZeroCounts.
+  Vec3 worldOffset;
+  /// How long read() waits for the device's frame. Until every axis reports homed, samples are
+  /// invalid (no position is trusted before homing).
+  int readTimeoutMilliseconds = 2;
+};
+
+class FalconDevice final : public HapticDevice
+{
+public:
+  FalconDevice(std::unique_ptr<BulkTransport> transport, const FalconSettings& settings);
+
+  /// Uploads the firmware (when a path is set) and switches to normal I/O. False with `error`
+  /// naming the problem: a missing firmware file, a device that does not answer the bootloader
+  /// handshake, an upload whose echo differs.
+  bool open(std::string& error);
+
+  DeviceSample read(double time) override;
+  void writeForce(const Vec3& force, double time) override;
+  DeviceLimits limits() const override;
+  const char* name() const override { return "falcon"; }
+
+  /// LED bits (kFalconLedGreen, Blue, Red) sent with every frame from now on.
+  void setLeds(std::uint8_t leds) { m_leds = leds & (kFalconLedGreen | kFalconLedBlue | kFalconLedRed); }
+
+  bool homed() const { return m_homed; }
+  bool connected() const { return m_connected; }
+  const std::array<std::int16_t, 3>& lastEncoders() const { return m_encoders; }
+  const std::array<std::int16_t, 3>& lastCommands() const { return m_commands; }
+  const FalconFrameReader& frameReader() const { return m_reader; }
+  const std::string& lastError() const { return m_lastError; }
+
+  /// Encoder counts to angles and back, and torques to commands: the unit conversions at the
+  /// edge, public so that tests and the emulator use the very same numbers.
+  JointAngles anglesFromCounts(const std::array<std::int16_t, 3>& counts) const;
+  std::array<std::int16_t, 3> countsFromAngles(const JointAngles& angles) const;
+  std::array<std::int16_t, 3> commandsFromTorques(const JointAngles& torques) const;
+  /// The device-frame grip position that maps to the world origin offset.
+  const Vec3& neutral() const { return m_neutral; }
+
+private:
+  bool enterFirmwareMode(std::string& error);
+  bool uploadFirmware(const std::vector<std::uint8_t>& image, std::string& error);
+  bool enterNormalMode(std::string& error);
+  bool expectBytes(const std::vector<std::uint8_t>& expected, const char* what, std::string& error);
+  void sendFrame();
+  DeviceSample lost();
+
+  std::unique_ptr<BulkTransport> m_transport;
+  FalconSettings m_settings;
+  DeltaKinematics m_kinematics;
+  Vec3 m_neutral;
+  FalconFrameReader m_reader;
+  std::array<std::int16_t, 3> m_encoders{0, 0, 0};
+  std::array<std::int16_t, 3> m_commands{0, 0, 0};
+  std::uint8_t m_buttons = 0;
+  std::uint8_t m_leds = kFalconLedRed;
+  bool m_homed = false;
+  bool m_haveFrame = false;
+  bool m_connected = true;
+  std::string m_lastError;
+};
+
+} // namespace proxima

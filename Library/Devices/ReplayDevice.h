@@ -1,0 +1,52 @@
+// Playing back and recording device sessions. ReplayDevice answers each read with the recorded
+// sample of the latest time not after it (the recorded run's own tick times match exactly), and
+// reports a disconnect after the recording ends. RecordingDevice wraps any device and keeps what
+// it read, for writeDeviceRecording at the end (kept in memory, so the servo tick does no I/O).
+#pragma once
+
+#include "Devices/DeviceRecording.h"
+
+#include <vector>
+
+namespace proxima
+{
+
+class ReplayDevice final : public HapticDevice
+{
+public:
+  explicit ReplayDevice(std::vector<RecordedSample> samples, DeviceLimits limits = DeviceLimits{});
+
+  DeviceSample read(double time) override;
+  void writeForce(const Vec3& force, double time) override;
+  DeviceLimits limits() const override { return m_limits; }
+  const char* name() const override { return "replay"; }
+
+  const std::vector<RecordedSample>& samples() const { return m_samples; }
+  const Vec3& lastForce() const { return m_lastForce; }
+
+private:
+  std::vector<RecordedSample> m_samples;
+  DeviceLimits m_limits;
+  std::size_t m_next = 0;
+  Vec3 m_lastForce;
+};
+
+class RecordingDevice final : public HapticDevice
+{
+public:
+  /// `device` must outlive this; `expectedTicks` reserves room up front.
+  RecordingDevice(HapticDevice& device, std::size_t expectedTicks);
+
+  DeviceSample read(double time) override;
+  void writeForce(const Vec3& force, double time) override { m_device.writeForce(force, time); }
+  DeviceLimits limits() const override { return m_device.limits(); }
+  const char* name() const override { return m_device.name(); }
+
+  const std::vector<RecordedSample>& samples() const { return m_samples; }
+
+private:
+  HapticDevice& m_device;
+  std::vector<RecordedSample> m_samples;
+};
+
+} // namespace proxima

@@ -1,0 +1,103 @@
+#include "Runtime/ServoForce.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace proxima
+{
+namespace
+{
+/// Fade levels this close to 0 or 1 are 0 or 1: what summing dt / fadeTime leaves over.
+constexpr double kGainRounding = 1e-9;
+} // namespace
+
+ServoForce::ServoForce(const ServoParameters& parameters, const DeviceLimits& limits)
+  : m_parameters(parameters), m_maxForce(std::min(parameters.maxForce, limits.maxForce))
+{
+}
+
+ServoForceOutput ServoForce::step(const ServoForceInput& input)
+{
+  ServoForceOutput output;
+  const double dt = m_started ? std::max(0.0, input.time - m_lastTime) : 0.0;
+  m_started = true;
+  m_lastTime = input.time;
+  // A fade over fadeTime moves the gain by dt / fadeTime a tick; no fade time means at once.
+  const double gainStep = m_parameters.fadeTime > 0.0 ? dt / m_parameters.fadeTime : 1.0;
+
+  if (m_sceneSeen && input.sceneVersion != m_sceneVersion)
+  {
+    m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
+  }
+  m_sceneSeen = true;
+  m_sceneVersion = input.sceneVersion;
+
+  output.deviceLost = !input.sample.connected;
+  output.proxyStale = input.proxyAge > m_parameters.watchdogTimeout;
+  Vec3 force;
+  if (output.deviceLost || output.proxyStale)
+  {
+    // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
+    // far from it while the proxy loop was stuck.
+    if (!m_faulted)
+    {
+      m_faulted = true;
+      m_fadeFrom = m_lastForce;
+      m_fadeLevel = 1.0;
+    }
+    m_fadeLevel = m_fadeLevel - gainStep;
+    // Ten steps of 0.1 leave 1e-16, not 0: a fade ends at exactly zero force.
+    m_fadeLevel = m_fadeLevel > kGainRounding ? m_fadeLevel : 0.0;
+    force = m_fadeFrom * m_fadeLevel;
+    // Once the fault clears, the spring comes back from the level the fade reached.
+    m_gain = m_fadeLevel;
+    output.fading = true;
+  }
+  else
+  {
+    m_faulted = false;
+    const bool usable = input.sample.valid && !input.proxyRefused;
+    if (usable)
+    {
+      // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
+      // continuous, since proxy and finger coincide out of contact.
+      force = (input.proxy - input.sample.position) *
+              (m_parameters.stiffness * input.stiffnessScale);
+      if (m_gain < 1.0)
+      {
+        m_gain = m_gain + gainStep;
+        m_gain = m_gain < 1.0 - kGainRounding ? m_gain : 1.0;
+        force = force * m_gain;
+        output.fading = m_gain < 1.0;
+      }
+    }
+    else
+    {
+      // Never NaN into a force (DESIGN.md section 6): hold the last one.
+      force = m_lastForce;
+    }
+  }
+
+  const double magnitude = norm(force);
+  if (magnitude > m_maxForce)
+  {
+    force = force * (m_maxForce / magnitude);
+    output.clamped = true;
+  }
+  if (input.time < m_rateLimitUntil)
+  {
+    const double allowed = m_parameters.forceRateLimit * dt;
+    const Vec3 change = force - m_lastForce;
+    const double changeMagnitude = norm(change);
+    if (changeMagnitude > allowed)
+    {
+      force = m_lastForce + change * (allowed / changeMagnitude);
+      output.rateLimited = true;
+    }
+  }
+  m_lastForce = force;
+  output.force = force;
+  return output;
+}
+
+} // namespace proxima

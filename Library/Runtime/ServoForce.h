@@ -1,0 +1,76 @@
+// The servo's force stage (paper section 8): the spring between proxy and finger, and the safety
+// around it. Forces are clamped to the smaller of the servo's and the device's limit; a finger
+// sample that cannot be used holds the last force; after a scene change the force's rate of
+// change is limited for a moment so a new model cannot kick the hand; and when the proxy state is
+// older than the watchdog allows (the proxy loop stalled) or the device is lost, the force fades
+// to zero over the fade time, and fades back in once the fault clears. Allocation-free and
+// deterministic: time is the tick's time on the runtime's clock, never read here.
+#pragma once
+
+#include "Runtime/HapticDevice.h"
+#include "Runtime/ServoTick.h"
+
+#include <cstdint>
+
+namespace proxima
+{
+
+/// What the force stage is given at one servo tick.
+struct ServoForceInput
+{
+  DeviceSample sample;
+  /// The last published proxy, the stiffness-map factor at its contacts, and whether its step
+  /// refused the finger it was given.
+  Vec3 proxy;
+  double stiffnessScale = 1.0;
+  bool proxyRefused = false;
+  /// Seconds between this tick and the finger sample the proxy state was computed from: 0 in
+  /// lockstep, about one period in the threaded runtime, more when the proxy loop stalls.
+  double proxyAge = 0.0;
+  /// The version of the scene the proxy state was computed on; a change starts the rate limit.
+  std::uint64_t sceneVersion = 0;
+  double time = 0.0;
+};
+
+struct ServoForceOutput
+{
+  Vec3 force;
+  bool clamped = false;
+  /// The force is below what the spring asks because it is fading out or back in.
+  bool fading = false;
+  bool deviceLost = false;
+  bool proxyStale = false;
+  bool rateLimited = false;
+};
+
+class ServoForce
+{
+public:
+  explicit ServoForce(const ServoParameters& parameters, const DeviceLimits& limits = {});
+
+  ServoForceOutput step(const ServoForceInput& input);
+
+  const ServoParameters& parameters() const { return m_parameters; }
+  double maxForce() const { return m_maxForce; }
+  const Vec3& lastForce() const { return m_lastForce; }
+  /// 1 when the spring force is rendered in full, 0 when faded out.
+  double gain() const { return m_gain; }
+
+private:
+  ServoParameters m_parameters;
+  double m_maxForce;
+  Vec3 m_lastForce;
+  /// The force when the current fault began: what fades out.
+  Vec3 m_fadeFrom;
+  double m_fadeLevel = 1.0;
+  /// The share of the spring force rendered: below 1 while fading back in after a fault.
+  double m_gain = 1.0;
+  bool m_faulted = false;
+  bool m_started = false;
+  double m_lastTime = 0.0;
+  std::uint64_t m_sceneVersion = 0;
+  bool m_sceneSeen = false;
+  double m_rateLimitUntil = -1.0;
+};
+
+} // namespace proxima

@@ -1,0 +1,166 @@
+// The servo's force stage: the spring law, the clamp to the smaller of the servo's and the
+// device's limit, the fade when the proxy state goes stale or the device is lost (and back in
+// when the fault clears), and the force-rate limit after a scene change. Every expectation is
+// worked out by hand from the documented rule, tick by tick.
+#include "Runtime/ServoForce.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace proxima
+{
+namespace
+{
+constexpr double kPeriod = 0.001;
+
+ServoParameters testParameters()
+{
+  ServoParameters parameters;
+  parameters.stiffness = 1000.0;
+  parameters.maxForce = 10.0;
+  parameters.watchdogTimeout = 0.005;
+  parameters.fadeTime = 0.01; // ten ticks at 1 kHz
+  parameters.forceRateLimit = 100.0; // 0.1 N a tick at 1 kHz
+  parameters.sceneChangeWindow = 0.02;
+  return parameters;
+}
+
+// A finger 2 mm under a proxy at the origin: a spring force of 2 N up.
+ServoForceInput pressing(std::uint64_t tick)
+{
+  ServoForceInput input;
+  input.sample.position = {0.0, 0.0, -0.002};
+  input.proxy = {0.0, 0.0, 0.0};
+  input.time = static_cast<double>(tick) * kPeriod;
+  input.sceneVersion = 1;
+  return input;
+}
+
+TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
+{
+  DeviceLimits limits;
+  limits.maxForce = 1.5;
+  ServoForce stage(testParameters(), limits);
+  EXPECT_EQ(stage.maxForce(), 1.5);
+  const ServoForceOutput output = stage.step(pressing(0));
+  EXPECT_TRUE(output.clamped);
+  EXPECT_NEAR(output.force.z, 1.5, 1e-15);
+  EXPECT_EQ(output.force.x, 0.0);
+
+  ServoForce unclamped(testParameters());
+  ServoForceInput input = pressing(0);
+  input.stiffnessScale = 0.5;
+  const ServoForceOutput spring = unclamped.step(input);
+  EXPECT_FALSE(spring.clamped);
+  EXPECT_NEAR(spring.force.z, 1000.0 * 0.5 * 0.002, 1e-15);
+}
+
+TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
+{
+  ServoForce stage(testParameters());
+  std::uint64_t tick = 0;
+  for (; tick < 5; ++tick)
+  {
+    const ServoForceOutput output = stage.step(pressing(tick));
+    EXPECT_NEAR(output.force.z, 2.0, 1e-15);
+    EXPECT_FALSE(output.fading);
+  }
+  // The proxy loop stops publishing: the proxy state's age grows past the 5 ms timeout.
+  double lastZ = 2.0;
+  int fadingTicks = 0;
+  for (int stalled = 0; stalled < 30; ++stalled, ++tick)
+  {
+    ServoForceInput input = pressing(tick);
+    input.proxyAge = 0.006 + stalled * kPeriod;
+    // The finger moves on while the proxy is stuck: the fade must not follow the stale spring.
+    input.sample.position.z = -0.002 - 0.001 * stalled;
+    const ServoForceOutput output = stage.step(input);
+    EXPECT_TRUE(output.proxyStale);
+    EXPECT_TRUE(output.fading);
+    // Ten ticks of 1 ms over a 10 ms fade: 2 N less 0.2 N a tick, from the force at the fault.
+    const double expected = std::max(0.0, 2.0 * (1.0 - (stalled + 1) * 0.1));
+    EXPECT_NEAR(output.force.z, expected, 1e-12) << "stalled tick " << stalled;
+    EXPECT_LE(output.force.z, lastZ);
+    lastZ = output.force.z;
+    fadingTicks += output.force.z > 0.0 ? 1 : 0;
+  }
+  EXPECT_EQ(fadingTicks, 9);
+  EXPECT_EQ(stage.gain(), 0.0);
+  // Fresh states again: the spring comes back over the fade time, not at once.
+  for (int fresh = 0; fresh < 12; ++fresh, ++tick)
+  {
+    const ServoForceOutput output = stage.step(pressing(tick));
+    const double gain = std::min(1.0, (fresh + 1) * 0.1);
+    EXPECT_NEAR(output.force.z, 2.0 * gain, 1e-12) << "fresh tick " << fresh;
+    EXPECT_EQ(output.fading, gain < 1.0 - 1e-12) << "fresh tick " << fresh;
+  }
+}
+
+TEST(ServoForce, LostDeviceFadesAndIsReported)
+{
+  ServoForce stage(testParameters());
+  stage.step(pressing(0));
+  ServoForceInput input = pressing(1);
+  input.sample.connected = false;
+  input.sample.valid = false;
+  input.proxyRefused = true;
+  const ServoForceOutput output = stage.step(input);
+  EXPECT_TRUE(output.deviceLost);
+  EXPECT_TRUE(output.fading);
+  EXPECT_NEAR(output.force.z, 1.8, 1e-12);
+  for (std::uint64_t tick = 2; tick < 20; ++tick)
+  {
+    input.time = static_cast<double>(tick) * kPeriod;
+    EXPECT_TRUE(std::isfinite(stage.step(input).force.z));
+  }
+  EXPECT_EQ(stage.lastForce(), Vec3{});
+}
+
+TEST(ServoForce, UnusableSampleHoldsTheLastForce)
+{
+  ServoForce stage(testParameters());
+  stage.step(pressing(0));
+  ServoForceInput input = pressing(1);
+  input.sample.valid = false;
+  input.sample.position = {std::nan(""), 0.0, 0.0};
+  const ServoForceOutput output = stage.step(input);
+  EXPECT_FALSE(output.fading);
+  EXPECT_NEAR(output.force.z, 2.0, 1e-15);
+}
+
+TEST(ServoForce, SceneChangeLimitsTheForceRateForTheWindow)
+{
+  ServoForce stage(testParameters());
+  ServoForceInput input = pressing(0);
+  input.sample.position.z = 0.0; // no force yet
+  EXPECT_EQ(stage.step(input).force, Vec3{});
+  // The first scene version is not a change; a jump to 2 N on the same scene goes through.
+  EXPECT_NEAR(stage.step(pressing(1)).force.z, 2.0, 1e-15);
+  // A new scene puts the proxy elsewhere: the spring asks for 8 N at once, the stage allows
+  // 100 N/s, 0.1 N a tick, for 20 ms.
+  std::uint64_t tick = 2;
+  double expected = 2.0;
+  for (; tick < 40; ++tick)
+  {
+    ServoForceInput changed = pressing(tick);
+    changed.sceneVersion = 2;
+    changed.proxy = {0.0, 0.0, 0.006};
+    const ServoForceOutput output = stage.step(changed);
+    // The window runs from the change (t = 2 ms) for 20 ms: ticks 2..21 are limited.
+    if (changed.time < 0.002 + 0.02)
+    {
+      expected = std::min(8.0, expected + 0.1);
+      EXPECT_TRUE(output.rateLimited) << "tick " << tick;
+    }
+    else
+    {
+      expected = 8.0;
+      EXPECT_FALSE(output.rateLimited) << "tick " << tick;
+    }
+    EXPECT_NEAR(output.force.z, expected, 1e-9) << "tick " << tick;
+  }
+}
+
+} // namespace
+} // namespace proxima

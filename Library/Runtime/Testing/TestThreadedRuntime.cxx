@@ -1,0 +1,342 @@
+// The threaded runtime against the lockstep runner and against its safety rules. Nothing here
+// asserts on how fast the machine is: where timing matters the test waits for a state with a
+// generous deadline, and what it checks is a sequence or a bound the design guarantees.
+#include "Runtime/ThreadedRuntime.h"
+
+#include "Geometry/ProceduralMeshes.h"
+#include "Geometry/Testing/TestMeshLoader.h"
+#include "Runtime/LockstepRuntime.h"
+#include "Runtime/PathGenerators.h"
+#include "Runtime/SimulatedDevice.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <thread>
+
+namespace proxima
+{
+namespace
+{
+using namespace std::chrono_literals;
+
+std::shared_ptr<const CollisionScene> makeScene(TriangleSoup soup)
+{
+  auto scene = std::make_shared<CollisionScene>();
+  TriangleMesh mesh;
+  MeshError error;
+  EXPECT_TRUE(mesh.build(std::move(soup), error)) << error.message;
+  scene->addObject(std::move(mesh));
+  return scene;
+}
+
+ProxyParameters proxyParameters()
+{
+  ProxyParameters parameters;
+  parameters.radius = 0.002;
+  return parameters;
+}
+
+ServoParameters servoParameters()
+{
+  ServoParameters servo;
+  servo.stiffness = 800.0;
+  servo.maxForce = 8.0;
+  return servo;
+}
+
+/// Waits up to `limit` for `condition`, polling.
+bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds limit)
+{
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end)
+  {
+    if (condition())
+    {
+      return true;
+    }
+    std::this_thread::sleep_for(1ms);
+  }
+  return condition();
+}
+
+bool sameBits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+RuntimeSettings quietSettings(double rate)
+{
+  RuntimeSettings settings;
+  settings.servoRate = rate;
+  settings.realtimeScheduling = false;
+  return settings;
+}
+
+// A press into a sphere and a stroke across it: contact, sliding, release.
+FingerPath pressAndStroke(double rate)
+{
+  PressAndStroke press;
+  press.surfacePoint = {0.0, 0.0, 0.05};
+  press.inward = {0.0, 0.0, -1.0};
+  press.depth = 0.004;
+  press.strokeLength = 0.03;
+  press.speed = 0.2;
+  return makePressAndStrokePath(press, rate);
+}
+
+TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
+{
+  constexpr double kRate = 2000.0;
+  const auto scene = makeScene(makeIcosphere(4, 0.05));
+  const FingerPath path = pressAndStroke(kRate);
+  const Vec3 start = path.positions.front();
+  const std::uint64_t ticks = ticksCovering(path.startTime(), path.endTime(), kRate);
+  ASSERT_GT(ticks, 500u);
+
+  // Lockstep on a virtual clock.
+  std::vector<TickRecord> lockstep;
+  {
+    ProxySolver solver;
+    solver.setScene(scene.get(), proxyParameters());
+    solver.resetProxy(start);
+    SimulatedDevice device(path);
+    LockstepSettings settings;
+    settings.rate = kRate;
+    settings.numTicks = ticks;
+    runLockstep(settings, solver, device, servoParameters(),
+                [&](const TickRecord& record) { lockstep.push_back(record); });
+  }
+
+  // The same path played in real time through both threads.
+  SimulatedDevice device(path);
+  RuntimeSettings settings = quietSettings(kRate);
+  settings.recordTicks = ticks + 16;
+  settings.duration = path.endTime();
+  ThreadedRuntime runtime(device, servoParameters(), settings);
+  EXPECT_EQ(runtime.publishScene(scene, proxyParameters(), start), 1u);
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(waitFor([&] { return runtime.finished(); }, 60s));
+  runtime.stop();
+  const std::vector<TickRecord> threaded = runtime.records();
+  ASSERT_FALSE(threaded.empty());
+
+  // Each proxy update took the servo's newest sample; the records name the sample's tick. Until
+  // the proxy loop skips a sample (it does not on an idle machine) the two runs must agree bit
+  // for bit. A skip only changes the steps the proxy took: on this convex, frictionless model the
+  // proxy at each tick is the one point of the free region nearest the finger, so after a skip
+  // they must still agree to the solver's accuracy (1 nm). Ticks lost before the first sample are
+  // free space, where the proxy is the finger in both runs.
+  std::size_t bitForBit = 0;
+  bool skipped = false;
+  std::uint64_t contactTicks = 0;
+  for (std::size_t i = 0; i < threaded.size(); ++i)
+  {
+    const TickRecord& a = threaded[i];
+    ASSERT_LT(a.tick, lockstep.size());
+    const TickRecord& b = lockstep[a.tick];
+    if (i > 0)
+    {
+      ASSERT_GT(a.tick, threaded[i - 1].tick);
+      skipped = skipped || a.tick != threaded[i - 1].tick + 1;
+    }
+    ASSERT_EQ(a.time, b.time) << "tick " << a.tick;
+    ASSERT_TRUE(sameBits(a.finger, b.finger)) << "tick " << a.tick;
+    ASSERT_EQ(a.contacts > 0, b.contacts > 0) << "tick " << a.tick;
+    if (!skipped)
+    {
+      ASSERT_TRUE(sameBits(a.proxy, b.proxy)) << "tick " << a.tick;
+      ASSERT_TRUE(sameBits(a.force, b.force)) << "tick " << a.tick;
+      ASSERT_EQ(a.iterations, b.iterations) << "tick " << a.tick;
+      ++bitForBit;
+    }
+    else
+    {
+      ASSERT_LT(distance(a.proxy, b.proxy), 1e-9) << "tick " << a.tick;
+      ASSERT_LT(distance(a.force, b.force), 800.0 * 1e-9) << "tick " << a.tick;
+    }
+    contactTicks += a.contacts > 0 ? 1 : 0;
+  }
+  RecordProperty("ticks", static_cast<int>(ticks));
+  RecordProperty("ticks_compared", static_cast<int>(threaded.size()));
+  RecordProperty("ticks_agreeing_bit_for_bit", static_cast<int>(bitForBit));
+  EXPECT_GT(threaded.size(), ticks / 2) << "most ticks must have been compared";
+  EXPECT_GT(contactTicks, 50u);
+  const LoopStatistics servo = runtime.servoStatistics();
+  EXPECT_GE(servo.ticks + servo.missedDeadlines + 2, ticks);
+}
+
+TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
+{
+  const auto scene = makeScene(makeGrid(0.2, 4, 0.0));
+  // A finger held 3 mm under a floor: a steady 800 N/m * 3 mm = 2.4 N, after coming down.
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 0.01});
+  path.append(0.05, {0.0, 0.0, -0.003});
+  path.append(100.0, {0.0, 0.0, -0.003});
+  SimulatedDevice device(path);
+  ServoParameters servo = servoParameters();
+  servo.watchdogTimeout = 0.005;
+  servo.fadeTime = 0.05;
+  ThreadedRuntime runtime(device, servo, quietSettings(4000.0));
+  runtime.publishScene(scene, proxyParameters(), path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  const double spring = 800.0 * (0.003 + 0.002);
+  ASSERT_TRUE(waitFor([&] { return std::abs(runtime.latestState().force.z - spring) < 1e-6; }, 10s))
+    << runtime.latestState().force.z;
+  EXPECT_FALSE(runtime.latestState().fading);
+
+  runtime.injectProxyStall(0.4);
+  ASSERT_TRUE(waitFor([&] { return runtime.latestState().fading; }, 10s));
+  // Faded to nothing while the proxy loop is still asleep, never above the force it had.
+  double largest = 0.0;
+  const bool faded = waitFor(
+    [&] {
+      const HapticState state = runtime.latestState();
+      largest = std::max(largest, norm(state.force));
+      return state.fading && state.force == Vec3{};
+    },
+    10s);
+  EXPECT_TRUE(faded) << runtime.latestState().force.z;
+  EXPECT_LE(largest, spring + 1e-9);
+  // The loop wakes again: the spring comes back in full.
+  ASSERT_TRUE(waitFor(
+    [&] {
+      const HapticState state = runtime.latestState();
+      return !state.fading && std::abs(state.force.z - spring) < 1e-6;
+    },
+    10s))
+    << runtime.latestState().force.z;
+  runtime.stop();
+  EXPECT_FALSE(runtime.running());
+}
+
+TEST(ThreadedRuntime, LostDeviceFadesTheForceAndIsReported)
+{
+  const auto scene = makeScene(makeGrid(0.2, 4, 0.0));
+  class UnpluggedLater final : public HapticDevice
+  {
+  public:
+    std::atomic<bool> unplugged{false};
+    DeviceSample read(double) override
+    {
+      DeviceSample sample;
+      sample.position = {0.0, 0.0, -0.003};
+      sample.connected = !unplugged.load();
+      sample.valid = sample.connected;
+      return sample;
+    }
+    void writeForce(const Vec3&, double) override {}
+  } device;
+  ServoParameters servo = servoParameters();
+  ThreadedRuntime runtime(device, servo, quietSettings(4000.0));
+  runtime.publishScene(scene, proxyParameters(), {0.0, 0.0, 0.01});
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(waitFor([&] { return runtime.latestState().force.z > 1.0; }, 10s));
+  device.unplugged = true;
+  ASSERT_TRUE(waitFor(
+    [&] {
+      const HapticState state = runtime.latestState();
+      return state.deviceLost && state.fading && state.force == Vec3{};
+    },
+    10s));
+  runtime.stop();
+}
+
+TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
+{
+  // The new model: the 1.5M-triangle skull where the shared meshes are, else a 1.3M-triangle
+  // sphere. Built on this thread while the haptic threads run on a small sphere.
+  const std::string skull = std::string(PROXIMA_SHARED_MESHES) + "/cranium_bone_iso075mm.ply";
+  test::LoadedMesh loaded = test::loadTestMesh(skull);
+  const bool haveSkull = loaded.ok;
+  if (!haveSkull)
+  {
+    loaded.soup = makeIcosphere(8, 0.05);
+  }
+
+  const auto small = makeScene(makeIcosphere(3, 0.05));
+  FingerPath path; // far outside both models
+  path.append(0.0, {0.0, 0.0, 1000.0});
+  path.append(1000.0, {0.0, 0.0, 1000.0});
+  SimulatedDevice device(path);
+  ThreadedRuntime runtime(device, servoParameters(), quietSettings(4000.0));
+  runtime.publishScene(small, proxyParameters(), path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 1; }, 10s));
+
+  // Sample the published states while the big model is built and swapped in.
+  std::atomic<bool> sampling{true};
+  std::vector<std::uint64_t> versions;
+  versions.reserve(1 << 20);
+  std::thread sampler([&] {
+    while (sampling.load())
+    {
+      versions.push_back(runtime.latestState().sceneVersion);
+      std::this_thread::sleep_for(50us);
+    }
+  });
+  const LoopStatistics before = runtime.proxyStatistics();
+  std::shared_ptr<const CollisionScene> big = makeScene(std::move(loaded.soup));
+  const std::uint64_t version = runtime.publishScene(big, proxyParameters(), {0.0, 0.0, 1000.0});
+  EXPECT_EQ(version, 2u);
+  ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 2; }, 10s));
+  ASSERT_TRUE(waitFor([&] { return runtime.latestState().sceneVersion == 2; }, 10s));
+  sampling = false;
+  sampler.join();
+  const LoopStatistics after = runtime.proxyStatistics();
+  runtime.stop();
+
+  // Versions seen go 1 then 2, never back, never anything else.
+  ASSERT_FALSE(versions.empty());
+  for (std::size_t i = 0; i < versions.size(); ++i)
+  {
+    ASSERT_TRUE(versions[i] == 1 || versions[i] == 2) << versions[i];
+    if (i > 0)
+    {
+      ASSERT_GE(versions[i], versions[i - 1]);
+    }
+  }
+  EXPECT_GT(after.ticks, before.ticks);
+  // The build happened off the haptic threads: installing the 1.5M-triangle scene is a pointer
+  // swap and a few assignments (about 100 ns), so it fits in one 250 us servo period with a
+  // margin of thousands, and no proxy tick came near the build's hundreds of milliseconds.
+  EXPECT_LT(runtime.longestSceneInstallNanoseconds(), 250000);
+  EXPECT_LT(after.maxWorkNanoseconds, 100000000) << "a proxy tick took as long as a tree build";
+  RecordProperty("scene_install_ns", static_cast<int>(runtime.longestSceneInstallNanoseconds()));
+  RecordProperty("model_triangles", static_cast<int>(big->objects[0].mesh.numTriangles()));
+  RecordProperty("proxy_max_work_ns", static_cast<int>(after.maxWorkNanoseconds));
+  RecordProperty("proxy_over_budget_ticks", static_cast<int>(after.overBudgetTicks));
+  RecordProperty("skull", haveSkull ? 1 : 0);
+}
+
+TEST(ThreadedRuntime, StartMessageNamesTheRatesAndTheSchedulingOutcome)
+{
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 0.0});
+  SimulatedDevice device(path);
+  RuntimeSettings settings;
+  settings.servoRate = 20000.0; // above the 10 kHz ceiling: clamped
+  settings.realtimeScheduling = true;
+  settings.duration = 0.02;
+  ThreadedRuntime runtime(device, ServoParameters{}, settings);
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  EXPECT_NE(message.find("servo loop at 10000 Hz"), std::string::npos) << message;
+  EXPECT_NE(message.find("real-time scheduling"), std::string::npos) << message;
+  std::string again;
+  EXPECT_FALSE(runtime.start(again));
+  ASSERT_TRUE(waitFor([&] { return runtime.finished(); }, 10s));
+  runtime.stop();
+  runtime.stop();
+  const LoopStatistics servo = runtime.servoStatistics();
+  EXPECT_EQ(servo.rate, 10000.0);
+  EXPECT_GT(servo.ticks, 0u);
+}
+
+} // namespace
+} // namespace proxima

@@ -1,0 +1,193 @@
+#include "VTK/vtkHapticRenderer.h"
+
+#include "Runtime/SimulatedDevice.h"
+#include "Runtime/ThreadedRuntime.h"
+#include "VTK/vtkHapticScene.h"
+
+#include <vtkObjectFactory.h>
+
+vtkStandardNewMacro(vtkHapticRenderer);
+vtkCxxSetObjectMacro(vtkHapticRenderer, Scene, vtkHapticScene);
+
+vtkHapticRenderer::vtkHapticRenderer() = default;
+
+vtkHapticRenderer::~vtkHapticRenderer()
+{
+  this->Stop();
+  // The runtime goes before the device it reads.
+  m_runtime.reset();
+  this->SetScene(nullptr);
+}
+
+void vtkHapticRenderer::SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene)
+{
+  m_current = scene;
+  if (m_runtime)
+  {
+    this->Publish(std::move(scene));
+  }
+  this->Modified();
+}
+
+void vtkHapticRenderer::SetDevice(proxima::HapticDevice* device)
+{
+  if (m_runtime)
+  {
+    vtkErrorMacro("The device cannot change while the runtime exists; set it before Start.");
+    return;
+  }
+  m_ownedDevice.reset();
+  m_device = device;
+  this->Modified();
+}
+
+void vtkHapticRenderer::SetFingerPath(const proxima::FingerPath& path)
+{
+  if (m_runtime)
+  {
+    vtkErrorMacro("The finger path cannot change while the runtime exists; set it before Start.");
+    return;
+  }
+  if (path.empty())
+  {
+    vtkErrorMacro("An empty finger path.");
+    return;
+  }
+  m_ownedDevice = std::make_unique<proxima::SimulatedDevice>(path);
+  m_device = m_ownedDevice.get();
+  this->Modified();
+}
+
+void vtkHapticRenderer::SetProxyStart(double x, double y, double z)
+{
+  m_proxyStart = {x, y, z};
+  m_proxyStartSet = true;
+  this->Modified();
+}
+
+bool vtkHapticRenderer::Publish(std::shared_ptr<const proxima::CollisionScene> scene)
+{
+  if (!scene || !m_runtime)
+  {
+    return false;
+  }
+  proxima::ProxyParameters parameters;
+  parameters.radius = this->ProxyRadius;
+  parameters.maxIterations = this->MaxIterations;
+  parameters.skin = this->Skin;
+  parameters.stiffness = this->Stiffness;
+  parameters.timeStep = 1.0 / (this->ProxyRate > 0.0 ? this->ProxyRate : this->ServoRate);
+  m_publishedVersion = m_runtime->publishScene(std::move(scene), parameters, m_proxyStart);
+  return true;
+}
+
+bool vtkHapticRenderer::Start()
+{
+  if (this->IsRunning())
+  {
+    return true;
+  }
+  if (!m_device)
+  {
+    m_startMessage = "no device: SetDevice or SetFingerPath first";
+    return false;
+  }
+  this->UpdateScene();
+  if (!m_current)
+  {
+    m_startMessage = "no scene: SetScene (and a successful Update) or SetCollisionScene first";
+    return false;
+  }
+  if (!m_proxyStartSet)
+  {
+    // Read before the servo thread exists, so the device has one reader at a time.
+    m_proxyStart = m_device->read(0.0).position;
+  }
+  proxima::ServoParameters servo;
+  servo.stiffness = this->Stiffness;
+  servo.maxForce = this->MaxForce;
+  proxima::RuntimeSettings settings;
+  settings.servoRate = this->ServoRate;
+  settings.proxyRate = this->ProxyRate;
+  settings.realtimeScheduling = this->RealtimeScheduling != 0;
+  settings.duration = this->Duration;
+  m_runtime.reset();
+  m_runtime = std::make_unique<proxima::ThreadedRuntime>(*m_device, servo, settings);
+  // A restart publishes the newest snapshot again: a new runtime starts without a scene.
+  this->Publish(m_current);
+  return m_runtime->start(m_startMessage);
+}
+
+void vtkHapticRenderer::Stop()
+{
+  if (m_runtime)
+  {
+    m_runtime->stop();
+  }
+}
+
+bool vtkHapticRenderer::IsRunning() const
+{
+  return m_runtime && m_runtime->running();
+}
+
+bool vtkHapticRenderer::IsFinished() const
+{
+  return m_runtime && m_runtime->finished();
+}
+
+std::uint64_t vtkHapticRenderer::UpdateScene()
+{
+  if (this->Scene)
+  {
+    this->Scene->Update();
+    if (this->Scene->GetSceneVersion() != m_sceneVersionSeen && this->Scene->GetCollisionScene())
+    {
+      m_sceneVersionSeen = this->Scene->GetSceneVersion();
+      m_current = this->Scene->GetCollisionScene();
+      if (m_runtime)
+      {
+        this->Publish(m_current);
+      }
+    }
+  }
+  return m_publishedVersion;
+}
+
+proxima::HapticState vtkHapticRenderer::GetState() const
+{
+  return m_runtime ? m_runtime->latestState() : proxima::HapticState{};
+}
+
+std::uint64_t vtkHapticRenderer::GetLiveSceneVersion() const
+{
+  return m_runtime ? m_runtime->liveSceneVersion() : 0;
+}
+
+proxima::LoopStatistics vtkHapticRenderer::GetServoStatistics() const
+{
+  return m_runtime ? m_runtime->servoStatistics() : proxima::LoopStatistics{};
+}
+
+proxima::LoopStatistics vtkHapticRenderer::GetProxyStatistics() const
+{
+  return m_runtime ? m_runtime->proxyStatistics() : proxima::LoopStatistics{};
+}
+
+void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scene: " << this->Scene << "\n";
+  os << indent << "ProxyRadius: " << this->ProxyRadius << "\n";
+  os << indent << "Stiffness: " << this->Stiffness << "\n";
+  os << indent << "MaxForce: " << this->MaxForce << "\n";
+  os << indent << "MaxIterations: " << this->MaxIterations << "\n";
+  os << indent << "Skin: " << this->Skin << " (0: from the scene)\n";
+  os << indent << "ServoRate: " << this->ServoRate << "\n";
+  os << indent << "ProxyRate: " << this->ProxyRate << "\n";
+  os << indent << "RealtimeScheduling: " << (this->RealtimeScheduling ? "On" : "Off") << "\n";
+  os << indent << "Duration: " << this->Duration << "\n";
+  os << indent << "Running: " << (this->IsRunning() ? "yes" : "no")
+     << ", published scene version " << m_publishedVersion << ", live "
+     << this->GetLiveSceneVersion() << "\n";
+}

@@ -1,0 +1,152 @@
+// vtkHapticRenderer: the bridge between the pipeline and the haptic threads. It owns the
+// threaded runtime (Runtime/ThreadedRuntime.h): Start and Stop run its servo and proxy loops,
+// UpdateScene brings the vtkHapticScene up to date and publishes a new snapshot when the scene
+// made one (the haptic threads swap to it once it is complete and never wait for it), and
+// GetState hands the render thread the latest proxy, finger, force and contacts through the
+// runtime's lock-free hand-off. Call everything from one (the render) thread.
+#pragma once
+
+#include "Proxy/CollisionScene.h"
+#include "Runtime/FingerPath.h"
+#include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/LoopStatistics.h"
+
+#include <vtkObject.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+class vtkHapticScene;
+
+namespace proxima
+{
+class SimulatedDevice;
+class ThreadedRuntime;
+} // namespace proxima
+
+class vtkHapticRenderer : public vtkObject
+{
+public:
+  static vtkHapticRenderer* New();
+  vtkTypeMacro(vtkHapticRenderer, vtkObject)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The scene to render (default none). UpdateScene updates it and publishes its snapshots.
+  void SetScene(vtkHapticScene* scene);
+  vtkGetObjectMacro(Scene, vtkHapticScene);
+  ///@}
+
+  /// Or a snapshot built elsewhere (a scene file): published at Start, or at once when running.
+  /// Used when no vtkHapticScene is set.
+  void SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene);
+
+  /// The device (not owned; must outlive the run), or a finger path played by a simulated device
+  /// the renderer owns. Set one before Start.
+  void SetDevice(proxima::HapticDevice* device);
+  void SetFingerPath(const proxima::FingerPath& path);
+
+  ///@{
+  /// Proxy radius in metres (default 0.001), spring stiffness kp in N/m (default 1000), force
+  /// clamp in N (default 10), solver iterations per tick (default 256). Read at Start and at
+  /// each published scene.
+  vtkSetClampMacro(ProxyRadius, double, 1e-9, VTK_DOUBLE_MAX);
+  vtkGetMacro(ProxyRadius, double);
+  vtkSetClampMacro(Stiffness, double, 1e-9, VTK_DOUBLE_MAX);
+  vtkGetMacro(Stiffness, double);
+  vtkSetClampMacro(MaxForce, double, 1e-9, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxForce, double);
+  vtkSetClampMacro(MaxIterations, int, 1, 1000);
+  vtkGetMacro(MaxIterations, int);
+  ///@}
+
+  ///@{
+  /// Contact skin in metres (ProxyParameters::skin; default 0: from the scene, see
+  /// Documentation/Epsilons.md).
+  vtkSetClampMacro(Skin, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Skin, double);
+  ///@}
+
+  ///@{
+  /// Servo rate in Hz (default 4000, 1 to 10000) and proxy-update rate (default 0: the servo's).
+  vtkSetClampMacro(ServoRate, double, 1.0, 10000.0);
+  vtkGetMacro(ServoRate, double);
+  vtkSetClampMacro(ProxyRate, double, 0.0, 10000.0);
+  vtkGetMacro(ProxyRate, double);
+  ///@}
+
+  ///@{
+  /// Ask for real-time (SCHED_FIFO) threads (default off: a desktop viewer rarely has the
+  /// privilege; Start's message says whether it was granted).
+  vtkSetMacro(RealtimeScheduling, vtkTypeBool);
+  vtkGetMacro(RealtimeScheduling, vtkTypeBool);
+  vtkBooleanMacro(RealtimeScheduling, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// The run ends by itself after this many seconds of servo clock (default 0: at Stop).
+  vtkSetClampMacro(Duration, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Duration, double);
+  ///@}
+
+  /// Where the proxy starts (in free space). Default: the device's first sample.
+  void SetProxyStart(double x, double y, double z);
+
+  /// Builds the runtime, publishes the scene and starts both loops; after Stop or a finished run,
+  /// starts a new run from the proxy start on the newest scene. False if there is no
+  /// scene or device, or the threads did not start; GetStartMessage says why (and whether
+  /// real-time scheduling was granted).
+  bool Start();
+  void Stop();
+  bool IsRunning() const;
+  /// The run reached Duration.
+  bool IsFinished() const;
+  const std::string& GetStartMessage() const { return m_startMessage; }
+
+  /// Updates the vtkHapticScene and, if it made a new snapshot, publishes it (or keeps it for
+  /// Start). Returns the runtime's version of the newest published scene (0 before any).
+  std::uint64_t UpdateScene();
+
+  /// The latest state of the haptic threads (a default state before Start).
+  proxima::HapticState GetState() const;
+  /// The runtime's version of the scene the proxy loop uses (0 before the first is live).
+  std::uint64_t GetLiveSceneVersion() const;
+  proxima::LoopStatistics GetServoStatistics() const;
+  proxima::LoopStatistics GetProxyStatistics() const;
+  /// The runtime itself (null before Start), for what this class does not forward.
+  proxima::ThreadedRuntime* GetRuntime() { return m_runtime.get(); }
+
+protected:
+  vtkHapticRenderer();
+  ~vtkHapticRenderer() override;
+
+  vtkHapticScene* Scene = nullptr;
+  double ProxyRadius = 0.001;
+  double Stiffness = 1000.0;
+  double MaxForce = 10.0;
+  int MaxIterations = 256;
+  double Skin = 0.0;
+  double ServoRate = 4000.0;
+  double ProxyRate = 0.0;
+  vtkTypeBool RealtimeScheduling = 0;
+  double Duration = 0.0;
+
+private:
+  vtkHapticRenderer(const vtkHapticRenderer&) = delete;
+  void operator=(const vtkHapticRenderer&) = delete;
+
+  bool Publish(std::shared_ptr<const proxima::CollisionScene> scene);
+
+  std::unique_ptr<proxima::SimulatedDevice> m_ownedDevice;
+  proxima::HapticDevice* m_device = nullptr;
+  std::unique_ptr<proxima::ThreadedRuntime> m_runtime;
+  /// The newest snapshot (published, or waiting for Start).
+  std::shared_ptr<const proxima::CollisionScene> m_current;
+  std::uint64_t m_sceneVersionSeen = 0;
+  std::uint64_t m_publishedVersion = 0;
+  bool m_proxyStartSet = false;
+  proxima::Vec3 m_proxyStart;
+  std::string m_startMessage;
+};

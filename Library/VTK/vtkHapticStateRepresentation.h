@@ -1,0 +1,106 @@
+// vtkHapticStateRepresentation: draws one HapticState (Runtime/HapticState.h): the proxy sphere,
+// the finger as a translucent ghost sphere, the spring between them, a translucent disc on the
+// constraint plane of each contact, the friction cone at each contact with friction (closed and
+// green while the proxy sticks, open and orange while it slips) and the force on the finger as
+// an arrow from the proxy's centre (from the finger it would start inside the surface, unseen). Render-thread only: feed it vtkHapticRenderer::GetState() each frame, or states
+// computed in lockstep.
+#pragma once
+
+#include "Runtime/HapticState.h"
+
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+
+class vtkActor;
+class vtkArrowSource;
+class vtkConeSource;
+class vtkLineSource;
+class vtkRegularPolygonSource;
+class vtkRenderer;
+class vtkSphereSource;
+class vtkTransform;
+
+class vtkHapticStateRepresentation : public vtkObject
+{
+public:
+  static vtkHapticStateRepresentation* New();
+  vtkTypeMacro(vtkHapticStateRepresentation, vtkObject)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Moves every part to `state`; parts without a subject (contacts beyond numContacts, cones of
+  /// frictionless contacts, a zero force) are hidden.
+  void SetState(const proxima::HapticState& state);
+  const proxima::HapticState& GetState() const { return m_state; }
+
+  void AddToRenderer(vtkRenderer* renderer);
+  void RemoveFromRenderer(vtkRenderer* renderer);
+
+  ///@{
+  /// Radius of the contact discs in metres; 0 (the default) uses four proxy radii.
+  vtkSetClampMacro(ContactDiscRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ContactDiscRadius, double);
+  ///@}
+
+  ///@{
+  /// Height of the friction cones in metres; 0 (the default) uses three proxy radii.
+  vtkSetClampMacro(FrictionConeHeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FrictionConeHeight, double);
+  ///@}
+
+  ///@{
+  /// Length of the force arrow per newton, in metres (default 0.002).
+  vtkSetClampMacro(ForceScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ForceScale, double);
+  ///@}
+
+  ///@{
+  /// Opacity of the finger's ghost sphere (default 0.3) and of the contact discs (default 0.4).
+  vtkSetClampMacro(FingerOpacity, double, 0.0, 1.0);
+  vtkGetMacro(FingerOpacity, double);
+  vtkSetClampMacro(ContactDiscOpacity, double, 0.0, 1.0);
+  vtkGetMacro(ContactDiscOpacity, double);
+  ///@}
+
+  /// The parts, to restyle them (colours, visibility); SetState sets their visibility.
+  vtkActor* GetProxyActor() { return m_proxyActor; }
+  vtkActor* GetFingerActor() { return m_fingerActor; }
+  vtkActor* GetSpringActor() { return m_springActor; }
+  vtkActor* GetForceActor() { return m_forceActor; }
+  vtkActor* GetContactDiscActor(int contact);
+  vtkActor* GetFrictionConeActor(int contact);
+
+protected:
+  vtkHapticStateRepresentation();
+  ~vtkHapticStateRepresentation() override;
+
+  double ContactDiscRadius = 0.0;
+  double FrictionConeHeight = 0.0;
+  double ForceScale = 0.002;
+  double FingerOpacity = 0.3;
+  double ContactDiscOpacity = 0.4;
+
+private:
+  vtkHapticStateRepresentation(const vtkHapticStateRepresentation&) = delete;
+  void operator=(const vtkHapticStateRepresentation&) = delete;
+
+  void UpdateForceArrow();
+  void UpdateContact(int contact);
+
+  proxima::HapticState m_state;
+  vtkSmartPointer<vtkSphereSource> m_proxySource;
+  vtkSmartPointer<vtkSphereSource> m_fingerSource;
+  vtkSmartPointer<vtkLineSource> m_springSource;
+  vtkSmartPointer<vtkArrowSource> m_arrowSource;
+  vtkSmartPointer<vtkTransform> m_arrowTransform;
+  vtkSmartPointer<vtkActor> m_proxyActor;
+  vtkSmartPointer<vtkActor> m_fingerActor;
+  vtkSmartPointer<vtkActor> m_springActor;
+  vtkSmartPointer<vtkActor> m_forceActor;
+  static constexpr int kMaxContacts = 3;
+  std::array<vtkSmartPointer<vtkRegularPolygonSource>, kMaxContacts> m_discSources;
+  std::array<vtkSmartPointer<vtkActor>, kMaxContacts> m_discActors;
+  std::array<vtkSmartPointer<vtkConeSource>, kMaxContacts> m_coneSources;
+  std::array<vtkSmartPointer<vtkActor>, kMaxContacts> m_coneActors;
+};

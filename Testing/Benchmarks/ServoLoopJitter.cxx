@@ -1,0 +1,177 @@
+// Measures the threaded runtime's loops on the real clock: the servo at a chosen rate (4 kHz by
+// default) for a chosen time (60 s) while the finger strokes the 1.5M-triangle skull, and
+// optionally a model swap half way: a second skull scene is built on this thread while the loops
+// run and is published. Prints one JSON object: period jitter quantiles, missed deadlines, ticks
+// over budget, the longest period and tick, and the swap's build-to-live time; and writes the
+// servo period histogram as CSV for Tools/servo_jitter.py. Not a test: the numbers depend on the
+// machine and its load.
+//
+//   ServoLoopJitter [--seconds S] [--rate HZ] [--swap] [--histogram FILE.csv] [--mesh FILE]
+#include "IO/MeshReader.h"
+#include "Runtime/PathGenerators.h"
+#include "Runtime/SimulatedDevice.h"
+#include "Runtime/ThreadedRuntime.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <thread>
+
+namespace
+{
+using namespace proxima;
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::shared_ptr<const CollisionScene> buildScene(const std::string& file, double& buildMs)
+{
+  const auto start = Clock::now();
+  auto scene = std::make_shared<CollisionScene>();
+  scene->addObject(loadTriangleMesh(file, 0.001));
+  buildMs = millisecondsSince(start);
+  return scene;
+}
+
+nlohmann::json loopJson(const LoopStatistics& statistics)
+{
+  return {{"rate_hz", statistics.rate},
+          {"ticks", statistics.ticks},
+          {"missed_deadlines", statistics.missedDeadlines},
+          {"over_budget_ticks", statistics.overBudgetTicks},
+          {"jitter_us",
+           {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
+            {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
+            {"p99.9", statistics.jitterQuantileNanoseconds(0.999) / 1e3},
+            {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}}},
+          {"period_us",
+           {{"min", static_cast<double>(statistics.minPeriodNanoseconds) / 1e3},
+            {"max", static_cast<double>(statistics.maxPeriodNanoseconds) / 1e3}}},
+          {"max_work_us", static_cast<double>(statistics.maxWorkNanoseconds) / 1e3}};
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  double seconds = 60.0;
+  double rate = 4000.0;
+  bool swap = false;
+  std::string histogram;
+  std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/cranium_bone_iso075mm.ply";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string argument = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (argument == "--seconds" && hasValue)
+    {
+      seconds = std::atof(argv[++i]);
+    }
+    else if (argument == "--rate" && hasValue)
+    {
+      rate = std::atof(argv[++i]);
+    }
+    else if (argument == "--swap")
+    {
+      swap = true;
+    }
+    else if (argument == "--histogram" && hasValue)
+    {
+      histogram = argv[++i];
+    }
+    else if (argument == "--mesh" && hasValue)
+    {
+      mesh = argv[++i];
+    }
+    else
+    {
+      std::cerr << "usage: ServoLoopJitter [--seconds S] [--rate HZ] [--swap] "
+                   "[--histogram FILE.csv] [--mesh FILE]\n";
+      return 2;
+    }
+  }
+
+  double firstBuildMs = 0.0;
+  const auto scene = buildScene(mesh, firstBuildMs);
+  ProxyParameters parameters;
+  parameters.radius = 0.001;
+  // Circles inside the skull at mid-height, repeated for the whole run: the proxy slides along
+  // the bone's inside the whole time, so every proxy tick does real work.
+  const Aabb bounds = scene->objects[0].mesh.bounds();
+  const FingerPath lap = makeDefaultPath("circle", bounds, parameters.radius, rate);
+  std::vector<FingerPath> laps;
+  for (double covered = 0.0; covered < seconds + 1.0; covered += lap.endTime() - lap.startTime())
+  {
+    laps.push_back(lap);
+  }
+  SimulatedDevice device(concatenatePaths(laps, rate));
+
+  RuntimeSettings settings;
+  settings.servoRate = rate;
+  settings.duration = seconds;
+  ServoParameters servo;
+  ThreadedRuntime runtime(device, servo, settings);
+  runtime.publishScene(scene, parameters, device.path().positions.front());
+  std::string message;
+  if (!runtime.start(message))
+  {
+    std::cerr << "ServoLoopJitter: " << message << "\n";
+    return 1;
+  }
+  std::cerr << "ServoLoopJitter: " << message << "\n";
+
+  nlohmann::json swapJson = nullptr;
+  if (swap)
+  {
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds / 2));
+    const auto start = Clock::now();
+    double buildMs = 0.0;
+    auto next = buildScene(mesh, buildMs);
+    const std::uint64_t version = runtime.publishScene(next, parameters, {});
+    const double publishMs = millisecondsSince(start);
+    while (runtime.liveSceneVersion() < version)
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(20));
+    }
+    swapJson = {{"read_and_build_ms", buildMs},
+                {"publish_ms", publishMs - buildMs},
+                {"build_to_live_ms", millisecondsSince(start)},
+                {"install_in_proxy_loop_us",
+                 static_cast<double>(runtime.longestSceneInstallNanoseconds()) / 1e3},
+                {"triangles", next->objects[0].mesh.numTriangles()}};
+  }
+  while (!runtime.finished())
+  {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  runtime.stop();
+
+  const LoopStatistics servoStatistics = runtime.servoStatistics();
+  nlohmann::json report = {{"mesh", mesh},
+                           {"triangles", scene->objects[0].mesh.numTriangles()},
+                           {"seconds", seconds},
+                           {"scheduling", message},
+                           {"servo", loopJson(servoStatistics)},
+                           {"proxy", loopJson(runtime.proxyStatistics())},
+                           {"swap", swapJson}};
+  std::cout << report.dump(2) << "\n";
+  if (!histogram.empty())
+  {
+    std::ofstream file(histogram);
+    file << "period_us,ticks\n";
+    for (int i = 0; i < LoopStatistics::kBins; ++i)
+    {
+      if (servoStatistics.periodHistogram[i] != 0)
+      {
+        file << i << "," << servoStatistics.periodHistogram[i] << "\n";
+      }
+    }
+  }
+  return 0;
+}
