@@ -25,6 +25,8 @@ packages=(
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   # tests, benchmarks, offscreen rendering and plots
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib
+  # libFuzzer targets (Tools/fuzz-smoke.sh): clang with its fuzzer and sanitizer runtimes
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

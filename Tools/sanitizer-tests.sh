@@ -8,4 +8,5 @@ cd "$(dirname "$0")/.."
 cmake -G Ninja -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPROXIMA_ENABLE_SANITIZERS=ON -DPROXIMA_BUILD_BENCHMARKS=OFF
 cmake --build build-asan --parallel 2
-ctest --test-dir build-asan --output-on-failure -j2
+# The stress label runs a quarter of its random cases here (the same seeds, the first ones).
+PROXIMA_STRESS_SCALE=0.25 ctest --test-dir build-asan --output-on-failure -j2

@@ -144,30 +144,49 @@ Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec
   {
     return planar;
   }
-  const double hessian = 1.0 - depth / rho;
-  if (!(hessian > 1.0 / kMaxCurvatureStretch))
-  {
-    // The finger is at or past the edge's axis (the corner): no minimum lies on this arc and
-    // the quadratic model says nothing useful. The plain slide rolls the proxy over.
-    return planar;
-  }
-  const double stretch = 1.0 / hessian;
   Vec3 from;
   Vec3 to;
   const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
-  if (!edgeOf(corners, plane.closest.feature, from, to))
+  Vec3 along;
+  if (edgeOf(corners, plane.closest.feature, from, to))
   {
-    return planar * stretch; // a corner: every tangent direction is curved
+    along = to - from;
   }
-  const Vec3 along = to - from;
   const double alongSquared = squaredNorm(along);
-  if (!(alongSquared > 0.0))
+  // Along an edge the cylinder is straight: only the part across it is stretched (a corner, or
+  // an edge of zero length, is curved in every tangent direction).
+  const Vec3 straight =
+    alongSquared > 0.0 ? along * (dot(planar, along) / alongSquared) : Vec3{};
+  const double hessian = 1.0 - depth / rho;
+  if (hessian > 1.0 / kMaxCurvatureStretch)
   {
-    return planar * stretch;
+    return straight + (planar - straight) * (1.0 / hessian);
   }
-  // Along the edge the cylinder is straight: only the part across it is stretched.
-  const Vec3 straight = along * (dot(planar, along) / alongSquared);
-  return straight + (planar - straight) * stretch;
+  // The finger is near the edge's axis (the corner itself), where the Hessian vanishes and the
+  // quadratic model says nothing. Inside the cylinder (ball) the minimum is still where the ray
+  // from the axis through the finger meets it: slide to that ray's crossing of the tangent plane
+  // (where the stretched slide would end), so that the next move falls onto it. Without this
+  // the plain slides creep: a finger 5 um from the apex of a narrow concave corner, the proxy
+  // touching only the apex, took 2752 iterations (stress seed 6010).
+  Vec3 across = toFinger + plane.normal * rho; // the finger seen from the touched feature
+  if (alongSquared > 0.0)
+  {
+    across = across - along * (dot(across, along) / alongSquared);
+  }
+  const double offAxis = norm(across);
+  if (!(offAxis < rho) || !(offAxis > 0.0))
+  {
+    // Past the axis no minimum lies on this arc, and on it every point is one: the plain slide
+    // rolls the proxy over.
+    return planar;
+  }
+  const Vec3 ray = across / offAxis;
+  const double cosine = dot(ray, plane.normal);
+  if (!(cosine > 1.0 / kMaxCurvatureStretch))
+  {
+    return planar; // the ray leaves on the far side of the axis, or nearly along the plane
+  }
+  return straight + ray * (rho / cosine) - plane.normal * rho;
 }
 
 void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& parameters)
@@ -182,6 +201,19 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
                                                        : parameters.radius;
   m_cache.invalidate();
   m_planesValid = false;
+  m_reachRadius = 0.0;
+  if (scene != nullptr && !scene->objects.empty())
+  {
+    Aabb box;
+    for (const CollisionObject& object : scene->objects)
+    {
+      box.expand(object.mesh.bounds().lower);
+      box.expand(object.mesh.bounds().upper);
+    }
+    m_reachCenter = box.center();
+    m_reachRadius = kReachFactor * (scene->maxAbsCoordinate() +
+                                    std::max(scene->diagonal(), parameters.radius));
+  }
   // DESIGN.md section 4's accuracy scale: 1 nm, or 1e-9 of the scene's size if larger.
   m_shadingTolerance = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
 }
@@ -571,15 +603,38 @@ double ProxySolver::frictionLimitedTravel(const GoalSolution& solution, double t
   return std::max(0.0, allowed);
 }
 
-ProxyTickResult ProxySolver::update(const Vec3& finger)
+Vec3 ProxySolver::withinReach(const Vec3& finger) const
+{
+  if (!(m_reachRadius > 0.0))
+  {
+    return finger;
+  }
+  const Vec3 offset = finger - m_reachCenter;
+  // Scaled first: the squares of a 1e200 m offset overflow.
+  const double scale = maxAbsComponent(offset);
+  if (!(scale > m_reachRadius / 2.0))
+  {
+    return finger;
+  }
+  const Vec3 direction = offset / scale;
+  const double length = scale * norm(direction);
+  if (length <= m_reachRadius)
+  {
+    return finger;
+  }
+  return m_reachCenter + direction * (m_reachRadius / norm(direction));
+}
+
+ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
 {
   ProxyTickResult result;
   result.proxy = m_proxy;
-  if (!isFinite(finger))
+  if (!isFinite(requestedFinger))
   {
     result.refusedFinger = true;
     return result;
   }
+  const Vec3 finger = withinReach(requestedFinger);
   // Steps shorter than this are rounding noise of the goal solve, not motion: 1% of the skin.
   const double stepTolerance = 0.01 * m_skin;
   refreshCache(result.queries);

@@ -92,8 +92,19 @@ public:
     m_planesValid = false;
   }
 
-  /// One tick: moves the proxy as far toward `finger` as the constraints allow.
+  /// One tick: moves the proxy as far toward `finger` as the constraints allow. A finger farther
+  /// than reachRadius() from the scene's centre is sought at that distance, in its direction.
   ProxyTickResult update(const Vec3& finger);
+
+  /// How far from the centre of the scene's bounding box the proxy may go: kReachFactor times
+  /// (largest absolute coordinate + max(diagonal, radius)). Out there the rounding of a position
+  /// is a sixteenth of the skin (resolveSkin: at least 256 units in the last place of that sum);
+  /// beyond it a move back to the scene cannot place the proxy within its skin, and a finger
+  /// 1e200 m away made the swept-sphere quadratic overflow and the proxy pass through a sphere
+  /// (stress suite, StressFingerInput.AbsurdlyFarFiniteFingers). 0 without a scene.
+  static constexpr double kReachFactor = 16.0;
+  double reachRadius() const { return m_reachRadius; }
+  const Vec3& reachCenter() const { return m_reachCenter; }
 
   const Vec3& proxy() const { return m_proxy; }
   double radius() const { return m_parameters.radius; }
@@ -134,6 +145,8 @@ private:
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
+  /// `finger`, or the point at reachRadius() from reachCenter() in its direction if farther.
+  Vec3 withinReach(const Vec3& finger) const;
   /// Re-centres the candidate cache on the proxy when it has wandered off, at a tick's start.
   void refreshCache(QueryStats& stats);
 
@@ -147,6 +160,8 @@ private:
   /// A shaded target that moves less than this between update stages is settled.
   double m_shadingTolerance = 1e-9;
   double m_lastTravel = 0.0;
+  Vec3 m_reachCenter;
+  double m_reachRadius = 0.0;
   NearbyTriangle m_nearby[kMaxNearbyTriangles];
   std::uint32_t m_nearbyObject[kMaxNearbyTriangles];
   ContactPlane m_planes[kMaxConstraintPlanes];

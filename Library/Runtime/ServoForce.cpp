@@ -35,6 +35,7 @@ ServoForceOutput ServoForce::step(const ServoForceInput& input)
   output.deviceLost = !input.sample.connected;
   output.proxyStale = input.proxyAge > m_parameters.watchdogTimeout;
   Vec3 force;
+  bool held = false;
   if (output.deviceLost || output.proxyStale)
   {
     // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
@@ -73,13 +74,16 @@ ServoForceOutput ServoForce::step(const ServoForceInput& input)
     }
     else
     {
-      // Never NaN into a force (DESIGN.md section 6): hold the last one.
+      // Never NaN into a force (DESIGN.md section 6): hold the last one, exactly (it was clamped
+      // when it was made; clamping it again can move it by rounding, so a held clamped force
+      // changed in its last bit: found by the stress suite's NaN fingers).
       force = m_lastForce;
+      held = true;
     }
   }
 
   const double magnitude = norm(force);
-  if (magnitude > m_maxForce)
+  if (!held && magnitude > m_maxForce)
   {
     force = force * (m_maxForce / magnitude);
     output.clamped = true;

@@ -293,6 +293,13 @@ MeshOracle::MeshOracle(const CollisionScene& scene) : m_impl(std::make_unique<Im
 MeshOracle::~MeshOracle() = default;
 
 std::size_t MeshOracle::numTriangles() const { return m_impl->triangles.size(); }
+Aabb MeshOracle::bounds() const
+{
+  Aabb box;
+  box.expand(m_impl->lower);
+  box.expand(m_impl->upper);
+  return box;
+}
 double MeshOracle::diagonal() const { return m_impl->diagonal; }
 
 double MeshOracle::pointTriangleDistance(const Vec3& p, const TriangleCorners& t, Vec3* closest,
@@ -637,7 +644,47 @@ double TickChecker::residual(const Vec3& proxy, const Vec3& finger, double* slid
   return length - norm(v - x);
 }
 
-void TickChecker::check(std::uint64_t tick, const Vec3& finger, const Vec3& proxy,
+Vec3 TickChecker::sought(const Vec3& finger) const
+{
+  // The solver's documented reach (ProxySolver::reachRadius): 16 (M + max(diagonal, r)) about the
+  // centre of the scene's box, computed here from the oracle's own triangles, in long double.
+  const Aabb box = m_oracle.bounds();
+  const long double largest =
+    std::max(maxAbsComponent(box.lower), maxAbsComponent(box.upper));
+  const long double reach =
+    16.0L * (largest + std::max<long double>(m_oracle.diagonal(), m_parameters.radius));
+  const Vec3 center = box.center();
+  long double d[3];
+  long double scale = 0.0L;
+  for (int i = 0; i < 3; ++i)
+  {
+    d[i] = static_cast<long double>(finger[i]) - center[i];
+    scale = std::max(scale, std::fabs(d[i]));
+  }
+  if (!(scale > 0.0L) || !std::isfinite(static_cast<double>(scale)))
+  {
+    return finger;
+  }
+  long double squared = 0.0L;
+  for (long double& c : d)
+  {
+    c /= scale;
+    squared += c * c;
+  }
+  const long double length = scale * std::sqrt(squared);
+  if (length <= reach)
+  {
+    return finger;
+  }
+  Vec3 at;
+  for (int i = 0; i < 3; ++i)
+  {
+    at[i] = static_cast<double>(center[i] + d[i] * (reach / std::sqrt(squared)));
+  }
+  return at;
+}
+
+void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const Vec3& proxy,
                         int iterations, int contacts, bool refused, bool hitCap, bool overflow)
 {
   InvariantStats& s = m_stats;
@@ -645,8 +692,11 @@ void TickChecker::check(std::uint64_t tick, const Vec3& finger, const Vec3& prox
   const Vec3 before = m_proxy;
   auto where = [&]() {
     return "tick " + std::to_string(tick) + " (reproduce: resetProxy(" + str(before) +
-           "), update(" + str(finger) + "))";
+           "), update(" + str(requestedFinger) + "))";
   };
+  // A finger beyond the solver's reach is sought at the reach, in its direction; the invariants
+  // are about that point.
+  const Vec3 finger = refused ? requestedFinger : sought(requestedFinger);
   ++s.ticks;
   s.contactTicks += contacts > 0 ? 1 : 0;
   s.capTicks += hitCap ? 1 : 0;
@@ -673,7 +723,7 @@ void TickChecker::check(std::uint64_t tick, const Vec3& finger, const Vec3& prox
       capped.maxIterations = k;
       m_replay->setScene(&m_scene, capped);
       m_replay->resetProxy(before);
-      const ProxyTickResult step = m_replay->update(finger);
+      const ProxyTickResult step = m_replay->update(requestedFinger);
       if (k < iterations)
       {
         points.push_back(step.proxy);
@@ -763,7 +813,7 @@ void TickChecker::check(std::uint64_t tick, const Vec3& finger, const Vec3& prox
     uncapped.maxIterations = m_settings.uncappedIterations;
     m_replay->setScene(&m_scene, uncapped);
     m_replay->resetProxy(before);
-    const ProxyTickResult converged = m_replay->update(finger);
+    const ProxyTickResult converged = m_replay->update(requestedFinger);
     const double lag = distance(converged.proxy, proxy);
     s.maxCapLag = std::max(s.maxCapLag, lag);
     if (converged.hitIterationCap)

@@ -56,6 +56,8 @@ public:
   MeshOracle& operator=(const MeshOracle&) = delete;
 
   std::size_t numTriangles() const;
+  /// Bounding box of all triangles.
+  Aabb bounds() const;
   /// Bounding-box diagonal of all triangles: the scene's length scale.
   double diagonal() const;
 
@@ -199,6 +201,9 @@ public:
   double residual(const Vec3& proxy, const Vec3& finger, double* slide = nullptr) const;
 
 private:
+  /// The point the solver seeks for `finger`: the finger, or where the ray to it leaves the
+  /// solver's documented reach (ProxySolver::reachRadius).
+  Vec3 sought(const Vec3& finger) const;
   /// (c) and (d) at the end of a tick.
   void checkEnd(const std::string& where, const Vec3& proxy, const Vec3& finger, int iterations);
 

@@ -20,15 +20,20 @@ namespace
 class ScriptedDevice final : public HapticDevice
 {
 public:
-  ScriptedDevice(FingerPath path, const std::set<std::uint64_t>& nanTicks, double startTime,
-                 double rate)
-    : m_device(std::move(path)), m_nanTicks(nanTicks), m_startTime(startTime), m_rate(rate)
+  ScriptedDevice(FingerPath path, const std::set<std::uint64_t>& nanTicks,
+                 const std::map<std::uint64_t, Vec3>& overrides, double startTime, double rate)
+    : m_device(std::move(path)), m_nanTicks(nanTicks), m_overrides(overrides),
+      m_startTime(startTime), m_rate(rate)
   {
   }
   DeviceSample read(double time) override
   {
     DeviceSample sample = m_device.read(time);
     const auto tick = static_cast<std::uint64_t>(std::llround((time - m_startTime) * m_rate));
+    if (const auto found = m_overrides.find(tick); found != m_overrides.end())
+    {
+      sample.position = found->second;
+    }
     if (m_nanTicks.count(tick) != 0)
     {
       sample.position.x = std::nan("");
@@ -40,6 +45,7 @@ public:
 private:
   SimulatedDevice m_device;
   std::set<std::uint64_t> m_nanTicks;
+  std::map<std::uint64_t, Vec3> m_overrides;
   double m_startTime;
   double m_rate;
 };
@@ -104,7 +110,7 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
   lockstep.rate = c.rate;
   lockstep.startTime = c.path.startTime();
   lockstep.numTicks = ticksCovering(c.path.startTime(), c.path.endTime(), c.rate);
-  ScriptedDevice device(c.path, c.nanTicks, lockstep.startTime, c.rate);
+  ScriptedDevice device(c.path, c.nanTicks, c.fingerOverrides, lockstep.startTime, c.rate);
 
   oracle::InvariantStats& stats = checker.stats();
   Vec3 previousForce;
@@ -113,7 +119,12 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
                   record.fingerRefused, record.hitIterationCap, record.contactOverflow);
     // (e) Force: kp (proxy - finger) clamped to the device limit, or the last force held.
     const std::string where = "tick " + std::to_string(record.tick);
-    const bool nanTick = c.nanTicks.count(record.tick) != 0;
+    const auto overridden = c.fingerOverrides.find(record.tick);
+    const bool nanTick = c.nanTicks.count(record.tick) != 0 ||
+                         (overridden != c.fingerOverrides.end() &&
+                          !(std::isfinite(overridden->second.x) &&
+                            std::isfinite(overridden->second.y) &&
+                            std::isfinite(overridden->second.z)));
     if (nanTick != record.fingerRefused)
     {
       stats.fail(stats.refusalFailures, where + ": finger " + oracle::str(record.finger) +

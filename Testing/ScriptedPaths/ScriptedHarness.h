@@ -8,6 +8,7 @@
 #include "Runtime/ServoTick.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -31,6 +32,9 @@ struct ScriptedCase
   std::optional<Vec3> start;
   /// Ticks on which the device reports a NaN finger (the tick must be refused, force held).
   std::set<std::uint64_t> nanTicks;
+  /// Ticks on which the device reports this position instead of the path's (a jump, a huge
+  /// value, an infinity): refused exactly when it is not finite.
+  std::map<std::uint64_t, Vec3> fingerOverrides;
   /// Keep the trace (golden files, comparisons).
   bool keepTrace = false;
 };

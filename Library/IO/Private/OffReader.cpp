@@ -246,8 +246,16 @@ OffHeader readHeader(const std::string& path)
   {
     throw InputError(path, "not an OFF file (the first line is not an OFF header)");
   }
-  header.binary = first.find("BINARY") != std::string::npos;
   const std::size_t rest = first.find_first_not_of(" \t\r", off + 3);
+  // BINARY must be the header line's only word after OFF: OpenMesh's reader reads a line such as
+  // "OFF\x9f40-  BINARY" as ASCII, with counts this check would then have skipped (found by
+  // fuzzing: OpenMesh allocated without bound).
+  const std::size_t end = first.find_last_not_of(" \t\r");
+  header.binary = rest != std::string::npos && first.compare(rest, end + 1 - rest, "BINARY") == 0;
+  if (!header.binary && first.find("BINARY") != std::string::npos)
+  {
+    throw InputError(path, "garbled OFF header (BINARY must follow OFF alone on the first line)");
+  }
   if (!header.binary && rest != std::string::npos && std::isdigit(static_cast<unsigned char>(first[rest])))
   {
     // OpenMesh takes the whole first line as the header and would read the first vertex as the
@@ -255,7 +263,32 @@ OffHeader readHeader(const std::string& path)
     throw InputError(path, "the vertex, face and edge counts must be on the line after 'OFF' "
                            "(OpenMesh's reader does not accept them on the header line)");
   }
-  if (!header.binary)
+  if (header.binary)
+  {
+    // Three 32-bit counts (vertices, faces, edges) follow the header line; every vertex takes at
+    // least 12 bytes and every face 16, so counts the rest of the file cannot hold are garbage
+    // that OpenMesh would allocate for (found by fuzzing).
+    std::uint32_t counts[3] = {0, 0, 0};
+    stream.read(reinterpret_cast<char*>(counts), sizeof counts);
+    const std::streamoff at = stream.tellg();
+    stream.seekg(0, std::ios::end);
+    const std::streamoff size = stream.tellg();
+    if (!stream || at < 0 || size < at)
+    {
+      throw InputError(path, "cannot read the vertex, face and edge counts of the binary OFF file");
+    }
+    const auto left = static_cast<std::uint64_t>(size - at);
+    if (12ull * counts[0] + 16ull * counts[1] > left)
+    {
+      throw InputError(path, "the binary OFF header counts " + std::to_string(counts[0]) +
+                               " vertices and " + std::to_string(counts[1]) +
+                               " faces, more than the file's " + std::to_string(left) +
+                               " bytes can hold");
+    }
+    header.numVertices = counts[0];
+    header.numFaces = counts[1];
+  }
+  else
   {
     long long vertices = -1;
     long long faces = -1;

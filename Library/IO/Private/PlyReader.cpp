@@ -251,6 +251,8 @@ public:
   {
   }
 
+  /// Bytes not read yet: every value still to come takes at least one.
+  std::size_t remaining() const { return m_bytes.size() - m_position; }
   void setContext(const Element& element, std::uint64_t item)
   {
     m_element = &element;
@@ -476,6 +478,14 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fil
         if (count < 0)
         {
           cursor.failHere("negative list length");
+        }
+        // An ASCII count is read as a number whatever its declared type: a garbled one
+        // (333333333 for a uchar) must not size the index buffer (found by fuzzing:
+        // Testing/Fuzz/Findings/FuzzMeshReader-ply).
+        if (count > static_cast<double>(cursor.remaining()))
+        {
+          cursor.failHere("list length " + std::to_string(static_cast<long long>(count)) +
+                          " is more than the file has bytes left");
         }
         const bool keep = isFace && static_cast<int>(p) == indicesProperty;
         if (keep)

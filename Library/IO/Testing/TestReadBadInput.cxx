@@ -114,6 +114,13 @@ TEST_F(ReadBadInput, OffTruncatedOrGarbled)
   expectRefused(write("header.off", "FOO\n3 1 0\n"), "not an OFF file");
   expectRefused(write("oneline.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                 "counts must be on the line after 'OFF'");
+  // Found by fuzzing (Testing/Fuzz/Findings/FuzzMeshReader-off): a header OpenMesh reads as ASCII
+  // though it names BINARY, and binary counts the file cannot hold; OpenMesh allocated for both.
+  expectRefused(write("binary-word.off", "OFF\x9f" "40-  BINARY"), "garbled OFF header");
+  expectRefused(write("binary-counts.off", "OFFBINARY"),
+                "cannot read the vertex, face and edge counts of the binary OFF file");
+  expectRefused(write("binary-huge.off", std::string("OFF BINARY\n") + std::string(12, '\x7f')),
+                "more than the file's");
 }
 
 TEST_F(ReadBadInput, EmptyFiles)
@@ -188,6 +195,10 @@ TEST_F(ReadBadInput, NanInAsciiStlAndPly)
                                 "property list uchar int vertex_indices\nend_header\n";
   expectRefused(write("nan.ply", plyHeader + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n"),
                 "point 1 has a non-finite coordinate (1, inf, 0)");
+  // Found by fuzzing (Testing/Fuzz/Findings/FuzzMeshReader-ply): an ASCII list length far
+  // beyond its uchar type sized the index buffer (2.7 GB) before a value was read.
+  expectRefused(write("list-length.ply", plyHeader + "0 0 0\n1 0 0\n0 1 0\n333333333 0 1\n"),
+                "list length 333333333 is more than the file has bytes left");
   expectRefused(write("index.ply", plyHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"),
                 "face 0 refers to vertex 9, out of range (the file has 3 vertices)");
   expectRefused(write("word.ply", plyHeader + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"),
@@ -267,7 +278,8 @@ TEST_F(ReadBadInput, OffBinaryAndNormalsAreRead)
   const proxima::TriangleSoup soup = proxima::readMeshFile(write("binary.off", binary));
   ASSERT_EQ(soup.triangles.size(), 1u);
   EXPECT_EQ(soup.points[1], (proxima::Vec3{1, 0, 0}));
-  expectRefused(write("cut.off", binary.substr(0, binary.size() - 6)), "cannot read face 0");
+  // Cut short: the counts ask for more than the bytes left (refused before OpenMesh reads).
+  expectRefused(write("cut.off", binary.substr(0, binary.size() - 6)), "more than the file's");
 
   const proxima::TriangleSoup normals = proxima::readMeshFile(
     write("normals.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n"));

@@ -129,6 +129,25 @@ TEST(ServoForce, UnusableSampleHoldsTheLastForce)
   EXPECT_NEAR(output.force.z, 2.0, 1e-15);
 }
 
+TEST(ServoForce, AHeldClampedForceIsTheSameToTheLastBit)
+{
+  // This finger's clamped force has the magnitude 10.000000000000002 N: clamping it again while
+  // it is held moved it in its last bit (found by the stress suite's NaN fingers).
+  ServoForce stage(testParameters());
+  ServoForceInput input = pressing(0);
+  input.sample.position = {0.010392003859619449, 0.012572030410805402, -0.04344711407601869};
+  const ServoForceOutput clamped = stage.step(input);
+  EXPECT_TRUE(clamped.clamped);
+  for (std::uint64_t tick = 1; tick <= 20; ++tick)
+  {
+    ServoForceInput refused = pressing(tick);
+    refused.sample.valid = false;
+    refused.sample.position = {std::nan(""), 0.0, 0.0};
+    const ServoForceOutput held = stage.step(refused);
+    EXPECT_EQ(held.force, clamped.force) << "tick " << tick;
+  }
+}
+
 TEST(ServoForce, SceneChangeLimitsTheForceRateForTheWindow)
 {
   ServoForce stage(testParameters());
