@@ -193,7 +193,13 @@ std::string str(double value)
   return buffer;
 }
 
-std::string str(const Vec3& v) { return "{" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + "}"; }
+std::string str(const Vec3& v)
+{
+  // One snprintf, not "{" + std::string: GCC 12 warns falsely (-Wrestrict) on that concatenation.
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, "{%.17g, %.17g, %.17g}", v.x, v.y, v.z);
+  return buffer;
+}
 
 Vec3 projectOntoCone(const Vec3& v, const Vec3* normals, int count)
 {
