@@ -66,8 +66,12 @@ def main():
 
     figure, axis = plt.subplots(figsize=(8, 4.5))
     for name, colour in (("plain", "tab:blue"), ("swap", "tab:orange")):
-        bins = reports[name]["histogram"]
-        axis.step([b for b, _ in bins], [n for _, n in bins], where="post", color=colour,
+        # Every 1 us bin, empty ones too, so that the log axis leaves gaps where no tick fell
+        # instead of drawing a line across them.
+        counts = dict(reports[name]["histogram"])
+        edges = list(range(0, max(counts) + 2))
+        heights = [counts.get(b, 0) or float("nan") for b in edges]
+        axis.step(edges, heights, where="post", color=colour,
                   label="%s (p99 jitter %.1f us, %d missed)" % (
                       "no swap" if name == "plain" else "1.5M-triangle swap at %g s" % (
                           arguments.seconds / 2),
