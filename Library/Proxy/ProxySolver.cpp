@@ -17,6 +17,10 @@ constexpr double kSameNormalCosine = 1.0 - 1e-14;
 // axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
 constexpr double kMaxCurvatureStretch = 64.0;
 
+// A stretched slide may cross a plane by this fraction of the finger distance (the goal
+// solver's feasibility tolerance): rounding, not a heading into the plane.
+constexpr double kStretchFeasibility = 1e-12;
+
 // Iterations in a row that bring the proxy no nearer the finger before the tick ends: the paper's
 // loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
 // trading rounding errors between two planes, as 1 km from the origin).
@@ -122,6 +126,30 @@ Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& 
 }
 
 Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const
+{
+  // The stretch is worked out for the active plane alone, but the slide it stretches stays above
+  // the other planes only by the goal solve: stretched, it may head into one it merely touches.
+  // The sweep then blocks it at once (the proxy touches that triangle), and the next update stage,
+  // at the same point, stretches the same slide again. The liver corner (ProxySolverFound.
+  // StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide) ended so, 1.6e-7 m short of its
+  // minimum. A stretched step that crosses any plane gives way to the feasible planar slide.
+  const Vec3 stretched = stretchedSlide(solution, toFinger);
+  if (stretched == solution.displacement)
+  {
+    return stretched;
+  }
+  const double tolerance = kStretchFeasibility * norm(toFinger);
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    if (dot(m_normals[k], stretched) < -tolerance)
+    {
+      return solution.displacement;
+    }
+  }
+  return stretched;
+}
+
+Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFinger) const
 {
   const Vec3 planar = solution.displacement;
   if (solution.numActive != 1)
