@@ -10,8 +10,20 @@ namespace proxima
 namespace
 {
 // Two planes whose unit normals agree this closely are one plane: triangles sharing the touched
-// edge or vertex give the same normal, and one copy is all the goal solver needs.
+// edge or vertex give the same normal, and one copy is all the goal solver needs. This also
+// merges the tangent plane of a neighbour's edge or corner just off the face the proxy rests on
+// (tilted by up to sqrt(4 eps / r), 3.5e-5 rad at r = 1 mm): harmless, as that edge stays
+// within the face's plane.
 constexpr double kSameNormalCosine = 1.0 - 1e-14;
+
+// Two face contacts (each the projection onto its own triangle's plane) are one plane only if
+// their normals differ by less than this angle, from the cross product: coplanar faces agree to
+// rounding (~1e-15 rad), while two different planes this close are sheets crossing at a tiny
+// angle. The cosine cannot tell angles below 1.5e-8 rad from 0, and merged sheets crossing at up
+// to 1.4e-7 rad, so that the goal solver saw one and its slides ran into the other (stress seed
+// 4009, 8.2e-11 rad). A merge at this angle hides a crossing of at most 1e-13 of a slide: below
+// the goal solver's feasibility tolerance and the sweep's touching slope (both 1e-12).
+constexpr double kSameFaceNormalSine = 1e-13;
 
 // The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
 // axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
@@ -373,7 +385,11 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     bool duplicate = false;
     for (int k = 0; k < m_numPlanes && !duplicate; ++k)
     {
-      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine;
+      const bool twoFaces = near.closest.feature == TriangleFeature::Face &&
+                            m_planes[k].closest.feature == TriangleFeature::Face;
+      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine &&
+                  (!twoFaces || squaredNorm(cross(m_normals[k], normal)) <=
+                                  kSameFaceNormalSine * kSameFaceNormalSine);
       if (duplicate)
       {
         m_planes[k].curved = m_planes[k].curved && curved; // one flat witness makes it flat
