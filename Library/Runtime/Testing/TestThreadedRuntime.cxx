@@ -267,7 +267,10 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   runtime.publishScene(small, proxyParameters(), path.positions.front());
   std::string message;
   ASSERT_TRUE(runtime.start(message)) << message;
+  // Installed in the proxy loop, then seen in a state the servo published (before that, under
+  // load, the servo can still be publishing states from before the first proxy update: version 0).
   ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 1; }, 10s));
+  ASSERT_TRUE(waitFor([&] { return runtime.latestState().sceneVersion == 1; }, 10s));
 
   // Sample the published states while the big model is built and swapped in.
   std::atomic<bool> sampling{true};
