@@ -3,6 +3,7 @@
 #include "IO/MeshFileFormat.h"
 #include "IO/Private/FileChecks.h"
 #include "IO/Private/FormatSignatures.h"
+#include "IO/Private/GltfChecks.h"
 #include "IO/Private/ObjReader.h"
 #include "IO/Private/OffReader.h"
 #include "IO/Private/PlyReader.h"
@@ -50,6 +51,11 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
     break;
   case MeshFileFormat::Obj:
     data = detail::readObj(path);
+    break;
+  case MeshFileFormat::Gltf:
+    // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first.
+    detail::checkGltf(path, fileSize);
+    data = detail::readWithVtk(path, *format);
     break;
   default:
     data = detail::readWithVtk(path, *format);

@@ -159,9 +159,9 @@ TEST_F(ReadBadInput, GarbageBehindARightLookingStart)
   // Past the magic words the readers' own errors must come through, as one line.
   expectRefused(write("body.vtp", "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><Poly"),
                 "cannot read the file as VTK XML poly data");
-  expectRefused(write("body.glb", "glTF" + garbage(100)), "cannot read the file as glTF");
+  expectRefused(write("body.glb", "glTF" + garbage(100)), "not a valid GLB file: version 2727019525");
   expectRefused(write("body.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { } ] "),
-                "cannot read the file as glTF");
+                "not a valid glTF file: the JSON does not parse (at byte 52)");
   expectRefused(write("body.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n"),
                 "PLY element 'vertex' has no properties");
   expectRefused(write("noface.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
@@ -306,3 +306,194 @@ TEST_F(ReadBadInput, ObjNormalsAndTexCoordsArePerPoint)
   }
 }
 } // namespace
+
+namespace
+{
+// One triangle (0,0,0) (1,0,0) (0,1,0): 36 bytes of float positions, 3 uint16 indices and two
+// bytes of padding, 44 bytes in all (written out by hand from the glTF 2.0 layout).
+std::string triangleBytes()
+{
+  std::string bytes;
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  bytes.append(reinterpret_cast<const char*>(positions), sizeof(positions));
+  const std::uint16_t indices[4] = {0, 1, 2, 0};
+  bytes.append(reinterpret_cast<const char*>(indices), sizeof(indices));
+  return bytes;
+}
+
+const char* kTriangleBase64 = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=";
+
+/// A one-triangle glTF document; each argument replaces one part of it.
+std::string gltfJson(const std::string& buffer = std::string(R"({"byteLength": 44, "uri": "data:application/octet-stream;base64,)") +
+                                                 kTriangleBase64 + "\"}",
+                     const std::string& primitive = R"({"attributes": {"POSITION": 0}, "indices": 1})",
+                     const std::string& views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6})",
+                     const std::string& accessors = R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                                       {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"})",
+                     const std::string& nodes = R"({"mesh": 0})")
+{
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [)" + nodes +
+         R"(], "meshes": [{"primitives": [)" + primitive + R"(]}], "buffers": [)" + buffer +
+         R"(], "bufferViews": [)" + views + R"(], "accessors": [)" + accessors + "]}";
+}
+
+/// A GLB file: the 12-byte header, the JSON chunk (padded with spaces) and a BIN chunk.
+std::string glb(std::string json, const std::string& bin)
+{
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  std::string padded = bin;
+  padded.resize((bin.size() + 3) / 4 * 4, '\0');
+  const auto word = [](std::uint32_t value) {
+    return std::string(reinterpret_cast<const char*>(&value), 4); // little-endian host
+  };
+  const std::string body = word(static_cast<std::uint32_t>(json.size())) + "JSON" + json +
+                           word(static_cast<std::uint32_t>(padded.size())) + std::string("BIN\0", 4) +
+                           padded;
+  return "glTF" + word(2) + word(static_cast<std::uint32_t>(12 + body.size())) + body;
+}
+
+const char* kGlbBuffer = R"({"byteLength": 44})";
+} // namespace
+
+TEST_F(ReadBadInput, GltfBaseDocumentsAreRead)
+{
+  // The documents the tests below break one piece of: as written, each is one triangle.
+  EXPECT_EQ(proxima::readMeshFile(write("ok.gltf", gltfJson())).triangles.size(), 1u);
+  EXPECT_EQ(proxima::readMeshFile(write("ok.glb", glb(gltfJson(kGlbBuffer), triangleBytes())))
+              .triangles.size(),
+            1u);
+  write("ok.bin", triangleBytes());
+  EXPECT_EQ(proxima::readMeshFile(write("external.gltf", gltfJson(R"({"byteLength": 44, "uri": "ok.bin"})")))
+              .triangles.size(),
+            1u);
+}
+
+TEST_F(ReadBadInput, GlbHeaderAndChunksAgainstTheFileSize)
+{
+  std::string file = glb(gltfJson(kGlbBuffer), triangleBytes());
+  expectRefused(write("cut.glb", file.substr(0, file.size() - 4)),
+                "not a valid GLB file: its header announces " + std::to_string(file.size()) +
+                  " bytes but the file has " + std::to_string(file.size() - 4));
+  std::string jsonTooLong = file;
+  jsonTooLong[12] = '\x7f';
+  jsonTooLong[15] = '\x7f';
+  expectRefused(write("json.glb", jsonTooLong), "not a valid GLB file: its JSON chunk of 2130707071 bytes does not fit");
+  expectRefused(write("bin.glb", glb(gltfJson(R"({"byteLength": 48})"), triangleBytes())),
+                "not a valid glTF file: buffer 0 announces 48 bytes but holds 44");
+  expectRefused(write("nobin.glb", glb(gltfJson(kGlbBuffer), std::string())),
+                "buffer 0 announces 44 bytes but holds 0");
+}
+
+TEST_F(ReadBadInput, GltfBuffersHoldTheirLength)
+{
+  expectRefused(write("short.gltf", gltfJson(R"({"byteLength": 4000000000, "uri": "data:application/octet-stream;base64,)" +
+                                             std::string(kTriangleBase64) + "\"}")),
+                "buffer 0 announces 4000000000 bytes but holds 44");
+  expectRefused(write("char.gltf", gltfJson(R"({"byteLength": 3, "uri": "data:;base64,AA*A"})")),
+                "buffer 0: its base64 data has a bad character at offset 2");
+  expectRefused(write("plain.gltf", gltfJson(R"({"byteLength": 3, "uri": "data:,abc"})")),
+                "buffer 0: its data: uri is not base64");
+  expectRefused(write("missing.gltf", gltfJson(R"({"byteLength": 44, "uri": "nowhere.bin"})")),
+                "buffer 0: its file 'nowhere.bin' is missing or not a regular file");
+  write("small.bin", triangleBytes().substr(0, 40));
+  expectRefused(write("small.gltf", gltfJson(R"({"byteLength": 44, "uri": "small.bin"})")),
+                "buffer 0 announces 44 bytes but holds 40");
+  expectRefused(write("nouri.gltf", gltfJson(kGlbBuffer)),
+                "buffer 0 has no uri (only the first buffer of a .glb file with a BIN chunk may)");
+}
+
+TEST_F(ReadBadInput, GltfViewsAndAccessorsWithinTheirBuffers)
+{
+  const std::string buffer = std::string(R"({"byteLength": 44, "uri": "data:;base64,)") + kTriangleBase64 + "\"}";
+  const std::string primitive = R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  expectRefused(write("view.gltf", gltfJson(buffer, primitive,
+                                            R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 40, "byteLength": 6})")),
+                "bufferView 1 (byteOffset 40, byteLength 6) does not lie within buffer 0 of 44 bytes");
+  expectRefused(write("viewbuffer.gltf", gltfJson(buffer, primitive, R"({"buffer": 1, "byteLength": 36})")),
+                "bufferView 0: buffer refers to buffers[1] but the file has 1");
+  const std::string views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6})";
+  expectRefused(write("count.gltf", gltfJson(buffer, primitive, views,
+                                             R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                                                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"})")),
+                "accessor 0 (byteOffset 0, 4 elements of 12 bytes, stride 12) reaches beyond bufferView 0 of 36 bytes");
+  expectRefused(write("offset.gltf", gltfJson(buffer, primitive, views,
+                                              R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                                 {"bufferView": 1, "byteOffset": 2, "componentType": 5123, "count": 3, "type": "SCALAR"})")),
+                "accessor 1 (byteOffset 2, 3 elements of 2 bytes, stride 2) reaches beyond bufferView 1 of 6 bytes");
+  expectRefused(write("component.gltf", gltfJson(buffer, primitive, views,
+                                                 R"({"bufferView": 0, "componentType": 5127, "count": 3, "type": "VEC3"})")),
+                "accessor 0: unknown componentType 5127");
+  expectRefused(write("type.gltf", gltfJson(buffer, primitive, views,
+                                            R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC5"})")),
+                "accessor 0: type is missing or not one of SCALAR");
+  expectRefused(write("zero.gltf", gltfJson(buffer, primitive, views,
+                                            R"({"bufferView": 0, "componentType": 5126, "count": 0, "type": "VEC3"})")),
+                "accessor 0 has a count of 0");
+  expectRefused(write("sparse.gltf", gltfJson(buffer, primitive, views,
+                                              R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                                                  "sparse": {"count": 1}})")),
+                "accessor 0 is sparse (sparse accessors are not read)");
+  expectRefused(write("negative.gltf", gltfJson(buffer, primitive, views,
+                                                R"({"bufferView": 0, "componentType": 5126, "count": -3, "type": "VEC3"})")),
+                "accessor 0: count is not a non-negative integer");
+}
+
+TEST_F(ReadBadInput, GltfPrimitivesAreTrianglesFromFloatPositions)
+{
+  const std::string buffer = std::string(R"({"byteLength": 44, "uri": "data:;base64,)") + kTriangleBase64 + "\"}";
+  expectRefused(write("lines.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 0}, "indices": 1, "mode": 1})")),
+                "mesh 0 primitive 0 has mode 1 (only triangles, mode 4, are read");
+  expectRefused(write("noposition.gltf", gltfJson(buffer, R"({"attributes": {"NORMAL": 0}, "indices": 1})")),
+                "mesh 0 primitive 0 has no POSITION attribute");
+  expectRefused(write("position.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 5}, "indices": 1})")),
+                "mesh 0 primitive 0 attribute: POSITION refers to accessors[5] but the file has 2");
+  expectRefused(write("indices.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 0}, "indices": 0})")),
+                "mesh 0 primitive 0: its indices accessor is not of unsigned byte, short or int SCALAR");
+  expectRefused(write("floatindex.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 1}})")),
+                "mesh 0 primitive 0: its POSITION accessor is not of float VEC3");
+  expectRefused(write("normals.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 0, "NORMAL": 2}})",
+                                               R"({"buffer": 0, "byteLength": 36})",
+                                               R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                                  {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                                  {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"})")),
+                "mesh 0 primitive 0 attribute NORMAL has 2 elements for 3 vertices");
+}
+
+TEST_F(ReadBadInput, GltfIndicesBetweenObjectsInRange)
+{
+  const std::string buffer = std::string(R"({"byteLength": 44, "uri": "data:;base64,)") + kTriangleBase64 + "\"}";
+  const std::string primitive = R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  const std::string views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6})";
+  const std::string accessors = R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                   {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"})";
+  expectRefused(write("mesh.gltf", gltfJson(buffer, primitive, views, accessors, R"({"mesh": 3})")),
+                "node 0: mesh refers to meshes[3] but the file has 1");
+  expectRefused(write("cycle.gltf", gltfJson(buffer, primitive, views, accessors,
+                                             R"({"mesh": 0}, {"children": [2]}, {"children": [1]})")),
+                "node 1 is its own ancestor (the node hierarchy has a cycle)");
+  expectRefused(write("self.gltf", gltfJson(buffer, primitive, views, accessors, R"({"mesh": 0, "children": [0]})")),
+                "node 0 is its own ancestor");
+  expectRefused(write("parents.gltf", gltfJson(buffer, primitive, views, accessors,
+                                               R"({"mesh": 0}, {"children": [0]}, {"children": [0]})")),
+                "node 0 has more than one parent");
+  expectRefused(write("material.gltf", gltfJson(buffer, R"({"attributes": {"POSITION": 0}, "material": 0})")),
+                "mesh 0 primitive 0: material refers to materials[0] but the file has 0");
+}
+
+TEST_F(ReadBadInput, GltfFindingsOfTheFuzzerAreRefused)
+{
+  // The inputs with which VTK's loader crashed (Testing/Fuzz/Findings/FuzzMeshReader-glb, -gltf).
+  const fs::path findings = fs::path(PROXIMA_SOURCE_DIR) / "Testing" / "Fuzz" / "Findings";
+  const auto copy = [&](const char* folder, const char* name) {
+    std::ifstream in(findings / folder / name, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_FALSE(bytes.empty()) << name;
+    return bytes;
+  };
+  expectRefused(write("finding.glb", copy("FuzzMeshReader-glb",
+                                          "FuzzMeshReader-glb-crash-1453b0163f611af207e303f6490a2640cf07e98a")),
+                "not a valid glTF file: the JSON does not parse (at byte 254)");
+  expectRefused(write("finding.gltf", copy("FuzzMeshReader-gltf",
+                                           "FuzzMeshReader-gltf-crash-f42b4cb191384a0c4970532a9e87f9dfdae17faa")),
+                "not a valid glTF file: buffer 0: its data: uri is not base64 (only ';base64,' data is read)");
+}
