@@ -4,6 +4,8 @@
 # briefly from its seed corpus in Testing/Fuzz/Corpus/<target>/. New inputs go to a scratch
 # corpus, not into the repository; a crash leaves its input in build-fuzz/findings/ and fails.
 # Usage: bash Tools/fuzz-smoke.sh [seconds per target]      (default 20; CI uses the default)
+#        FUZZ_TARGETS="FuzzMeshReader-glb FuzzMeshReader-gltf" bash Tools/fuzz-smoke.sh 120
+#        (FUZZ_TARGETS replaces the list below: one reader at a time while fixing it)
 # The mutation seed is fixed (FUZZ_SEED, default 1) so that CI explores the same inputs each run;
 # set FUZZ_SEED=0 (libFuzzer: from the clock) to hunt.
 set -euo pipefail
@@ -21,6 +23,10 @@ targets=(FuzzMeshReader-obj FuzzMeshReader-ply FuzzSceneFile FuzzFingerPathFile 
 if [ "${FUZZ_ALL:-0}" = 1 ]; then
   targets+=(FuzzMeshReader-stl FuzzMeshReader-off FuzzMeshReader-vtp FuzzMeshReader-gltf
             FuzzMeshReader-glb)
+fi
+
+if [ -n "${FUZZ_TARGETS:-}" ]; then
+  read -r -a targets <<<"$FUZZ_TARGETS"
 fi
 
 cmake -G Ninja -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \

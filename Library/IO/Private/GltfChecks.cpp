@@ -649,26 +649,29 @@ void checkGltf(const std::string& path, std::uintmax_t fileSize)
                                " bytes does not fit in the file's " + std::to_string(length));
     }
     text = readBytes(stream, 20, jsonLength);
-    const std::uint64_t next = 20 + jsonLength;
-    if (next + 8 <= length)
+    // The chunks must tile the file exactly: VTK's loader reads chunk headers until the end of
+    // the file, and a few bytes too short for a header kept it allocating for ever (fuzzing).
+    std::uint64_t offset = 20 + jsonLength;
+    while (offset < length)
     {
-      const std::string chunk = readBytes(stream, next, 8);
-      const std::uint64_t binLength = littleEndian32(chunk.data());
-      if (littleEndian32(chunk.data() + 4) != kChunkBin)
+      if (length - offset < 8)
       {
-        throw InputError(path, "not a valid GLB file: its second chunk is not BIN");
+        throw InputError(path, "not a valid GLB file: " + std::to_string(length - offset) +
+                                 " bytes at its end are too short for a chunk header");
       }
-      if (next + 8 + binLength > length)
+      const std::string chunk = readBytes(stream, offset, 8);
+      const std::uint64_t chunkLength = littleEndian32(chunk.data());
+      if (chunkLength > length - offset - 8)
       {
-        throw InputError(path, "not a valid GLB file: its BIN chunk of " + std::to_string(binLength) +
-                                 " bytes does not fit in the file's " + std::to_string(length));
+        throw InputError(path, "not a valid GLB file: its chunk at byte " + std::to_string(offset) + " of " +
+                                 std::to_string(chunkLength) + " bytes does not fit in the file's " +
+                                 std::to_string(length));
       }
-      binChunk = binLength;
-    }
-    else if (next != length)
-    {
-      throw InputError(path, "not a valid GLB file: " + std::to_string(length - next) +
-                               " bytes after the JSON chunk are no chunk");
+      if (offset == 20 + jsonLength && littleEndian32(chunk.data() + 4) == kChunkBin)
+      {
+        binChunk = chunkLength;
+      }
+      offset += 8 + chunkLength;
     }
   }
   else
@@ -684,6 +687,11 @@ void checkGltf(const std::string& path, std::uintmax_t fileSize)
   {
     throw InputError(path, "not a valid glTF file: the JSON does not parse (at byte " +
                              std::to_string(error.byte) + ")");
+  }
+  catch (const Json::exception&)
+  {
+    // A number too large for any type (out_of_range 406) and the like.
+    throw InputError(path, "not a valid glTF file: the JSON does not parse (a number out of range)");
   }
   GltfChecker(path, document, binChunk).run();
 }

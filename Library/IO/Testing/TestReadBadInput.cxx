@@ -168,7 +168,7 @@ TEST_F(ReadBadInput, GarbageBehindARightLookingStart)
                                     "property float y\nproperty float z\nend_header\n0 0 0\n"),
                 "no triangles (the PLY header has no face element");
   expectRefused(write("short.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"),
-                "cannot read the file as STL");
+                "not a valid ASCII STL file: line 4: expected 'vertex', found the end of the file");
 }
 
 TEST_F(ReadBadInput, BinaryStlTruncatedOrEmpty)
@@ -179,7 +179,8 @@ TEST_F(ReadBadInput, BinaryStlTruncatedOrEmpty)
   stl.append(reinterpret_cast<const char*>(&two), 4);
   stl.append(50, '\0'); // one triangle of the two announced
   expectRefused(write("truncated.stl", stl), "announces 2 triangles");
-  std::string none = header;
+  // A header of zeros: with spaces, 84 bytes would be text to VTK (4 of them not), see below.
+  std::string none(80, '\0');
   const std::uint32_t zero = 0;
   none.append(reinterpret_cast<const char*>(&zero), 4);
   expectRefused(write("none.stl", none), "no triangles");
@@ -380,6 +381,11 @@ TEST_F(ReadBadInput, GlbHeaderAndChunksAgainstTheFileSize)
   expectRefused(write("json.glb", jsonTooLong), "not a valid GLB file: its JSON chunk of 2130707071 bytes does not fit");
   expectRefused(write("bin.glb", glb(gltfJson(R"({"byteLength": 48})"), triangleBytes())),
                 "not a valid glTF file: buffer 0 announces 48 bytes but holds 44");
+  // Found by fuzzing: one byte past the BIN chunk, and VTK's loader read chunk headers for ever.
+  std::string tail = file + '\x01';
+  tail[8] = static_cast<char>(tail.size() & 0xff);
+  tail[9] = static_cast<char>(tail.size() >> 8);
+  expectRefused(write("tail.glb", tail), "not a valid GLB file: 1 bytes at its end are too short for a chunk header");
   expectRefused(write("nobin.glb", glb(gltfJson(kGlbBuffer), std::string())),
                 "buffer 0 announces 44 bytes but holds 0");
 }
@@ -389,6 +395,8 @@ TEST_F(ReadBadInput, GltfBuffersHoldTheirLength)
   expectRefused(write("short.gltf", gltfJson(R"({"byteLength": 4000000000, "uri": "data:application/octet-stream;base64,)" +
                                              std::string(kTriangleBase64) + "\"}")),
                 "buffer 0 announces 4000000000 bytes but holds 44");
+  expectRefused(write("number.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"scene\": 1" + std::string(400, '0') + "}"),
+                "not a valid glTF file: the JSON does not parse (a number out of range)");
   expectRefused(write("char.gltf", gltfJson(R"({"byteLength": 3, "uri": "data:;base64,AA*A"})")),
                 "buffer 0: its base64 data has a bad character at offset 2");
   expectRefused(write("plain.gltf", gltfJson(R"({"byteLength": 3, "uri": "data:,abc"})")),
@@ -496,4 +504,48 @@ TEST_F(ReadBadInput, GltfFindingsOfTheFuzzerAreRefused)
   expectRefused(write("finding.gltf", copy("FuzzMeshReader-gltf",
                                            "FuzzMeshReader-gltf-crash-f42b4cb191384a0c4970532a9e87f9dfdae17faa")),
                 "not a valid glTF file: buffer 0: its data: uri is not base64 (only ';base64,' data is read)");
+}
+
+TEST_F(ReadBadInput, AsciiStlStructureIsCheckedBeforeVtk)
+{
+  const std::string facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n"
+                            "  vertex 0 1 0\n endloop\nendfacet\n";
+  // Two solids one after the other, keywords in capitals: both read.
+  EXPECT_EQ(proxima::readMeshFile(write("two.stl", "solid a\n" + facet + "endsolid a\nSOLID b\n" + facet +
+                                                   "ENDSOLID b\n"))
+              .triangles.size(),
+            2u);
+  expectRefused(write("normal.stl", "solid t\nfacet normal\noop\nendfacet\n"),
+                "not a valid ASCII STL file: line 3: expected three numbers after 'normal', found 'oop'");
+  expectRefused(write("four.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                  "vertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid t\n"),
+                "line 7: expected 'endloop', found 'vertex'");
+  expectRefused(write("word.stl", "solid t\n" + facet + "fact normal 0 0 1\n"),
+                "line 9: expected 'facet' or 'endsolid', found 'fact'");
+  expectRefused(write("noend.stl", "solid t\n" + facet),
+                "line 8: expected 'facet' or 'endsolid', found the end of the file");
+  expectRefused(write("after.stl", "solid t\n" + facet + "endsolid t\nvertex 1 2 3\n"),
+                "line 10: expected 'solid' or the end of the file after 'endsolid', found 'vertex'");
+  expectRefused(write("empty-solid.stl", "solid t\nendsolid t\n"),
+                "no triangles (the ASCII STL file has no facets)");
+  expectRefused(write("text.stl", "hello world\n"), "line 1: expected 'solid', found 'hello'");
+  expectRefused(write("long.stl", "solid t\nfacet normal 0 0 " + std::string(5000, '1') + "\n"),
+                "line 2: longer than 4096 bytes");
+  // One control byte in the first 256 is text to VTK (under 5 % of them), so it is checked as such.
+  expectRefused(write("control.stl", "solid t\x01\nfacet normal 0 0 1\nouter lop\n"),
+                "line 3: expected 'loop', found 'lop'");
+}
+
+TEST_F(ReadBadInput, StlFindingOfTheFuzzerIsRefused)
+{
+  // The input on which VTK's STL reader ran out of memory (Testing/Fuzz/Findings/FuzzMeshReader-stl).
+  const fs::path finding = fs::path(PROXIMA_SOURCE_DIR) / "Testing" / "Fuzz" / "Findings" /
+                           "FuzzMeshReader-stl" / "FuzzMeshReader-stl-oom-f1f7b9a76fc45217e2284dd5e53321d1f2e6cc45";
+  std::ifstream in(finding, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(bytes.empty());
+  // Taken for binary (by VTK too: 39 of its first 256 bytes are not text), its triangle count is
+  // checked against the size; a text file takes the ASCII check above.
+  expectRefused(write("finding.stl", bytes), "not a valid binary STL file: its header announces "
+                                             "2019914866 triangles (100995743384 bytes) but the file has 173 bytes");
 }
