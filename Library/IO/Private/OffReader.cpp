@@ -304,11 +304,84 @@ OffHeader readHeader(const std::string& path)
   }
   return header;
 }
+
+/// The longest valence accepted on an ASCII face line (no real polygon comes near it).
+constexpr long long kMaxFaceValence = 1 << 16;
+
+/// Checks the ASCII face lines before OpenMesh reads them: OpenMesh reads a face's vertex count
+/// into an unsigned int and loops over it, so "-3 0 1 2" (or a huge count) made it allocate
+/// without bound (found by fuzzing). One vertex or face per line, blank lines skipped, as OFF
+/// writers do; where the lines run out, the importer's own truncation messages take over.
+void checkAsciiFaceLines(const std::string& path, const OffHeader& header)
+{
+  std::ifstream stream(path, std::ios::binary);
+  std::string line;
+  std::getline(stream, line); // the OFF header
+  long long counts[3] = {0, 0, 0};
+  stream >> counts[0] >> counts[1] >> counts[2];
+  std::getline(stream, line); // the rest of the counts line
+  std::uint64_t lineNumber = 2;
+  const auto nextLine = [&]() {
+    while (std::getline(stream, line))
+    {
+      ++lineNumber;
+      if (line.find_first_not_of(" \t\r") != std::string::npos)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  for (std::uint64_t v = 0; v < header.numVertices; ++v)
+  {
+    if (!nextLine())
+    {
+      return;
+    }
+  }
+  for (std::uint64_t f = 0; f < header.numFaces; ++f)
+  {
+    if (!nextLine())
+    {
+      return;
+    }
+    std::istringstream words(line);
+    long long valence = 0;
+    const std::string where = "cannot read face " + std::to_string(f) + " (of " +
+                              std::to_string(header.numFaces) + ", line " + std::to_string(lineNumber) + "): ";
+    if (!(words >> valence))
+    {
+      throw InputError(path, where + "it does not start with its vertex count");
+    }
+    if (valence <= 0 || valence > kMaxFaceValence ||
+        static_cast<std::uint64_t>(valence) > header.numVertices)
+    {
+      throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
+                               " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
+                               " vertices, at most " + std::to_string(kMaxFaceValence) + ")");
+    }
+    long long index = 0;
+    long long read = 0;
+    while (read < valence && words >> index)
+    {
+      ++read;
+    }
+    if (read < valence)
+    {
+      throw InputError(path, where + "it announces " + std::to_string(valence) + " vertices but " +
+                               std::to_string(read) + " indices follow");
+    }
+  }
+}
 } // namespace
 
 vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
 {
   const OffHeader header = readHeader(path);
+  if (!header.binary)
+  {
+    checkAsciiFaceLines(path, header);
+  }
   // OpenMesh's reader is a process-wide singleton whose format options are set by can_u_read and
   // used by read: two threads must not interleave them.
   static std::mutex readerMutex;

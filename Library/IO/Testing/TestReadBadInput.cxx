@@ -105,7 +105,8 @@ TEST_F(ReadBadInput, OffWithIndexOutOfRange)
 
 TEST_F(ReadBadInput, OffTruncatedOrGarbled)
 {
-  expectRefused(write("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "cannot read face 0");
+  expectRefused(write("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+                "cannot read face 0 (of 1, line 6): it announces 3 vertices but 2 indices follow");
   expectRefused(write("fewer.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n"),
                 "cannot read the coordinates of vertex 3 (of 4)");
   expectRefused(write("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"),
@@ -119,6 +120,18 @@ TEST_F(ReadBadInput, OffTruncatedOrGarbled)
   expectRefused(write("binary-word.off", "OFF\x9f" "40-  BINARY"), "garbled OFF header");
   expectRefused(write("binary-counts.off", "OFFBINARY"),
                 "cannot read the vertex, face and edge counts of the binary OFF file");
+  // Found by fuzzing: a negative (or huge) face vertex count, which OpenMesh reads as unsigned and
+  // allocated for.
+  const std::string triangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  expectRefused(write("negative.off", triangle + "-3 0 1 2\n"),
+                "cannot read face 0 (of 1, line 6): a vertex count of -3 (it must be from 1 to the file's 3 "
+                "vertices, at most 65536)");
+  expectRefused(write("huge.off", triangle + "4294967295 0 1 2\n"), "a vertex count of 4294967295");
+  expectRefused(write("zero.off", triangle + "0\n"), "a vertex count of 0");
+  expectRefused(write("word.off", triangle + "x 0 1 2\n"),
+                "cannot read face 0 (of 1, line 6): it does not start with its vertex count");
+  expectRefused(write("few.off", "OFF\n4 1 0\n\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n"),
+                "cannot read face 0 (of 1, line 8): it announces 4 vertices but 3 indices follow");
   expectRefused(write("binary-huge.off", std::string("OFF BINARY\n") + std::string(12, '\x7f')),
                 "more than the file's");
 }
