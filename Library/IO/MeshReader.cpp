@@ -9,6 +9,7 @@
 #include "IO/Private/PlyReader.h"
 #include "IO/Private/PolyDataToSoup.h"
 #include "IO/Private/VtkReaders.h"
+#include "IO/Private/VtpChecks.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -51,6 +52,11 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
     break;
   case MeshFileFormat::Obj:
     data = detail::readObj(path);
+    break;
+  case MeshFileFormat::Vtp:
+    // vtkXMLPolyDataReader leaks its points on a Points array without three components.
+    detail::checkVtpPoints(path);
+    data = detail::readWithVtk(path, *format);
     break;
   case MeshFileFormat::Gltf:
     // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first.

@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -308,61 +309,60 @@ OffHeader readHeader(const std::string& path)
 /// The longest valence accepted on an ASCII face line (no real polygon comes near it).
 constexpr long long kMaxFaceValence = 1 << 16;
 
-/// Checks the ASCII face lines before OpenMesh reads them: OpenMesh reads a face's vertex count
-/// into an unsigned int and loops over it, so "-3 0 1 2" (or a huge count) made it allocate
-/// without bound (found by fuzzing). One vertex or face per line, blank lines skipped, as OFF
-/// writers do; where the lines run out, the importer's own truncation messages take over.
-void checkAsciiFaceLines(const std::string& path, const OffHeader& header)
+/// Checks the ASCII faces before OpenMesh reads them: OpenMesh reads a face's vertex count into
+/// an unsigned int and loops over it, so "-3 0 1 2" (or a huge count) made it allocate without
+/// bound (found by fuzzing). The walk follows OpenMesh's: the counts and the vertices word by
+/// word across lines (3 numbers a vertex, 3 more with N, 2 more with ST; with colours, C, a line
+/// a vertex), then each face's count and indices word by word, the rest of its line (colours)
+/// skipped. Where the words run out, the importer's own truncation messages take over.
+void checkAsciiFaces(const std::string& path, const OffHeader& header)
 {
   std::ifstream stream(path, std::ios::binary);
   std::string line;
   std::getline(stream, line); // the OFF header
+  const std::string prefix = line.substr(0, line.find("OFF"));
   long long counts[3] = {0, 0, 0};
   stream >> counts[0] >> counts[1] >> counts[2];
-  std::getline(stream, line); // the rest of the counts line
-  std::uint64_t lineNumber = 2;
-  const auto nextLine = [&]() {
-    while (std::getline(stream, line))
-    {
-      ++lineNumber;
-      if (line.find_first_not_of(" \t\r") != std::string::npos)
-      {
-        return true;
-      }
-    }
-    return false;
-  };
-  for (std::uint64_t v = 0; v < header.numVertices; ++v)
+  std::string word;
+  if (prefix.find('C') != std::string::npos)
   {
-    if (!nextLine())
+    // Colours are 3 or 4 numbers, integers or not: the line decides where a vertex ends.
+    std::getline(stream, line);
+    for (std::uint64_t v = 1; v < header.numVertices && std::getline(stream, line); ++v)
     {
-      return;
+    }
+  }
+  else
+  {
+    const std::uint64_t perVertex = 3 + (prefix.find('N') != std::string::npos ? 3 : 0) +
+                                    (prefix.find("ST") != std::string::npos ? 2 : 0);
+    for (std::uint64_t i = 0; i < header.numVertices * perVertex && stream >> word; ++i)
+    {
     }
   }
   for (std::uint64_t f = 0; f < header.numFaces; ++f)
   {
-    if (!nextLine())
+    if (!(stream >> word))
     {
       return;
     }
-    std::istringstream words(line);
-    long long valence = 0;
     const std::string where = "cannot read face " + std::to_string(f) + " (of " +
-                              std::to_string(header.numFaces) + ", line " + std::to_string(lineNumber) + "): ";
-    if (!(words >> valence))
+                              std::to_string(header.numFaces) + "): ";
+    char* end = nullptr;
+    const long long valence = std::strtoll(word.c_str(), &end, 10);
+    if (end == word.c_str())
     {
       throw InputError(path, where + "it does not start with its vertex count");
     }
     if (valence <= 0 || valence > kMaxFaceValence ||
         static_cast<std::uint64_t>(valence) > header.numVertices)
     {
-      throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
+      throw InputError(path, where + "a vertex count of " + word.substr(0, 24) +
                                " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
                                " vertices, at most " + std::to_string(kMaxFaceValence) + ")");
     }
-    long long index = 0;
     long long read = 0;
-    while (read < valence && words >> index)
+    while (read < valence && stream >> word)
     {
       ++read;
     }
@@ -371,8 +371,10 @@ void checkAsciiFaceLines(const std::string& path, const OffHeader& header)
       throw InputError(path, where + "it announces " + std::to_string(valence) + " vertices but " +
                                std::to_string(read) + " indices follow");
     }
+    std::getline(stream, line);
   }
 }
+
 } // namespace
 
 vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
@@ -380,7 +382,7 @@ vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
   const OffHeader header = readHeader(path);
   if (!header.binary)
   {
-    checkAsciiFaceLines(path, header);
+    checkAsciiFaces(path, header);
   }
   // OpenMesh's reader is a process-wide singleton whose format options are set by can_u_read and
   // used by read: two threads must not interleave them.

@@ -106,7 +106,7 @@ TEST_F(ReadBadInput, OffWithIndexOutOfRange)
 TEST_F(ReadBadInput, OffTruncatedOrGarbled)
 {
   expectRefused(write("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
-                "cannot read face 0 (of 1, line 6): it announces 3 vertices but 2 indices follow");
+                "cannot read face 0 (of 1): it announces 3 vertices but 2 indices follow");
   expectRefused(write("fewer.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n"),
                 "cannot read the coordinates of vertex 3 (of 4)");
   expectRefused(write("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"),
@@ -124,14 +124,18 @@ TEST_F(ReadBadInput, OffTruncatedOrGarbled)
   // allocated for.
   const std::string triangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   expectRefused(write("negative.off", triangle + "-3 0 1 2\n"),
-                "cannot read face 0 (of 1, line 6): a vertex count of -3 (it must be from 1 to the file's 3 "
+                "cannot read face 0 (of 1): a vertex count of -3 (it must be from 1 to the file's 3 "
                 "vertices, at most 65536)");
   expectRefused(write("huge.off", triangle + "4294967295 0 1 2\n"), "a vertex count of 4294967295");
   expectRefused(write("zero.off", triangle + "0\n"), "a vertex count of 0");
   expectRefused(write("word.off", triangle + "x 0 1 2\n"),
-                "cannot read face 0 (of 1, line 6): it does not start with its vertex count");
+                "cannot read face 0 (of 1): it does not start with its vertex count");
   expectRefused(write("few.off", "OFF\n4 1 0\n\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n"),
-                "cannot read face 0 (of 1, line 8): it announces 4 vertices but 3 indices follow");
+                "cannot read face 0 (of 1): it announces 4 vertices but 3 indices follow");
+  // Found by fuzzing: OpenMesh reads the counts and vertices word by word across lines, so the
+  // check must too (here the counts end on the next line, and vertex 0 follows on it).
+  expectRefused(write("words.off", "OFF\n\n3  231\n 1 0 100 0 \n3 \t1 2 1\n3 0 0 0\n0 02222222222222 0 "),
+                "cannot read face 0 (of 231): a vertex count of 0");
   expectRefused(write("binary-huge.off", std::string("OFF BINARY\n") + std::string(12, '\x7f')),
                 "more than the file's");
 }
@@ -561,4 +565,24 @@ TEST_F(ReadBadInput, StlFindingOfTheFuzzerIsRefused)
   // checked against the size; a text file takes the ASCII check above.
   expectRefused(write("finding.stl", bytes), "not a valid binary STL file: its header announces "
                                              "2019914866 triangles (100995743384 bytes) but the file has 173 bytes");
+}
+
+TEST_F(ReadBadInput, VtpPointsNeedThreeComponents)
+{
+  const std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n<PolyData>\n"
+                           "<Piece NumberOfPoints=\"1\" NumberOfPolys=\"0\">\n<Points>\n";
+  const std::string tail = ">0 0 0</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  // Found by fuzzing (Testing/Fuzz/Findings/FuzzMeshReader-vtp): the attribute's name garbled, so
+  // VTK took one component, failed and leaked its points.
+  expectRefused(write("garbled.vtp", head + "<DataArray type=\"Float32\" NumberOfComPonents=\"3\" format=\"ascii\"" + tail),
+                "not a valid VTK XML poly data file: the <Points> element 0: its DataArray has no "
+                "NumberOfComponents attribute (points need 3)");
+  expectRefused(write("two.vtp", head + "<DataArray type=\"Float32\" NumberOfComponents='2' format=\"ascii\"" + tail),
+                "its DataArray has NumberOfComponents=\"2\" (points need 3)");
+  const fs::path finding = fs::path(PROXIMA_SOURCE_DIR) / "Testing" / "Fuzz" / "Findings" / "FuzzMeshReader-vtp" /
+                           "FuzzMeshReader-vtp-leak-2f4a986bb6ab76e09ec18778752072722ba7523a";
+  std::ifstream in(finding, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(bytes.empty());
+  expectRefused(write("finding.vtp", bytes), "has no NumberOfComponents attribute");
 }
