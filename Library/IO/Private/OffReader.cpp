@@ -310,11 +310,11 @@ OffHeader readHeader(const std::string& path)
 constexpr long long kMaxFaceValence = 1 << 16;
 
 /// Checks the ASCII faces before OpenMesh reads them: OpenMesh reads a face's vertex count into
-/// an unsigned int and loops over it, so "-3 0 1 2" (or a huge count) made it allocate without
-/// bound (found by fuzzing). The walk follows OpenMesh's: the counts and the vertices word by
-/// word across lines (3 numbers a vertex, 3 more with N, 2 more with ST; with colours, C, a line
-/// a vertex), then each face's count and indices word by word, the rest of its line (colours)
-/// skipped. Where the words run out, the importer's own truncation messages take over.
+/// an unsigned int and loops over it, so "-3 0 1 2", a huge count or one too long for the type
+/// made it allocate without bound (found by fuzzing). The walk follows OpenMesh's reading: the
+/// counts as numbers, each vertex as three numbers (six with N) and then the rest of its line
+/// (colours, texture coordinates), each face as a count and that many indices, number by number
+/// across lines. Where the numbers run out, the importer's own truncation messages take over.
 void checkAsciiFaces(const std::string& path, const OffHeader& header)
 {
   std::ifstream stream(path, std::ios::binary);
@@ -323,46 +323,43 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
   const std::string prefix = line.substr(0, line.find("OFF"));
   long long counts[3] = {0, 0, 0};
   stream >> counts[0] >> counts[1] >> counts[2];
-  std::string word;
-  if (prefix.find('C') != std::string::npos)
+  const int numbersPerVertex = prefix.find('N') != std::string::npos ? 6 : 3;
+  for (std::uint64_t v = 0; v < header.numVertices; ++v)
   {
-    // Colours are 3 or 4 numbers, integers or not: the line decides where a vertex ends.
+    double coordinate = 0.0;
+    for (int i = 0; i < numbersPerVertex; ++i)
+    {
+      if (!(stream >> coordinate))
+      {
+        return; // the importer says which vertex it could not read
+      }
+    }
     std::getline(stream, line);
-    for (std::uint64_t v = 1; v < header.numVertices && std::getline(stream, line); ++v)
-    {
-    }
-  }
-  else
-  {
-    const std::uint64_t perVertex = 3 + (prefix.find('N') != std::string::npos ? 3 : 0) +
-                                    (prefix.find("ST") != std::string::npos ? 2 : 0);
-    for (std::uint64_t i = 0; i < header.numVertices * perVertex && stream >> word; ++i)
-    {
-    }
   }
   for (std::uint64_t f = 0; f < header.numFaces; ++f)
   {
-    if (!(stream >> word))
-    {
-      return;
-    }
     const std::string where = "cannot read face " + std::to_string(f) + " (of " +
                               std::to_string(header.numFaces) + "): ";
-    char* end = nullptr;
-    const long long valence = std::strtoll(word.c_str(), &end, 10);
-    if (end == word.c_str())
+    long long valence = 0;
+    if (!(stream >> valence))
     {
-      throw InputError(path, where + "it does not start with its vertex count");
+      if (stream.eof())
+      {
+        return; // truncated: the importer reports it
+      }
+      throw InputError(path, where + "it does not start with a vertex count of at most " +
+                               std::to_string(kMaxFaceValence));
     }
     if (valence <= 0 || valence > kMaxFaceValence ||
         static_cast<std::uint64_t>(valence) > header.numVertices)
     {
-      throw InputError(path, where + "a vertex count of " + word.substr(0, 24) +
+      throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
                                " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
                                " vertices, at most " + std::to_string(kMaxFaceValence) + ")");
     }
     long long read = 0;
-    while (read < valence && stream >> word)
+    long long index = 0;
+    while (read < valence && stream >> index)
     {
       ++read;
     }
@@ -371,7 +368,6 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
       throw InputError(path, where + "it announces " + std::to_string(valence) + " vertices but " +
                                std::to_string(read) + " indices follow");
     }
-    std::getline(stream, line);
   }
 }
 

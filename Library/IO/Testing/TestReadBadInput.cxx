@@ -129,13 +129,19 @@ TEST_F(ReadBadInput, OffTruncatedOrGarbled)
   expectRefused(write("huge.off", triangle + "4294967295 0 1 2\n"), "a vertex count of 4294967295");
   expectRefused(write("zero.off", triangle + "0\n"), "a vertex count of 0");
   expectRefused(write("word.off", triangle + "x 0 1 2\n"),
-                "cannot read face 0 (of 1): it does not start with its vertex count");
+                "cannot read face 0 (of 1): it does not start with a vertex count of at most 65536");
   expectRefused(write("few.off", "OFF\n4 1 0\n\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n"),
                 "cannot read face 0 (of 1): it announces 4 vertices but 3 indices follow");
   // Found by fuzzing: OpenMesh reads the counts and vertices word by word across lines, so the
   // check must too (here the counts end on the next line, and vertex 0 follows on it).
   expectRefused(write("words.off", "OFF\n\n3  231\n 1 0 100 0 \n3 \t1 2 1\n3 0 0 0\n0 02222222222222 0 "),
                 "cannot read face 0 (of 231): a vertex count of 0");
+  // And the rest of a vertex's line is OpenMesh's (colours): the face count comes after it.
+  expectRefused(write("rest.off", "OFF\n4 1 6\n0 0 0\n1 0 000 1\n 30 10 01044610  0 3 2   0  0\n 2 1\n"
+                                  "3OFFOFF\n4446104466101044610  0 3 2\n"),
+                "cannot read face 0 (of 1): a vertex count of 4446104466101044610");
+  expectRefused(write("overflow.off", triangle + "44461044661010446101044610 0 1 2\n"),
+                "it does not start with a vertex count of at most 65536");
   expectRefused(write("binary-huge.off", std::string("OFF BINARY\n") + std::string(12, '\x7f')),
                 "more than the file's");
 }
