@@ -314,7 +314,7 @@ constexpr long long kMaxFaceValence = 1 << 16;
 /// made it allocate without bound (found by fuzzing). The walk follows OpenMesh's reading: the
 /// counts as numbers, each vertex as three numbers (six with N) and then the rest of its line
 /// (colours, texture coordinates), each face as a count and that many indices, number by number
-/// across lines. Where the numbers run out, the importer's own truncation messages take over.
+/// across lines. Where the numbers run out, the file is refused here too.
 void checkAsciiFaces(const std::string& path, const OffHeader& header)
 {
   std::ifstream stream(path, std::ios::binary);
@@ -331,7 +331,10 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
     {
       if (!(stream >> coordinate))
       {
-        return; // the importer says which vertex it could not read
+        // Not left to OpenMesh: past the end of its stream it goes on to the faces with a vertex
+        // count it never read (found by fuzzing: "OFF\n446104461 4 7" and nothing more).
+        throw InputError(path, "cannot read the coordinates of vertex " + std::to_string(v) + " (of " +
+                                 std::to_string(header.numVertices) + "): malformed or truncated data");
       }
     }
     std::getline(stream, line);
@@ -345,7 +348,7 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
     {
       if (stream.eof())
       {
-        return; // truncated: the importer reports it
+        throw InputError(path, where + "malformed or truncated data");
       }
       throw InputError(path, where + "it does not start with a vertex count of at most " +
                                std::to_string(kMaxFaceValence));

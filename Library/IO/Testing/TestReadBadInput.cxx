@@ -140,6 +140,9 @@ TEST_F(ReadBadInput, OffTruncatedOrGarbled)
   expectRefused(write("rest.off", "OFF\n4 1 6\n0 0 0\n1 0 000 1\n 30 10 01044610  0 3 2   0  0\n 2 1\n"
                                   "3OFFOFF\n4446104466101044610  0 3 2\n"),
                 "cannot read face 0 (of 1): a vertex count of 4446104466101044610");
+  expectRefused(write("nothing.off", "OFFF\n446104461 4 7"),
+                "cannot read the coordinates of vertex 0 (of 446104461): malformed or truncated data");
+  expectRefused(write("nofaces.off", triangle), "cannot read face 0 (of 1): malformed or truncated data");
   expectRefused(write("overflow.off", triangle + "44461044661010446101044610 0 1 2\n"),
                 "it does not start with a vertex count of at most 65536");
   expectRefused(write("binary-huge.off", std::string("OFF BINARY\n") + std::string(12, '\x7f')),
