@@ -28,7 +28,9 @@ SweepResult sweepSphereTriangle(const Vec3& start, const Vec3& motion, double ra
 /// a triangle farther than radius + 1.5 skin from the start stops the sphere when it comes within
 /// radius + skin; a triangle already nearer (distance d0) stops it only at max(radius, d0 - skin/2),
 /// so sliding along a touching triangle is never blocked by rounding, and no stop is ever closer
-/// than `radius`. With skin = 0 this is sweepSphereTriangle.
+/// than `radius`. A start already at the radius (or a rounding inside it, down to radius - skin/2)
+/// is blocked only by motion heading into the triangle steeper than 1e-12 of its length.
+/// With skin = 0 this is sweepSphereTriangle.
 SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
                                         double skin, const TriangleCorners& triangle);
 

@@ -10,12 +10,28 @@ namespace proxima
 namespace
 {
 // Two planes whose unit normals agree this closely are one plane: triangles sharing the touched
-// edge or vertex give the same normal, and one copy is all the goal solver needs.
+// edge or vertex give the same normal, and one copy is all the goal solver needs. This also
+// merges the tangent plane of a neighbour's edge or corner just off the face the proxy rests on
+// (tilted by up to sqrt(4 eps / r), 3.5e-5 rad at r = 1 mm): harmless, as that edge stays
+// within the face's plane.
 constexpr double kSameNormalCosine = 1.0 - 1e-14;
+
+// Two face contacts (each the projection onto its own triangle's plane) are one plane only if
+// their normals differ by less than this angle, from the cross product: coplanar faces agree to
+// rounding (~1e-15 rad), while two different planes this close are sheets crossing at a tiny
+// angle. The cosine cannot tell angles below 1.5e-8 rad from 0, and merged sheets crossing at up
+// to 1.4e-7 rad, so that the goal solver saw one and its slides ran into the other (stress seed
+// 4009, 8.2e-11 rad). A merge at this angle hides a crossing of at most 1e-13 of a slide: below
+// the goal solver's feasibility tolerance and the sweep's touching slope (both 1e-12).
+constexpr double kSameFaceNormalSine = 1e-13;
 
 // The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
 // axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
 constexpr double kMaxCurvatureStretch = 64.0;
+
+// A stretched slide may cross a plane by this fraction of the finger distance (the goal
+// solver's feasibility tolerance): rounding, not a heading into the plane.
+constexpr double kStretchFeasibility = 1e-12;
 
 // Iterations in a row that bring the proxy no nearer the finger before the tick ends: the paper's
 // loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
@@ -122,6 +138,30 @@ Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& 
 }
 
 Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const
+{
+  // The stretch is worked out for the active plane alone, but the slide it stretches stays above
+  // the other planes only by the goal solve: stretched, it may head into one it merely touches.
+  // The sweep then blocks it at once (the proxy touches that triangle), and the next update stage,
+  // at the same point, stretches the same slide again. The liver corner (ProxySolverFound.
+  // StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide) ended so, 1.6e-7 m short of its
+  // minimum. A stretched step that crosses any plane gives way to the feasible planar slide.
+  const Vec3 stretched = stretchedSlide(solution, toFinger);
+  if (stretched == solution.displacement)
+  {
+    return stretched;
+  }
+  const double tolerance = kStretchFeasibility * norm(toFinger);
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    if (dot(m_normals[k], stretched) < -tolerance)
+    {
+      return solution.displacement;
+    }
+  }
+  return stretched;
+}
+
+Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFinger) const
 {
   const Vec3 planar = solution.displacement;
   if (solution.numActive != 1)
@@ -345,7 +385,11 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     bool duplicate = false;
     for (int k = 0; k < m_numPlanes && !duplicate; ++k)
     {
-      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine;
+      const bool twoFaces = near.closest.feature == TriangleFeature::Face &&
+                            m_planes[k].closest.feature == TriangleFeature::Face;
+      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine &&
+                  (!twoFaces || squaredNorm(cross(m_normals[k], normal)) <=
+                                  kSameFaceNormalSine * kSameFaceNormalSine);
       if (duplicate)
       {
         m_planes[k].curved = m_planes[k].curved && curved; // one flat witness makes it flat

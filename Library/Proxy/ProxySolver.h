@@ -144,7 +144,10 @@ private:
                                double& viscousBudget) const;
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
+  /// The stretched step is kept only if it stays above every plane, as the planar one does.
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
+  /// The stretched slide of curvatureCorrectedStep before that check.
+  Vec3 stretchedSlide(const GoalSolution& solution, const Vec3& toFinger) const;
   /// `finger`, or the point at reachRadius() from reachCenter() in its direction if farther.
   Vec3 withinReach(const Vec3& finger) const;
   /// Re-centres the candidate cache on the proxy when it has wandered off, at a tick's start.

@@ -57,12 +57,12 @@ TEST(StressPlanes, NearParallelCreasesDownTo1e12Radians)
     c.proxy.radius = 0.001;
     const double half = 0.02;
     const bool crossing = random.uniform() < 0.3;
-    // Crossing planes only from 1e-6 rad: below the solver's same-plane threshold (1.4e-7 rad)
-    // two crossing planes are merged into one, and a proxy resting on their crossing line
-    // rounding-deep inside the second stops for good (seed 4009, 8.2e-11 rad; kept as
-    // ProxySolverKnown.DISABLED_CrossingPlanesAtAnAngleBelowTheSamePlaneThreshold). Creases,
-    // which meet in an edge rather than cross, go down to 1e-12 rad.
-    const double magnitude = random.logUniform(crossing ? 1e-6 : 1e-12, 1e-2);
+    // Crossing planes (two sheets cutting along x = 0) and creases (two faces meeting in an edge)
+    // both go down to 1e-12 rad. Crossing planes stopped at 1e-6 rad until the same-plane merge
+    // compared two face contacts by their cross product and the touching sweep let
+    // rounding-level slides through (seed 4009, 8.2e-11 rad; kept as
+    // ProxySolverFound.SheetsCrossingAtATinyAngleAreTwoPlanes).
+    const double magnitude = random.logUniform(1e-12, 1e-2);
     const double angle = random.uniform() < 0.5 ? magnitude : -magnitude;
     char label[96];
     std::snprintf(label, sizeof label, "%s/angle-%.1e-rad", crossing ? "crossing-planes" : "crease",

@@ -481,15 +481,19 @@ TEST(ProxySolverFound, AbsurdlyFarFingerNeitherTunnelsNorStrandsTheProxy)
   rig.expectClean("found-absurd-fingers");
 }
 
-TEST(ProxySolverKnown, DISABLED_CrossingPlanesAtAnAngleBelowTheSamePlaneThreshold)
+TEST(ProxySolverFound, SheetsCrossingAtATinyAngleAreTwoPlanes)
 {
-  // Known failure found by the stress suite (StressPlanes, seed 4009), not yet fixed: two sheets
-  // crossing at 8.2e-11 rad. Their normals pass the same-plane test (cosine 1 - 1e-14, i.e.
-  // 1.4e-7 rad), so one plane goes to the goal solver; the proxy rests on the crossing line
-  // 1.5e-18 m inside the radius of the other sheet, and the touching-contact sweep (no stop nearer
-  // than r) then blocks every step that approaches it by any amount: the proxy stays put while
-  // the finger slides away (residual 2.3 mm). Fixing it needs the merge to test the planes'
-  // angle by their cross product and the sweep to leave room when d0 < r (Epsilons.md).
+  // Found by the stress suite (StressPlanes, seed 4009): two sheets crossing at 8.2e-11 rad, the
+  // proxy resting on their crossing line, face contacts with both. Their normals passed the
+  // same-plane test (cosine 1 - 1e-14, i.e. 1.4e-7 rad; the cosine cannot even resolve angles
+  // below 1.5e-8 rad), so the goal solver saw one plane and slid along it, 2.7e-14 m into the
+  // other sheet, which the proxy already touched 1.5e-18 m inside the radius: the touching sweep
+  // (no stop nearer than r) blocked that at once and the proxy stayed while the finger slid away
+  // (residual 1.3e-5 m). Both halves had to change: two face contacts are now merged only when
+  // their cross product is below 1e-13, and a sweep starting in touching contact lets through a
+  // slide whose heading into the triangle is below 1e-12 of its length (with both planes seen,
+  // the slide along the crossing line is such a slide, blocked before by rounding). Either
+  // change alone leaves the proxy stuck (lowering the touching floor alone only delayed it).
   TriangleSoup soup;
   soup.points = {{0.0025917756012839178, 0.016876844476840822, -0.022548942763178863},
                  {-0.027850187166712052, 0.0049132731673626785, 0.00047625787340578075},
@@ -501,18 +505,24 @@ TEST(ProxySolverKnown, DISABLED_CrossingPlanesAtAnAngleBelowTheSamePlaneThreshol
                  {0.027850187166467748, -0.00491327316865128, -0.0004762578743983199}};
   soup.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
   Rig rig(soup, {0.0050445016476208197, -0.0071224523150369848, 0.0096624751975080986});
-  rig.step({0.0042323920805787205, -0.010614414223410255, 0.0073350757347480046});
-  rig.expectClean("known-crossing-planes-8e-11-rad");
+  const ProxyTickResult r =
+    rig.step({0.0042323920805787205, -0.010614414223410255, 0.0073350757347480046});
+  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  rig.expectClean("found-crossing-planes-8e-11-rad");
 }
 
-TEST(ProxySolverKnown, DISABLED_CornerOfTheSharedLiverEndsShortOfItsMinimum)
+TEST(ProxySolverFound, StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide)
 {
-  // Known failure found by the performance report's scaling run (BenchTimeVersusError
-  // --scaling, VH_M_Liver.glb scaled to a 25 cm diagonal, tick 284 of its press), not yet
-  // diagnosed: the 7 triangles around one vertex of the liver reproduce it alone. The tick ends
-  // after 6 iterations with the proxy at the radius from the vertex, and a feasible slide along
-  // the oracle's planes gets 1.6e-7 m nearer the finger. It fails the same way with the solver
-  // before the stress suite's fixes.
+  // Found by the performance report's scaling run (BenchTimeVersusError --scaling,
+  // VH_M_Liver.glb scaled to a 25 cm diagonal, tick 284 of its press); the 7 triangles around one
+  // vertex of the liver reproduce it alone. The proxy touches two edges (two cylinder planes);
+  // the goal solve slides along one, feasibly for the other, but the curvature stretch of that
+  // slide (1 / (1 - h / rho) across the edge) headed 2.6e-8 m into the other plane. The sweep
+  // blocked it at once (the proxy touches that edge), the next update stage at the same point
+  // stretched the same slide again, and a stretched move skips the progress check, so stretching
+  // was never turned off: the tick ended after 6 iterations, 1.6e-7 m short of its minimum (with
+  // the solver before the stress suite's fixes too). A stretched step must now stay above every
+  // plane, or the planar slide is taken: 7 iterations, residual 0.
   TriangleSoup fan;
   fan.points = {
                    {-0.021871522220944142, 0.27700766192788784, 0.079287406921861717},
@@ -541,8 +551,10 @@ TEST(ProxySolverKnown, DISABLED_CornerOfTheSharedLiverEndsShortOfItsMinimum)
     fan.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
   }
   Rig rig(fan, {-0.022827663512652936, 0.27721059655127489, 0.079505884813446767});
-  rig.step({-0.022243077317040279, 0.27712438269938672, 0.079372737804346741});
-  rig.expectClean("known-liver-corner");
+  const ProxyTickResult r =
+    rig.step({-0.022243077317040279, 0.27712438269938672, 0.079372737804346741});
+  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  rig.expectClean("found-liver-corner");
 }
 
 TEST(ProxySolverLimits, IterationCapIsReported)
