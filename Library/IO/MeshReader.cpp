@@ -3,11 +3,13 @@
 #include "IO/MeshFileFormat.h"
 #include "IO/Private/FileChecks.h"
 #include "IO/Private/FormatSignatures.h"
+#include "IO/Private/GltfChecks.h"
 #include "IO/Private/ObjReader.h"
 #include "IO/Private/OffReader.h"
 #include "IO/Private/PlyReader.h"
 #include "IO/Private/PolyDataToSoup.h"
 #include "IO/Private/VtkReaders.h"
+#include "IO/Private/VtpChecks.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -50,6 +52,16 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
     break;
   case MeshFileFormat::Obj:
     data = detail::readObj(path);
+    break;
+  case MeshFileFormat::Vtp:
+    // vtkXMLPolyDataReader leaks its points on a Points array without three components.
+    detail::checkVtpPoints(path);
+    data = detail::readWithVtk(path, *format);
+    break;
+  case MeshFileFormat::Gltf:
+    // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first.
+    detail::checkGltf(path, fileSize);
+    data = detail::readWithVtk(path, *format);
     break;
   default:
     data = detail::readWithVtk(path, *format);

@@ -1,6 +1,7 @@
 #include "IO/Private/FormatSignatures.h"
 
 #include "IO/InputError.h"
+#include "IO/Private/AsciiStlCheck.h"
 #include "IO/Private/FileChecks.h"
 
 #include <algorithm>
@@ -10,21 +11,14 @@ namespace proxima::detail
 {
 namespace
 {
-bool looksLikeText(const std::string& bytes)
-{
-  return std::none_of(bytes.begin(), bytes.end(), [](char c) {
-    const auto byte = static_cast<unsigned char>(c);
-    return byte == 0 || (byte < 0x20 && c != '\t' && c != '\r' && c != '\n' && c != '\f' && c != '\v');
-  });
-}
-
 void checkStl(const std::string& path, std::uintmax_t fileSize)
 {
   const std::string head = readFileHead(path, 512);
   // An ASCII STL starts with "solid"; binary ones may too (in their 80-byte header), so the bytes
-  // that follow decide.
-  if (trimmedHead(head).rfind("solid", 0) == 0 && looksLikeText(head))
+  // that follow decide, by the rule VTK's reader applies: its choice is what must be checked.
+  if (vtkReadsStlAsAscii(head))
   {
+    checkAsciiStl(path);
     return;
   }
   if (fileSize < 84)

@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -304,11 +305,84 @@ OffHeader readHeader(const std::string& path)
   }
   return header;
 }
+
+/// The longest valence accepted on an ASCII face line (no real polygon comes near it).
+constexpr long long kMaxFaceValence = 1 << 16;
+
+/// Checks the ASCII faces before OpenMesh reads them: OpenMesh reads a face's vertex count into
+/// an unsigned int and loops over it, so "-3 0 1 2", a huge count or one too long for the type
+/// made it allocate without bound (found by fuzzing). The walk follows OpenMesh's reading: the
+/// counts as numbers, each vertex as three numbers (six with N) and then the rest of its line
+/// (colours, texture coordinates), each face as a count and that many indices, number by number
+/// across lines. Where the numbers run out, the file is refused here too.
+void checkAsciiFaces(const std::string& path, const OffHeader& header)
+{
+  std::ifstream stream(path, std::ios::binary);
+  std::string line;
+  std::getline(stream, line); // the OFF header
+  const std::string prefix = line.substr(0, line.find("OFF"));
+  long long counts[3] = {0, 0, 0};
+  stream >> counts[0] >> counts[1] >> counts[2];
+  const int numbersPerVertex = prefix.find('N') != std::string::npos ? 6 : 3;
+  for (std::uint64_t v = 0; v < header.numVertices; ++v)
+  {
+    double coordinate = 0.0;
+    for (int i = 0; i < numbersPerVertex; ++i)
+    {
+      if (!(stream >> coordinate))
+      {
+        // Not left to OpenMesh: past the end of its stream it goes on to the faces with a vertex
+        // count it never read (found by fuzzing: "OFF\n446104461 4 7" and nothing more).
+        throw InputError(path, "cannot read the coordinates of vertex " + std::to_string(v) + " (of " +
+                                 std::to_string(header.numVertices) + "): malformed or truncated data");
+      }
+    }
+    std::getline(stream, line);
+  }
+  for (std::uint64_t f = 0; f < header.numFaces; ++f)
+  {
+    const std::string where = "cannot read face " + std::to_string(f) + " (of " +
+                              std::to_string(header.numFaces) + "): ";
+    long long valence = 0;
+    if (!(stream >> valence))
+    {
+      if (stream.eof())
+      {
+        throw InputError(path, where + "malformed or truncated data");
+      }
+      throw InputError(path, where + "it does not start with a vertex count of at most " +
+                               std::to_string(kMaxFaceValence));
+    }
+    if (valence <= 0 || valence > kMaxFaceValence ||
+        static_cast<std::uint64_t>(valence) > header.numVertices)
+    {
+      throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
+                               " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
+                               " vertices, at most " + std::to_string(kMaxFaceValence) + ")");
+    }
+    long long read = 0;
+    long long index = 0;
+    while (read < valence && stream >> index)
+    {
+      ++read;
+    }
+    if (read < valence)
+    {
+      throw InputError(path, where + "it announces " + std::to_string(valence) + " vertices but " +
+                               std::to_string(read) + " indices follow");
+    }
+  }
+}
+
 } // namespace
 
 vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
 {
   const OffHeader header = readHeader(path);
+  if (!header.binary)
+  {
+    checkAsciiFaces(path, header);
+  }
   // OpenMesh's reader is a process-wide singleton whose format options are set by can_u_read and
   // used by read: two threads must not interleave them.
   static std::mutex readerMutex;
