@@ -22,4 +22,21 @@ ProxyStepOutcome runProxyStep(ProxySolver& solver, const DeviceSample& sample)
   return outcome;
 }
 
+int snapshotContacts(const ProxyTickResult& result, ContactSnapshot (&contacts)[3])
+{
+  const int count = result.numContacts < 3 ? result.numContacts : 3;
+  for (int i = 0; i < count; ++i)
+  {
+    const ContactPlane& plane = result.contacts[i];
+    ContactSnapshot& contact = contacts[i];
+    contact.point = plane.closest.point;
+    contact.normal = plane.normal;
+    contact.object = plane.object;
+    contact.triangle = plane.triangle;
+    contact.staticFriction = plane.staticFriction;
+    contact.dynamicFriction = plane.dynamicFriction;
+  }
+  return count;
+}
+
 } // namespace proxima

@@ -4,6 +4,7 @@
 
 #include "Proxy/ProxySolver.h"
 #include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
 
 #include <cstdint>
 
@@ -22,5 +23,8 @@ struct ProxyStepOutcome
 };
 
 ProxyStepOutcome runProxyStep(ProxySolver& solver, const DeviceSample& sample);
+
+/// The tick's active contacts as the render thread draws them, into `contacts`; returns how many.
+int snapshotContacts(const ProxyTickResult& result, ContactSnapshot (&contacts)[3]);
 
 } // namespace proxima

@@ -1,7 +1,6 @@
 #include "Runtime/ServoTick.h"
 
-#include "Runtime/ProxyStep.h"
-#include "Runtime/ServoForce.h"
+#include "Runtime/LockstepTick.h"
 
 namespace proxima
 {
@@ -35,17 +34,8 @@ TickRecord makeTickRecord(std::uint64_t tick, double time, const DeviceSample& s
 TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
                         ServoForce& servo)
 {
-  const DeviceSample sample = device.read(time);
-  const ProxyStepOutcome outcome = runProxyStep(solver, sample);
-  ServoForceInput input;
-  input.sample = sample;
-  input.proxy = outcome.proxy;
-  input.stiffnessScale = outcome.result.stiffnessScale;
-  input.proxyRefused = outcome.refused;
-  input.time = time;
-  const ServoForceOutput force = servo.step(input);
-  device.writeForce(force.force, time);
-  return makeTickRecord(tick, time, sample, outcome, force);
+  const LockstepTick step = stepLockstepTick(time, solver, device, servo);
+  return makeTickRecord(tick, time, step.sample, step.outcome, step.force);
 }
 
 } // namespace proxima

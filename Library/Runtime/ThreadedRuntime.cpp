@@ -1,7 +1,6 @@
 #include "Runtime/ThreadedRuntime.h"
 
-#include "Runtime/ProxyStep.h"
-#include "Runtime/ServoForce.h"
+#include "Runtime/LockstepTick.h"
 #include "Runtime/SnapshotChannel.h"
 
 #include <pthread.h>
@@ -131,18 +130,7 @@ ProxyPost makeProxyPost(const FingerPost& finger, const ProxyStepOutcome& outcom
   post.proxy = outcome.proxy;
   post.stiffnessScale = outcome.result.stiffnessScale;
   post.refused = outcome.refused;
-  post.numContacts = outcome.result.numContacts;
-  for (int i = 0; i < outcome.result.numContacts; ++i)
-  {
-    const ContactPlane& plane = outcome.result.contacts[i];
-    ContactSnapshot& contact = post.contacts[i];
-    contact.point = plane.closest.point;
-    contact.normal = plane.normal;
-    contact.object = plane.object;
-    contact.triangle = plane.triangle;
-    contact.staticFriction = plane.staticFriction;
-    contact.dynamicFriction = plane.dynamicFriction;
-  }
+  post.numContacts = snapshotContacts(outcome.result, post.contacts);
   post.stuck = outcome.result.stuck;
   post.frictionLimited = outcome.result.frictionLimited;
   post.sceneVersion = scene != nullptr ? scene->version : 0;
@@ -287,15 +275,9 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
     {
       // The lockstep runner's force stage on this thread's sequence: with no sample skipped,
       // these records equal a lockstep run's.
-      ServoForceInput input;
-      input.sample = post.sample;
-      input.proxy = outcome.proxy;
-      input.stiffnessScale = outcome.result.stiffnessScale;
-      input.proxyRefused = outcome.refused;
-      input.time = post.time;
-      input.sceneVersion = version;
-      records[recordCount++] =
-        makeTickRecord(post.tick, post.time, post.sample, outcome, recordForce.step(input));
+      const ServoForceOutput force =
+        recordForce.step(freshForceInput(post.sample, outcome, post.time, version));
+      records[recordCount++] = makeTickRecord(post.tick, post.time, post.sample, outcome, force);
     }
     clock.workDone();
   }

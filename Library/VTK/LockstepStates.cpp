@@ -2,8 +2,7 @@
 
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/ProxyStep.h"
-#include "Runtime/ServoForce.h"
+#include "Runtime/LockstepTick.h"
 #include "Runtime/SimulatedDevice.h"
 
 #include <memory>
@@ -22,18 +21,7 @@ HapticState hapticStateOf(std::uint64_t tick, double time, const Vec3& finger,
   state.proxy = proxy;
   state.proxyRadius = proxyRadius;
   state.force = force;
-  state.numContacts = result.numContacts;
-  for (int i = 0; i < result.numContacts && i < 3; ++i)
-  {
-    const ContactPlane& plane = result.contacts[i];
-    ContactSnapshot& contact = state.contacts[i];
-    contact.point = plane.closest.point;
-    contact.normal = plane.normal;
-    contact.object = plane.object;
-    contact.triangle = plane.triangle;
-    contact.staticFriction = plane.staticFriction;
-    contact.dynamicFriction = plane.dynamicFriction;
-  }
+  state.numContacts = snapshotContacts(result, state.contacts);
   state.stuck = result.stuck;
   state.frictionLimited = result.frictionLimited;
   state.fading = fading;
@@ -55,19 +43,10 @@ void playLockstepStates(const CollisionScene& scene, const ProxyParameters& para
   for (std::uint64_t tick = 0; tick < numTicks; ++tick)
   {
     const double time = path.startTime() + static_cast<double>(tick) / rate;
-    const DeviceSample sample = device.read(time);
-    const ProxyStepOutcome outcome = runProxyStep(*solver, sample);
-    ServoForceInput input;
-    input.sample = sample;
-    input.proxy = outcome.proxy;
-    input.stiffnessScale = outcome.result.stiffnessScale;
-    input.proxyRefused = outcome.refused;
-    input.sceneVersion = 1;
-    input.time = time;
-    const ServoForceOutput output = force.step(input);
-    device.writeForce(output.force, time);
-    if (!onState(hapticStateOf(tick, time, sample.position, outcome.result, outcome.proxy,
-                               parameters.radius, output.force, output.fading)))
+    const LockstepTick step = stepLockstepTick(time, *solver, device, force, 1);
+    if (!onState(hapticStateOf(tick, time, step.sample.position, step.outcome.result,
+                               step.outcome.proxy, parameters.radius, step.force.force,
+                               step.force.fading)))
     {
       return;
     }
