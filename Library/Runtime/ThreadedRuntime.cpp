@@ -230,7 +230,8 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
   LoopClock clock(start, settings.proxyRate, proxyStatistics);
   ServoForce recordForce(servo, limits);
-  std::uint64_t lastPost = 0;
+  bool updatedOnce = false;
+  std::uint64_t lastTick = 0;
   while (!stopRequested.load(std::memory_order_acquire) &&
          !finishedFlag.load(std::memory_order_acquire))
   {
@@ -241,19 +242,17 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       sleepUntil(monotonicNow() + stall);
     }
     installPendingScene();
-    const std::uint64_t posts = finger.writes();
-    if (posts == lastPost)
+    // New is decided by the sample's tick, not by the channel's write count: the servo can post
+    // again between a count and the read that follows it, and the read then already holds the
+    // newer sample, which the next count would have the loop update on a second time.
+    const FingerPost post = finger.read();
+    if (!post.posted || (updatedOnce && post.tick == lastTick))
     {
       clock.workDone();
       continue; // no new finger sample: nothing to update
     }
-    lastPost = posts;
-    const FingerPost post = finger.read();
-    if (!post.posted)
-    {
-      clock.workDone();
-      continue;
-    }
+    updatedOnce = true;
+    lastTick = post.tick;
     ProxyStepOutcome outcome;
     if (live != nullptr)
     {
