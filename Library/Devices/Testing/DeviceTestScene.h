@@ -109,6 +109,20 @@ constexpr std::size_t kUnplugTick = 150;
 
 /// After the device is lost at `lostTick`: every tick reports it, the force fades from what it
 /// was to zero over the servo's fade time without ever growing, and nothing is NaN.
+/// A SpaceMouse run against the same path through the simulated device: the same ticks, with
+/// the finger within half a count (1e-5 m scale) on each axis and the force within kp times that.
+inline void expectFollowsReference(const std::vector<TickRecord>& trace,
+                                   const std::vector<TickRecord>& reference)
+{
+  ASSERT_EQ(trace.size(), reference.size());
+  EXPECT_GT(contactTicks(trace), 100u);
+  for (std::size_t i = 0; i < trace.size(); ++i)
+  {
+    EXPECT_LT(distance(trace[i].finger, reference[i].finger), 1e-5) << i;
+    EXPECT_LT(distance(trace[i].force, reference[i].force), kTestStiffness * 2e-5) << i;
+  }
+}
+
 inline void expectFadeOut(const std::vector<TickRecord>& records, std::size_t lostTick)
 {
   ASSERT_GT(records.size(), lostTick + 80);

@@ -1,5 +1,7 @@
 #include "SpaceMouseEmulator.h"
 
+#include <cmath>
+
 namespace proxima::testing
 {
 namespace
@@ -126,6 +128,14 @@ bool SpaceMouseEmulator::unplugged() const
 {
   std::lock_guard lock(m_mutex);
   return m_unplugged;
+}
+
+void SpaceMouseEmulator::holdCapAt(const Vec3& offset, double metresPerCount)
+{
+  const Vec3 counts = offset / metresPerCount;
+  setAxes({static_cast<int>(std::lround(counts.x)), static_cast<int>(std::lround(counts.y)),
+           static_cast<int>(std::lround(-counts.z))},
+          {0, 0, 0});
 }
 
 } // namespace proxima::testing

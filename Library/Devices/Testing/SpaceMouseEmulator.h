@@ -3,6 +3,7 @@
 // report descriptor that announces the layout. It records the output reports (LED) it gets.
 #pragma once
 
+#include "Core/Vec3.h"
 #include "Devices/SpaceMouseReports.h"
 
 #include <cstdint>
@@ -20,6 +21,10 @@ public:
 
   /// Moves the cap: queues the reports a device sends for this change.
   void setAxes(const std::array<int, 3>& translation, const std::array<int, 3>& rotation);
+  /// The hand holds the cap so that a position-mode driver with `metresPerCount` reads the finger
+  /// `offset` metres from its centre: counts = offset / scale, rounded, with z reversed (the
+  /// driver's default axis map); no rotation.
+  void holdCapAt(const Vec3& offset, double metresPerCount);
   void setButtons(std::uint32_t buttons);
   /// Queues a report as is (malformed ones too).
   void queueRaw(std::vector<std::uint8_t> report);

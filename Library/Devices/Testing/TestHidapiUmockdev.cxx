@@ -123,21 +123,12 @@ TEST_F(HidapiUmockdev, ScriptedPathDrivesTheSolver)
   auto spaceMouse = openByHand(settings);
   std::size_t hint = 0;
   DrivenDevice device(*spaceMouse, [&](double time) {
-    const Vec3 offset = (path.positionAt(time, hint) - settings.centre) / settings.metresPerCount;
-    emulator.setAxes({static_cast<int>(std::lround(offset.x)), static_cast<int>(std::lround(offset.y)),
-                      static_cast<int>(std::lround(-offset.z))},
-                     {0, 0, 0});
+    emulator.holdCapAt(path.positionAt(time, hint) - settings.centre, settings.metresPerCount);
   });
   const auto trace = scene.run(device, path);
   SimulatedDevice simulated(path);
   const auto reference = scene.run(simulated, path);
-  ASSERT_EQ(trace.size(), reference.size());
-  EXPECT_GT(contactTicks(trace), 100u);
-  for (std::size_t i = 0; i < trace.size(); ++i)
-  {
-    EXPECT_LT(distance(trace[i].finger, reference[i].finger), 1e-5) << i;
-    EXPECT_LT(distance(trace[i].force, reference[i].force), kTestStiffness * 2e-5) << i;
-  }
+  expectFollowsReference(trace, reference);
   EXPECT_EQ(spaceMouse->refusedReports(), 0u);
 }
 
@@ -156,10 +147,7 @@ TEST_F(HidapiUmockdev, UnplugMidStrokeFadesTheForceAndReportsIt)
     {
       bed.unplugHidraw();
     }
-    const Vec3 offset = (path.positionAt(time, hint) - settings.centre) / settings.metresPerCount;
-    emulator.setAxes({static_cast<int>(std::lround(offset.x)), static_cast<int>(std::lround(offset.y)),
-                      static_cast<int>(std::lround(-offset.z))},
-                     {0, 0, 0});
+    emulator.holdCapAt(path.positionAt(time, hint) - settings.centre, settings.metresPerCount);
   });
   expectFadeOut(scene.run(device, path), kUnplugTick);
 }
