@@ -59,10 +59,13 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
     data = detail::readWithVtk(path, *format);
     break;
   case MeshFileFormat::Gltf:
-    // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first.
-    detail::checkGltf(path, fileSize);
-    data = detail::readWithVtk(path, *format);
+  {
+    // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first,
+    // and then VTK reads the checked document's geometry, not the file itself.
+    const detail::GltfGeometryFile geometry = detail::checkGltfAndCopyGeometry(path, fileSize);
+    data = detail::readGltfWithVtk(geometry.path(), path);
     break;
+  }
   default:
     data = detail::readWithVtk(path, *format);
     break;

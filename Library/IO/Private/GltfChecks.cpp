@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,10 @@ using Json = nlohmann::json;
 
 constexpr std::uint32_t kChunkJson = 0x4E4F534Au; // "JSON", little-endian
 constexpr std::uint32_t kChunkBin = 0x004E4942u;  // "BIN\0"
+// VTK's loader reads lengths, counts and offsets as int.
+constexpr std::uint64_t kLargestVtkInt = 2147483647u;
+constexpr std::uint64_t kArrayBuffer = 34962u;
+constexpr std::uint64_t kElementArrayBuffer = 34963u;
 
 /// The checks of one file: its path for the messages and the parsed document.
 class GltfChecker
@@ -161,6 +166,10 @@ private:
         fail(where + " announces " + std::to_string(length) + " bytes but holds " +
              std::to_string(available));
       }
+      if (length > kLargestVtkInt)
+      {
+        fail(where + " announces " + std::to_string(length) + " bytes (VTK's loader reads up to 2^31 - 1)");
+      }
       m_bufferLengths.push_back(length);
     }
   }
@@ -263,6 +272,12 @@ private:
       {
         fail(where + ": byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
       }
+      // VTK's loader drops a view with another target, and every later view's index shifts.
+      const std::uint64_t target = unsignedField(view, "target", where, kArrayBuffer);
+      if (target != kArrayBuffer && target != kElementArrayBuffer)
+      {
+        fail(where + ": target " + std::to_string(target) + " is neither 34962 (vertices) nor 34963 (indices)");
+      }
     }
   }
 
@@ -344,6 +359,18 @@ private:
              " elements of " + std::to_string(elementBytes) + " bytes, stride " +
              std::to_string(stride) + ") reaches beyond bufferView " + std::to_string(view) + " of " +
              std::to_string(viewLength) + " bytes");
+      }
+      // VTK's loader drops an accessor whose bounds do not match its type, and every later
+      // accessor's index then names the one after it (fuzzing: a read of an accessor past the end).
+      for (const char* bound : {"min", "max"})
+      {
+        const auto values = accessor.find(bound);
+        if (values != accessor.end() &&
+            !(values->is_array() && values->size() == components &&
+              std::all_of(values->begin(), values->end(), [](const Json& v) { return v.is_number(); })))
+        {
+          fail(where + ": " + bound + " is not an array of " + std::to_string(components) + " numbers");
+        }
       }
       m_accessors.push_back({component, components, count});
     }
@@ -495,6 +522,12 @@ private:
     for (std::size_t i = 0; i < skins.size(); ++i)
     {
       const Json& skin = item(skins, i, "skin");
+      // Without joints VTK's loader drops the skin, and a node's skin index points past the end.
+      const auto joints = skin.find("joints");
+      if (joints == skin.end() || !joints->is_array() || joints->empty())
+      {
+        fail(name("skin", i) + " has no joints");
+      }
       requireIndexArray(skin, "joints", name("skin", i), "nodes");
       indexField(skin, "skeleton", name("skin", i), "nodes");
       indexField(skin, "inverseBindMatrices", name("skin", i), "accessors");
@@ -537,6 +570,11 @@ private:
       const std::string where = name("node", i);
       indexField(node, "mesh", where, "meshes");
       indexField(node, "skin", where, "skins");
+      // VTK's loader drops such a node (glTF forbids it), and the node indices after it shift.
+      if (node.contains("skin") && node.contains("matrix"))
+      {
+        fail(where + " has both a skin and a matrix (a skinned node is placed by its joints)");
+      }
       indexField(node, "camera", where, "cameras");
       requireIndexArray(node, "children", where, "nodes");
       for (const Json& child : array(node, "children", where + ": "))
@@ -582,7 +620,13 @@ private:
     const Json& scenes = topArray("scenes");
     for (std::size_t i = 0; i < scenes.size(); ++i)
     {
-      requireIndexArray(item(scenes, i, "scene"), "nodes", name("scene", i), "nodes");
+      const Json& scene = item(scenes, i, "scene");
+      // VTK's loader drops an empty scene, and the document's scene index then misses.
+      if (scene.empty())
+      {
+        fail(name("scene", i) + " is an empty object");
+      }
+      requireIndexArray(scene, "nodes", name("scene", i), "nodes");
     }
     indexField(m_document, "scene", "the document", "scenes");
   }
@@ -614,11 +658,12 @@ std::string readBytes(std::ifstream& stream, std::uint64_t offset, std::uint64_t
 }
 } // namespace
 
-void checkGltf(const std::string& path, std::uintmax_t fileSize)
+GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_t fileSize)
 {
   std::ifstream stream(path, std::ios::binary);
   std::string text;
   std::optional<std::uint64_t> binChunk;
+  std::optional<std::uint64_t> chunksAfterJson;
   if (readBytes(stream, 0, 4) == "glTF")
   {
     const std::string header = readBytes(stream, 0, 20);
@@ -649,6 +694,7 @@ void checkGltf(const std::string& path, std::uintmax_t fileSize)
                                " bytes does not fit in the file's " + std::to_string(length));
     }
     text = readBytes(stream, 20, jsonLength);
+    chunksAfterJson = 20 + jsonLength;
     // The chunks must tile the file exactly: VTK's loader reads chunk headers until the end of
     // the file, and a few bytes too short for a header kept it allocating for ever (fuzzing).
     std::uint64_t offset = 20 + jsonLength;
@@ -694,6 +740,7 @@ void checkGltf(const std::string& path, std::uintmax_t fileSize)
     throw InputError(path, "not a valid glTF file: the JSON does not parse (a number out of range)");
   }
   GltfChecker(path, document, binChunk).run();
+  return GltfGeometryFile(path, document, chunksAfterJson);
 }
 
 } // namespace proxima::detail

@@ -5,6 +5,8 @@
 // that are really there, and every index with the array it points into.
 #pragma once
 
+#include "IO/Private/GltfGeometryFile.h"
+
 #include <cstdint>
 #include <string>
 
@@ -18,7 +20,11 @@ namespace proxima::detail
 /// no sparse storage); every mesh primitive draws triangles (mode 4) from a float VEC3 POSITION
 /// accessor, with SCALAR unsigned indices, a multiple of three of them; and every index between
 /// scenes, nodes, meshes, skins, materials, textures, images and accessors is in range, with the
-/// node hierarchy a forest (no cycles, no node with two parents).
-void checkGltf(const std::string& path, std::uintmax_t fileSize);
+/// node hierarchy a forest (no cycles, no node with two parents). VTK's loader drops an array
+/// element it cannot load and so shifts every later index into that array, so whatever it would
+/// drop is refused too: accessor bounds that do not fit the type, a bufferView target other than
+/// 34962 or 34963, a skin without joints, a node with both a skin and a matrix, an empty scene.
+/// Returns the geometry-only copy of the checked document that VTK's loader is to read.
+GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_t fileSize);
 
 } // namespace proxima::detail

@@ -17,4 +17,8 @@ namespace proxima::detail
 /// and produces nothing.
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format);
 
+/// glTF read from `vtkPath` (the checked copy of GltfGeometryFile.h), with every error naming
+/// `userPath`, the file the user gave.
+vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath);
+
 } // namespace proxima::detail

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -514,6 +515,86 @@ TEST_F(ReadBadInput, GltfIndicesBetweenObjectsInRange)
                 "mesh 0 primitive 0: material refers to materials[0] but the file has 0");
 }
 
+TEST_F(ReadBadInput, GltfWhatVtkWouldDropIsRefused)
+{
+  // VTK's loader drops an element it cannot load, and every later index into that array then
+  // names the next element or reads past the end (a fuzzed file: an accessor whose min lost a
+  // number, and VTK copied an accessor from beyond its vector).
+  const std::string buffer = std::string(R"({"byteLength": 44, "uri": "data:;base64,)") + kTriangleBase64 + "\"}";
+  const std::string primitive = R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  const std::string views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6})";
+  const std::string indices = R"({"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"})";
+  const auto positions = [&](const std::string& bounds) {
+    return R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", )" + bounds + "}, " + indices;
+  };
+  EXPECT_EQ(proxima::readMeshFile(write("bounds.gltf", gltfJson(buffer, primitive, views,
+                                                                positions(R"("min": [0, 0, 0], "max": [1, 1, 0])"))))
+              .triangles.size(),
+            1u);
+  expectRefused(write("min.gltf", gltfJson(buffer, primitive, views, positions(R"("min": [0, 0], "max": [1, 1, 0])"))),
+                "accessor 0: min is not an array of 3 numbers");
+  expectRefused(write("max.gltf", gltfJson(buffer, primitive, views, positions(R"("min": [0, 0, 0], "max": [1, "1", 0])"))),
+                "accessor 0: max is not an array of 3 numbers");
+  expectRefused(write("target.gltf", gltfJson(buffer, primitive,
+                                              R"({"buffer": 0, "byteLength": 36, "target": 34962},
+                                                 {"buffer": 0, "byteOffset": 36, "byteLength": 6, "target": 1})")),
+                "bufferView 1: target 1 is neither 34962 (vertices) nor 34963 (indices)");
+  const std::string accessors = positions(R"("name": "positions")");
+  const std::string skinned = gltfJson(buffer, primitive, views, accessors,
+                                       R"({"mesh": 0, "skin": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})");
+  expectRefused(write("skinmatrix.gltf", skinned.substr(0, skinned.size() - 1) + R"(, "skins": [{"joints": [0]}]})"),
+                "node 0 has both a skin and a matrix");
+  const std::string jointless = gltfJson(buffer, primitive, views, accessors, R"({"mesh": 0, "skin": 0})");
+  expectRefused(write("joints.gltf", jointless.substr(0, jointless.size() - 1) + R"(, "skins": [{"name": "s"}]})"),
+                "skin 0 has no joints");
+  std::string emptyScene = gltfJson(buffer, primitive, views, accessors);
+  emptyScene.replace(emptyScene.find(R"("scene": 0, "scenes": [)"), 23, R"("scene": 1, "scenes": [{}, )");
+  expectRefused(write("scene.gltf", emptyScene), "scene 0 is an empty object");
+}
+
+TEST_F(ReadBadInput, GltfVtkReadsOnlyTheCheckedGeometry)
+{
+  // What a haptic scene does not use never reaches VTK's loader: here a texture names an image
+  // VTK would drop (its MIME type is GIF), with which the loader crashed (fuzzing).
+  const std::string plain = gltfJson();
+  const std::string extras = R"(, "images": [{"uri": "x.png", "mimeType": "image/gif"}], "textures": [{"source": 0}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+      "cameras": [{"type": "fisheye"}], "extensionsUsed": ["KHR_lights_punctual"],
+      "animations": [{"channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}}],
+                      "samplers": [{"input": 1, "output": 0}]}]})";
+  std::string decorated = plain.substr(0, plain.size() - 1) + extras;
+  decorated.replace(decorated.find(R"({"mesh": 0})"), 11, R"({"mesh": 0, "camera": 0})");
+  decorated.replace(decorated.find(R"("indices": 1})"), 13, R"("indices": 1, "material": 0})");
+  write("x.png", "not a picture");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(proxima::readMeshFile(write("decorated.gltf", decorated)).triangles.size(), 1u);
+  // A GLB too, and whatever case its extension is in (VTK's loader itself wants ".gltf" or ".glb").
+  EXPECT_EQ(proxima::readMeshFile(write("decorated.GLB", glb(plain.substr(0, plain.size() - 1) + extras, std::string())))
+              .triangles.size(),
+            1u);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  // VTK read copies; none is left behind.
+  char prefix[32];
+  std::snprintf(prefix, sizeof(prefix), "proxima-vtk-%010d-", static_cast<int>(::getpid()));
+  for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+  {
+    EXPECT_NE(entry.path().filename().string().rfind(prefix, 0), 0u) << entry.path() << " was left behind";
+  }
+  // What VTK itself refuses names the user's file, not the copy.
+  std::string noAsset = plain;
+  noAsset.replace(noAsset.find(R"("asset": {"version": "2.0"}, )"), 29, "");
+  const std::string noAssetPath = write("noasset.gltf", noAsset);
+  expectRefused(noAssetPath, "cannot read the file as glTF");
+  try
+  {
+    (void)proxima::readMeshFile(noAssetPath);
+  }
+  catch (const proxima::InputError& error)
+  {
+    EXPECT_EQ(std::string(error.what()).find("proxima-vtk-"), std::string::npos) << error.what();
+  }
+}
+
 TEST_F(ReadBadInput, GltfFindingsOfTheFuzzerAreRefused)
 {
   // The inputs with which VTK's loader crashed (Testing/Fuzz/Findings/FuzzMeshReader-glb, -gltf).
@@ -530,6 +611,14 @@ TEST_F(ReadBadInput, GltfFindingsOfTheFuzzerAreRefused)
   expectRefused(write("finding.gltf", copy("FuzzMeshReader-gltf",
                                            "FuzzMeshReader-gltf-crash-f42b4cb191384a0c4970532a9e87f9dfdae17faa")),
                 "not a valid glTF file: buffer 0: its data: uri is not base64 (only ';base64,' data is read)");
+  expectRefused(write("short-min.gltf", copy("FuzzMeshReader-gltf", "FuzzMeshReader-gltf-crash-short-min")),
+                "accessor 0: min is not an array of 3 numbers");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(proxima::readMeshFile(write("dropped-image.gltf", copy("FuzzMeshReader-gltf",
+                                                                   "FuzzMeshReader-gltf-crash-texture-of-dropped-image")))
+              .triangles.size(),
+            4u);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
 TEST_F(ReadBadInput, AsciiStlStructureIsCheckedBeforeVtk)
