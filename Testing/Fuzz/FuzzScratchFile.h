@@ -1,5 +1,8 @@
 // The readers take paths, so each fuzz input goes through one scratch file per process (in
 // /dev/shm when it exists, to spare the disk), named by the process and the format's extension.
+// The process number is padded to a fixed width: the path appears in the readers' messages, and a
+// path one digit longer changes loop counts, so libFuzzer's coverage, so which inputs a run with a
+// fixed seed and input count tries (CI's run must try the same ones on every machine).
 #pragma once
 
 #include <cstddef>
@@ -21,7 +24,9 @@ public:
     const std::filesystem::path folder =
       std::filesystem::exists("/dev/shm") ? std::filesystem::path("/dev/shm")
                                           : std::filesystem::temp_directory_path();
-    m_path = (folder / ("proxima-fuzz-" + std::to_string(::getpid()) + extension)).string();
+    char process[16];
+    std::snprintf(process, sizeof(process), "%010d", static_cast<int>(::getpid()));
+    m_path = (folder / ("proxima-fuzz-" + std::string(process) + extension)).string();
   }
   ~ScratchFile() { std::remove(m_path.c_str()); }
   ScratchFile(const ScratchFile&) = delete;
