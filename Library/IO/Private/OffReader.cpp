@@ -314,7 +314,8 @@ constexpr long long kMaxFaceValence = 1 << 16;
 /// made it allocate without bound (found by fuzzing). The walk follows OpenMesh's reading: the
 /// counts as numbers, each vertex as three numbers (six with N) and then the rest of its line
 /// (colours, texture coordinates), each face as a count and that many indices, number by number
-/// across lines. Where the numbers run out, the file is refused here too.
+/// across lines, and then, when the header says C (COFF), the rest of its line (the face's
+/// colour). Where the numbers run out, the file is refused here too.
 void checkAsciiFaces(const std::string& path, const OffHeader& header)
 {
   std::ifstream stream(path, std::ios::binary);
@@ -324,6 +325,11 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
   long long counts[3] = {0, 0, 0};
   stream >> counts[0] >> counts[1] >> counts[2];
   const int numbersPerVertex = prefix.find('N') != std::string::npos ? 6 : 3;
+  // OpenMesh reads a colour after a face's indices only in a C file; in a plain OFF file it reads
+  // the colour's first number as the next face's vertex count, so that is where a file with face
+  // colours and no C fails, and the message says why.
+  const bool faceColours = prefix.find('C') != std::string::npos;
+  const std::string colourHint = faceColours ? "" : "; if the faces carry colours, the header must be COFF";
   for (std::uint64_t v = 0; v < header.numVertices; ++v)
   {
     double coordinate = 0.0;
@@ -351,14 +357,14 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
         throw InputError(path, where + "malformed or truncated data");
       }
       throw InputError(path, where + "it does not start with a vertex count of at most " +
-                               std::to_string(kMaxFaceValence));
+                               std::to_string(kMaxFaceValence) + colourHint);
     }
     if (valence <= 0 || valence > kMaxFaceValence ||
         static_cast<std::uint64_t>(valence) > header.numVertices)
     {
       throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
                                " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
-                               " vertices, at most " + std::to_string(kMaxFaceValence) + ")");
+                               " vertices, at most " + std::to_string(kMaxFaceValence) + ")" + colourHint);
     }
     long long read = 0;
     long long index = 0;
@@ -369,7 +375,11 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
     if (read < valence)
     {
       throw InputError(path, where + "it announces " + std::to_string(valence) + " vertices but " +
-                               std::to_string(read) + " indices follow");
+                               std::to_string(read) + " indices follow" + colourHint);
+    }
+    if (faceColours)
+    {
+      std::getline(stream, line);
     }
   }
 }

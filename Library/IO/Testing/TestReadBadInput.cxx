@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -102,6 +103,24 @@ TEST_F(ReadBadInput, OffWithIndexOutOfRange)
 {
   expectRefused(write("index.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n"),
                 "face 1 refers to vertex 3, out of range (the file has 3 vertices)");
+}
+
+TEST_F(ReadBadInput, OffFaceColoursNeedTheColourHeader)
+{
+  // Geomview's OFF puts a face's colour after its indices. OpenMesh reads it there only when the
+  // header says C (COFF); in a plain OFF file it takes the colour's first number for the next
+  // face's vertex count, so such a file is refused, with the reason.
+  const std::string vertices = "4 4 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n";
+  const std::string faces = "3 0 2 1 255 0 0\n3 0 1 3 0.5 0.5 0.5 1\n3 0 3 2 7\n3 1 2 3\n";
+  const proxima::TriangleSoup soup = proxima::readMeshFile(write("colours.off", "COFF\n" + vertices + faces));
+  ASSERT_EQ(soup.triangles.size(), 4u);
+  const std::array<std::uint32_t, 3> last = {1, 2, 3};
+  const std::array<std::uint32_t, 3> second = {0, 1, 3};
+  EXPECT_EQ(soup.triangles[3], last);
+  EXPECT_EQ(soup.triangles[1], second);
+  expectRefused(write("plain.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces),
+                "cannot read face 1 (of 4): a vertex count of 255 (it must be from 1 to the file's 4 vertices, "
+                "at most 65536); if the faces carry colours, the header must be COFF");
 }
 
 TEST_F(ReadBadInput, OffTruncatedOrGarbled)
