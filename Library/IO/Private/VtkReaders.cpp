@@ -109,8 +109,7 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat
 
   case MeshFileFormat::Vtp:
     return readSingle<vtkXMLPolyDataReader>(path, "VTK XML poly data");
-  case MeshFileFormat::Gltf:
-    return readGltf(path, path);
+  case MeshFileFormat::Gltf: // only its checked copy, through readGltfWithVtk
   case MeshFileFormat::Obj:
   case MeshFileFormat::Ply:
   case MeshFileFormat::Off:

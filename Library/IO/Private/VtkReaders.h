@@ -12,13 +12,13 @@ class vtkPolyData;
 namespace proxima::detail
 {
 
-/// STL, VTP or glTF (every mesh of the default scene, node transforms applied, appended
-/// into one poly data). Throws InputError when the reader reports an error, or reports a warning
-/// and produces nothing.
+/// STL or VTP. Throws InputError when the reader reports an error, or reports a warning and
+/// produces nothing.
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format);
 
-/// glTF read from `vtkPath` (the checked copy of GltfGeometryFile.h), with every error naming
-/// `userPath`, the file the user gave.
+/// glTF: every mesh of the default scene, node transforms applied, appended into one poly data,
+/// read from `vtkPath` (the checked copy of GltfGeometryFile.h, never the user's file), with the
+/// errors as readWithVtk's but naming `userPath`, the file the user gave.
 vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath);
 
 } // namespace proxima::detail
