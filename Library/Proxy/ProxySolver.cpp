@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace proxima
 {
@@ -28,6 +29,15 @@ constexpr double kSameFaceNormalSine = 1e-13;
 // The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
 // axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
 constexpr double kMaxCurvatureStretch = 64.0;
+
+// The largest factor a crease's slide is stretched by: along the crease line the distance to
+// the finger is least at the planar slide's end and back to where it started at twice its length,
+// so a stretch of at most 2 never carries the proxy farther from the finger, whatever the fall
+// after it finds (the oracle's energy rule: a tick ends no farther than it began).
+constexpr double kMaxCreaseStretch = 2.0;
+
+// How far a crease's stretched slide may reach, as a fraction of the curved surface's radius.
+constexpr double kCreaseStretchReach = 0.25;
 
 // A stretched slide may cross a plane by this fraction of the finger distance (the goal
 // solver's feasibility tolerance): rounding, not a heading into the plane.
@@ -137,7 +147,8 @@ Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& 
   return rotateLike(face, interpolated, plane.normal);
 }
 
-Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const
+Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger,
+                                         double creaseStretchLimit) const
 {
   // The stretch is worked out for the active plane alone, but the slide it stretches stays above
   // the other planes only by the goal solve: stretched, it may head into one it merely touches.
@@ -145,7 +156,7 @@ Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec
   // at the same point, stretches the same slide again. The liver corner (ProxySolverFound.
   // StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide) ended so, 1.6e-7 m short of its
   // minimum. A stretched step that crosses any plane gives way to the feasible planar slide.
-  const Vec3 stretched = stretchedSlide(solution, toFinger);
+  const Vec3 stretched = stretchedSlide(solution, toFinger, creaseStretchLimit);
   if (stretched == solution.displacement)
   {
     return stretched;
@@ -161,9 +172,91 @@ Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec
   return stretched;
 }
 
-Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFinger) const
+namespace
+{
+// The radius of a plane's curved configuration-space surface (the distance from the proxy to the
+// touched edge or corner), or infinity on a face.
+double curvedRadius(const ContactPlane& plane)
+{
+  return plane.curved ? std::sqrt(plane.closest.squaredDistance)
+                      : std::numeric_limits<double>::infinity();
+}
+} // namespace
+
+double ProxySolver::curvatureAlong(const ContactPlane& plane, const Vec3& direction) const
+{
+  if (!plane.curved)
+  {
+    return 0.0; // a face: its configuration-space surface is its plane
+  }
+  const double rho = std::sqrt(plane.closest.squaredDistance);
+  if (!(rho > 0.0))
+  {
+    return 0.0;
+  }
+  Vec3 from;
+  Vec3 to;
+  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
+  if (!edgeOf(corners, plane.closest.feature, from, to) || !(squaredNorm(to - from) > 0.0))
+  {
+    return 1.0 / rho; // a corner's sphere bends the same way in every tangent direction
+  }
+  // An edge's cylinder is straight along its axis and bends by 1 / rho across it.
+  const double along = dot(direction, to - from);
+  return (1.0 - along * along / squaredNorm(to - from)) / rho;
+}
+
+Vec3 ProxySolver::stretchedCreaseSlide(const GoalSolution& solution, double stretchLimit) const
+{
+  // Two active planes: the planar slide runs along their crease line, the tangent of the curve
+  // where the two configuration-space surfaces meet. Where one of them is an edge's cylinder or
+  // a corner's sphere that curve bends, and tangent slides followed by the fall back onto it
+  // creep along it: with the finger near the curve's centre of curvature (deep under an edge,
+  // the bunny and liver probe paths) each cycle of two iterations advanced a few micrometres,
+  // and ticks ran to 170-216 iterations. The Newton step along the crease divides the slide by
+  // the Lagrangian's curvature there, 1 - sum mu_k kappa_k (mu_k: the depths, kappa_k: each
+  // surface's curvature along the crease), capped at `stretchLimit` where that curvature
+  // vanishes or turns.
+  const Vec3 planar = solution.displacement;
+  const ContactPlane& first = m_planes[solution.active[0]];
+  const ContactPlane& second = m_planes[solution.active[1]];
+  if (!first.curved && !second.curved)
+  {
+    return planar; // two faces meet in a straight line: the slide is exact
+  }
+  const double length = norm(planar);
+  if (!(length > 0.0))
+  {
+    return planar;
+  }
+  const Vec3 crease = planar / length;
+  const double hessian = 1.0 - solution.depth[0] * curvatureAlong(first, crease) -
+                         solution.depth[1] * curvatureAlong(second, crease);
+  if (!(stretchLimit > 1.0))
+  {
+    return planar;
+  }
+  double stretch = hessian > 1.0 / stretchLimit ? 1.0 / hessian : stretchLimit;
+  // The tangent model holds near the proxy only: a stretched slide may go at most a quarter of
+  // the smaller curved surface's radius (it then leaves that surface by a 32nd of the radius).
+  // Unbounded, a 64-fold slide of 5 mm left the edge's neighbourhood for another local minimum,
+  // and the tick ended farther from the finger than it began (shared bunny, wander path).
+  const double reach = kCreaseStretchReach * std::min(curvedRadius(first), curvedRadius(second));
+  if (length * stretch > reach)
+  {
+    stretch = std::max(1.0, reach / length);
+  }
+  return planar * stretch;
+}
+
+Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFinger,
+                                 double creaseStretchLimit) const
 {
   const Vec3 planar = solution.displacement;
+  if (solution.numActive == 2)
+  {
+    return stretchedCreaseSlide(solution, creaseStretchLimit);
+  }
   if (solution.numActive != 1)
   {
     return planar;
@@ -690,8 +783,13 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   bool blockedAtOnce = false;
   int stalled = 0;
   // A stretched slide is a Newton step: it must pay off with the move after it, or the tick goes
-  // on with plain slides (a trust region shrunk to the paper's planar steps).
+  // on with plain slides (a trust region shrunk to the paper's planar steps). A crease's stretch
+  // is capped by a trust region that shrinks eightfold at each stretch that did not pay off:
+  // where the curvature along a crease vanishes the cap is the step, and one bad guess should
+  // not leave the rest of the tick to creep.
   bool mayStretch = true;
+  double creaseStretchLimit = kMaxCurvatureStretch;
+  bool lastStretchOnCrease = false;
   double beforeStretch = -1.0;
   double viscousBudget = -1.0; // set by the tick's first viscous contact
   for (;;)
@@ -740,9 +838,13 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
     // surface sends it elsewhere on purpose.
     const Vec3 step = mayStretch && !result.usedShading && !m_anyFriction
-                        ? curvatureCorrectedStep(solution, target - m_proxy)
+                        ? curvatureCorrectedStep(solution, target - m_proxy, creaseStretchLimit)
                         : solution.displacement;
     const bool stretched = step != solution.displacement;
+    if (stretched)
+    {
+      lastStretchOnCrease = solution.numActive == 2;
+    }
     const Vec3 goal = m_proxy + step;
     if (blockedAtOnce && goal == previousGoal)
     {
@@ -781,7 +883,15 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     }
     if (beforeStretch >= 0.0 && !(toFinger < beforeStretch - stepTolerance))
     {
-      mayStretch = false; // the stretched slide and its fall ended no nearer: stop stretching
+      // The stretched slide and its fall ended no nearer: stop stretching (a crease: stretch less).
+      if (lastStretchOnCrease)
+      {
+        creaseStretchLimit /= 8.0;
+      }
+      else
+      {
+        mayStretch = false;
+      }
     }
     beforeStretch = -1.0;
     if (toFinger < distanceBefore - stepTolerance || targetMoving)

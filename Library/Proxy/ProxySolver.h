@@ -145,9 +145,17 @@ private:
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
   /// its configuration-space surface (a Newton step; see the .cpp).
   /// The stretched step is kept only if it stays above every plane, as the planar one does.
-  Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger) const;
+  Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger,
+                              double creaseStretchLimit) const;
   /// The stretched slide of curvatureCorrectedStep before that check.
-  Vec3 stretchedSlide(const GoalSolution& solution, const Vec3& toFinger) const;
+  Vec3 stretchedSlide(const GoalSolution& solution, const Vec3& toFinger,
+                      double creaseStretchLimit) const;
+  /// stretchedSlide for two active planes: the Newton step along their crease, at most
+  /// `stretchLimit` times the planar slide.
+  Vec3 stretchedCreaseSlide(const GoalSolution& solution, double stretchLimit) const;
+  /// The curvature of a plane's configuration-space surface along a unit tangent `direction`:
+  /// 0 on a face, 1 / rho on a corner's sphere, across an edge's cylinder (1 - cos^2) / rho.
+  double curvatureAlong(const ContactPlane& plane, const Vec3& direction) const;
   /// `finger`, or the point at reachRadius() from reachCenter() in its direction if farther.
   Vec3 withinReach(const Vec3& finger) const;
   /// Re-centres the candidate cache on the proxy when it has wandered off, at a tick's start.
