@@ -18,7 +18,8 @@ namespace proxima
 /// one soup) through VTK's readers, OFF through OpenMesh's parser, and OBJ and PLY through strict
 /// parsers of our own (VTK's readers of these two accept NaN, out-of-range indices and truncated
 /// data, silently or by crashing; see IO/Private/ObjReader.h and PlyReader.h). Precision: OBJ,
-/// PLY and VTP as written; STL, glTF and OFF (OpenMesh) in single precision. Polygons and triangle
+/// PLY, VTP and ASCII OFF as written (OFF in double despite OpenMesh's float parse, see
+/// IO/Private/OffReader.h); STL, glTF and binary OFF in single precision. Polygons and triangle
 /// strips are triangulated; lines and vertices are ignored. Point normals and texture
 /// coordinates are carried over when the file has them (one per point). Every coordinate is
 /// multiplied by `scale` (file units to metres).

@@ -12,11 +12,15 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 namespace proxima::detail
 {
@@ -34,14 +38,30 @@ struct StopParsing
   std::string defect;
 };
 
+/// A vertex's three coordinates as the file writes them, parsed in double.
+using Position = std::array<double, 3>;
+
+/// Whether `fromText` (a coordinate parsed in double) is the number OpenMesh parsed as
+/// `fromOpenMesh` (in float) from the same text. Rounding the text to double and then to float can
+/// land one float step away from rounding it to float at once, so either neighbour counts too.
+bool isSameCoordinate(double fromText, float fromOpenMesh)
+{
+  return static_cast<double>(std::nextafter(fromOpenMesh, -HUGE_VALF)) <= fromText &&
+         fromText <= static_cast<double>(std::nextafter(fromOpenMesh, HUGE_VALF));
+}
+
 /// Receives what OpenMesh's OFF parser reads. Only vertices, faces, vertex normals and texture
 /// coordinates matter; every other callback of the interface is accepted and ignored.
 class SoupImporter : public OpenMesh::IO::BaseImporter
 {
 public:
+  /// `positionsInDouble`: the ASCII file's coordinates parsed in double, one per vertex in file
+  /// order, which replace OpenMesh's float ones; null for a binary file, whose float32
+  /// coordinates OpenMesh already reads exactly.
   SoupImporter(const std::istream& stream, std::uint64_t expectedVertices,
-               std::uint64_t expectedFaces)
-    : m_stream(stream), m_expectedVertices(expectedVertices), m_expectedFaces(expectedFaces)
+               std::uint64_t expectedFaces, const std::vector<Position>* positionsInDouble)
+    : m_stream(stream), m_expectedVertices(expectedVertices), m_expectedFaces(expectedFaces),
+      m_positionsInDouble(positionsInDouble)
   {
     m_points->SetDataTypeToDouble();
   }
@@ -91,6 +111,10 @@ public:
 
   VertexHandle add_vertex(const OpenMesh::Vec3f& p) override
   {
+    if (m_positionsInDouble && !m_stream.fail())
+    {
+      return addVertex(positionInDouble(p));
+    }
     return addVertex(p[0], p[1], p[2]);
   }
   VertexHandle add_vertex(const OpenMesh::Vec3d& p) override
@@ -184,6 +208,34 @@ public:
   size_t n_edges() const override { return 0; }
 
 private:
+  /// The double coordinates of the vertex OpenMesh has just read as `single`. The walk that
+  /// parsed them follows OpenMesh's reading number by number, so they are the same numbers; a
+  /// mismatch would be a bug of that walk, not of the file, and must not pass unseen.
+  Position positionInDouble(const OpenMesh::Vec3f& single) const
+  {
+    const auto index = static_cast<std::size_t>(m_numVertices);
+    if (index >= m_positionsInDouble->size())
+    {
+      throw std::logic_error("OFF reader: OpenMesh read more vertices than the check walk found");
+    }
+    const Position& position = (*m_positionsInDouble)[index];
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!isSameCoordinate(position[static_cast<std::size_t>(i)], single[i]))
+      {
+        std::ostringstream out;
+        out.precision(17);
+        out << "OFF reader: vertex " << index << " coordinate " << i << " parsed as "
+            << position[static_cast<std::size_t>(i)] << " in double but " << single[i]
+            << " by OpenMesh";
+        throw std::logic_error(out.str());
+      }
+    }
+    return position;
+  }
+
+  VertexHandle addVertex(const Position& p) { return addVertex(p[0], p[1], p[2]); }
+
   VertexHandle addVertex(double x, double y, double z)
   {
     if (m_stream.fail())
@@ -214,6 +266,7 @@ private:
   std::uint64_t m_expectedFaces = 0;
   std::uint64_t m_numVertices = 0;
   std::uint64_t m_numFaces = 0;
+  const std::vector<Position>* m_positionsInDouble = nullptr;
   vtkNew<vtkPoints> m_points;
   vtkNew<vtkCellArray> m_polys;
   vtkNew<vtkCellArray> m_lines;
@@ -316,7 +369,13 @@ constexpr long long kMaxFaceValence = 1 << 16;
 /// (colours, texture coordinates), each face as a count and that many indices, number by number
 /// across lines, and then, when the header says C (COFF), the rest of its line (the face's
 /// colour). Where the numbers run out, the file is refused here too.
-void checkAsciiFaces(const std::string& path, const OffHeader& header)
+///
+/// Returns each vertex's first three numbers parsed in double: OpenMesh parses them in float
+/// (about 7 digits), which moves the surface by up to half a float step (1.5e-8 file units on
+/// fandisk.off, whose four-digit coordinates are nearly all beyond float), and this walk reads
+/// the same numbers anyway. The vector grows with the numbers actually read, never with the
+/// header's count.
+std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const OffHeader& header)
 {
   std::ifstream stream(path, std::ios::binary);
   std::string line;
@@ -330,12 +389,15 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
   // colours and no C fails, and the message says why.
   const bool faceColours = prefix.find('C') != std::string::npos;
   const std::string colourHint = faceColours ? "" : "; if the faces carry colours, the header must be COFF";
+  std::vector<Position> positions;
   for (std::uint64_t v = 0; v < header.numVertices; ++v)
   {
-    double coordinate = 0.0;
+    Position position = {0.0, 0.0, 0.0};
+    double normalComponent = 0.0;
     for (int i = 0; i < numbersPerVertex; ++i)
     {
-      if (!(stream >> coordinate))
+      double& target = i < 3 ? position[static_cast<std::size_t>(i)] : normalComponent;
+      if (!(stream >> target))
       {
         // Not left to OpenMesh: past the end of its stream it goes on to the faces with a vertex
         // count it never read (found by fuzzing: "OFF\n446104461 4 7" and nothing more).
@@ -343,6 +405,7 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
                                  std::to_string(header.numVertices) + "): malformed or truncated data");
       }
     }
+    positions.push_back(position);
     std::getline(stream, line);
   }
   for (std::uint64_t f = 0; f < header.numFaces; ++f)
@@ -382,6 +445,7 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
       std::getline(stream, line);
     }
   }
+  return positions;
 }
 
 } // namespace
@@ -389,9 +453,10 @@ void checkAsciiFaces(const std::string& path, const OffHeader& header)
 vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
 {
   const OffHeader header = readHeader(path);
+  std::vector<Position> positionsInDouble;
   if (!header.binary)
   {
-    checkAsciiFaces(path, header);
+    positionsInDouble = checkAsciiAndReadPositions(path, header);
   }
   // OpenMesh's reader is a process-wide singleton whose format options are set by can_u_read and
   // used by read: two threads must not interleave them.
@@ -408,7 +473,8 @@ vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
   {
     throw InputError(path, "cannot open the file");
   }
-  SoupImporter importer(stream, header.numVertices, header.numFaces);
+  SoupImporter importer(stream, header.numVertices, header.numFaces,
+                        header.binary ? nullptr : &positionsInDouble);
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexNormal;
   options += OpenMesh::IO::Options::VertexTexCoord;
