@@ -1,5 +1,6 @@
 // `proxima path`: writes a scripted finger path of a given kind, placed from the bounds of a mesh
-// or of a scene file's objects as placed.
+// or of a scene file's objects as placed; or, for `probe`, a seeded person-like probing session
+// placed by the surface itself.
 #include "Command.h"
 
 #include "IO/FingerPathFile.h"
@@ -7,8 +8,11 @@
 #include "IO/SceneBuilder.h"
 #include "Runtime/PathGenerators.h"
 
+#include <cstdint>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace proxima::cli
 {
@@ -22,11 +26,50 @@ struct PathOptions
   double scale = 1.0;
   double radius = 0.001;
   double rate = 1000.0;
+  std::uint64_t seed = 1;
+  double duration = ProbeOptions{}.duration;
   std::string out;
 };
 
+// The default kinds and `probe`, which needs the surface, not only the bounds.
+const std::vector<std::string>& pathKinds()
+{
+  static const std::vector<std::string> kinds = [] {
+    std::vector<std::string> all = defaultPathKinds();
+    all.push_back("probe");
+    return all;
+  }();
+  return kinds;
+}
+
+FingerPath probePath(const PathOptions& options)
+{
+  ProbeOptions probe;
+  probe.seed = options.seed;
+  probe.duration = options.duration;
+  probe.rate = options.rate;
+  if (options.scene.empty())
+  {
+    return makeProbePath(loadTriangleMesh(options.mesh, options.scale), probe);
+  }
+  const LoadedScene loaded = loadSceneFile(options.scene);
+  std::vector<ProbeSurface> surfaces;
+  for (const CollisionObject& object : loaded.scene->objects)
+  {
+    surfaces.push_back({&object.mesh, &object.tree});
+  }
+  return makeProbePath(surfaces, probe);
+}
+
 int writePath(const PathOptions& options)
 {
+  if (options.kind == "probe")
+  {
+    const FingerPath path = probePath(options);
+    writeFingerPathFile(options.out, path);
+    std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() << " s\n";
+    return kExitOk;
+  }
   Aabb bounds;
   if (options.scene.empty())
   {
@@ -56,11 +99,11 @@ Command addPathCommand(CLI::App& parent)
   auto options = std::make_shared<PathOptions>();
   CLI::App* app = parent.add_subcommand(
     "path",
-    "Write a scripted finger path (slide, press-stroke, circle, jab, wander) for a mesh or a "
-    "scene");
+    "Write a scripted finger path (slide, press-stroke, circle, jab, wander, or a seeded "
+    "person-like probe session) for a mesh or a scene");
   app->add_option("kind", options->kind, "Path kind")
     ->required()
-    ->check(CLI::IsMember(defaultPathKinds()));
+    ->check(CLI::IsMember(pathKinds()));
   CLI::Option* mesh =
     app->add_option("--mesh", options->mesh, "Mesh whose bounds place the path; or --scene");
   CLI::Option* scene = app->add_option(
@@ -74,6 +117,11 @@ Command addPathCommand(CLI::App& parent)
     ->check(CLI::PositiveNumber);
   app->add_option("--rate", options->rate, "Samples per second (default 1000)")
     ->check(CLI::PositiveNumber);
+  app->add_option("--seed", options->seed, "probe only: random seed (default 1)");
+  app->add_option("--duration", options->duration,
+                  "probe only: seconds of probing, at least (default 8; the last episode is "
+                  "finished)")
+    ->check(CLI::NonNegativeNumber);
   app->add_option("--out", options->out, "Path CSV to write")->required();
   app->callback([options] {
     if (options->mesh.empty() && options->scene.empty())

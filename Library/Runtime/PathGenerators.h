@@ -4,8 +4,11 @@
 #pragma once
 
 #include "Core/Aabb.h"
+#include "Geometry/SphereTree.h"
+#include "Geometry/TriangleMesh.h"
 #include "Runtime/FingerPath.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -60,5 +63,78 @@ const std::vector<std::string>& defaultPathKinds();
 /// wander drives straight through the object. Throws std::invalid_argument for an unknown kind.
 FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double radius,
                            double rate);
+
+/// A person-like probing session (DESIGN.md section 5, "the tail is the headline"): episodes
+/// at random surface points, each one of
+///   - press: approach along the outward normal from `approachDistance` out, press
+///     `pressDepth` below the surface, stroke `strokeLength` in a random tangent direction at
+///     `strokeSpeed` following the surface (every stroke row is the surface point nearest the
+///     straight tangent line, pushed `pressDepth` in along the local normal), dwell, retract;
+///   - jab: the same approach line driven in and back out at `jabSpeed`;
+///   - wander: from outside straight in along the normal and through the whole object.
+/// Between episodes the finger moves straight when that line crosses no triangle, else out along
+/// the last outward direction to a sphere around the whole mesh, over it, and in.
+/// Surface points are drawn area-weighted; a point is used only if the line along its normal
+/// on one side crosses no triangle (the point is visible from outside along that normal, which
+/// is then the outward side) and the approach start keeps half the approach distance from every
+/// triangle. Nothing assumes that z is up. Lengths in metres, speeds in m/s, times in seconds.
+struct ProbeOptions
+{
+  std::uint64_t seed = 1;
+  /// Episodes are added until the path is at least this long; the last one is finished.
+  double duration = 8.0;
+  double rate = 1000.0;
+  double approachDistanceMin = 0.01;
+  double approachDistanceMax = 0.02;
+  double approachSpeedMin = 0.05;
+  double approachSpeedMax = 0.3;
+  double pressDepthMin = 0.0005;
+  double pressDepthMax = 0.005;
+  double strokeLengthMin = 0.01;
+  double strokeLengthMax = 0.03;
+  double strokeSpeedMin = 0.05;
+  double strokeSpeedMax = 0.5;
+  double dwellMin = 0.1;
+  double dwellMax = 0.5;
+  double jabSpeedMin = 1.0;
+  double jabSpeedMax = 10.0;
+  double wanderSpeedMin = 0.2;
+  double wanderSpeedMax = 1.0;
+  double transitSpeedMin = 0.2;
+  double transitSpeedMax = 1.0;
+  /// Fractions of the episodes that are jabs and wanders (the rest are presses).
+  double jabFraction = 0.15;
+  double wanderFraction = 0.1;
+};
+
+/// What the finger is doing on one row of a probe path (for tests and plots).
+enum class ProbePhase : std::uint8_t
+{
+  Transit,
+  Approach,
+  Stroke,
+  Dwell,
+  Retract,
+  Jab,
+  Wander
+};
+
+/// One mesh of a probing session and its tree (for nearest-point queries).
+struct ProbeSurface
+{
+  const TriangleMesh* mesh = nullptr;
+  const SphereTree* tree = nullptr;
+};
+
+/// A probe path over `surfaces`, the same for the same options on every platform (its own
+/// uniform mapping of a std::mt19937_64). Rows are at exactly k / rate. When `phases` is given,
+/// it receives one phase per row. Throws std::invalid_argument for empty surfaces, a mesh
+/// without area, or options out of order (a minimum above its maximum, a rate not positive).
+FingerPath makeProbePath(const std::vector<ProbeSurface>& surfaces, const ProbeOptions& options,
+                         std::vector<ProbePhase>* phases = nullptr);
+
+/// The same on one mesh, building its tree first.
+FingerPath makeProbePath(const TriangleMesh& mesh, const ProbeOptions& options,
+                         std::vector<ProbePhase>* phases = nullptr);
 
 } // namespace proxima

@@ -1,0 +1,351 @@
+// The worst tick on person-like probing (DESIGN.md section 5: "the tail is the headline"): the
+// seeded probe path of Runtime/PathGenerators.h on every shared mesh at proxy radii of 0.5, 1, 2
+// and 3 mm, several seeds each, and the four shared person-like paths at the scale and radius
+// their README gives, each played in lockstep as `proxima run` plays it. Per case: ticks,
+// contact ticks, per-tick solve time (median, p99, p99.9, max over contact ticks and over all
+// ticks), iterations (p99.9, max) and triangles tested (mean, max); the same pooled over seeds
+// per mesh and radius, and over meshes per radius, with the tail of all ticks' solve times
+// (fraction slower than t) thinned to about 200 points. Tools/tail-report.sh plots them.
+//
+// Usage: BenchProbeTail OUT.json [--quick] [--seeds N]
+//   --quick: one seed, radii 0.5 and 2 mm, for a short check; default 3 seeds, all radii.
+#include "IO/FingerPathFile.h"
+#include "IO/MeshReader.h"
+#include "Proxy/ProxySolver.h"
+#include "Runtime/LockstepRuntime.h"
+#include "Runtime/PathGenerators.h"
+#include "Runtime/SimulatedDevice.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace proxima;
+
+constexpr double kRate = 1000.0;
+// About 200 points on the tail curve, spaced evenly in log(fraction) from 1 to 1 / ticks.
+constexpr int kTailPoints = 200;
+
+struct SharedMesh
+{
+  const char* file;
+  /// File units to metres; 0 scales the mesh to a 25 cm box diagonal (the hand-held size that
+  /// BenchTimeVersusError --scaling uses for meshes that carry no units).
+  double scale;
+};
+
+// The scales of ../shared/data/paths/README.md where it gives one, so the probe paths and the
+// shared paths see the same objects.
+const std::vector<SharedMesh> kMeshes = {
+  {"stanford-bunny.obj", 0.4},     {"VH_M_Liver.glb", 0.5},
+  {"M3x10_screw.stl", 0.005},      {"cranium_bone_iso075mm.ply", 0.001},
+  {"Angel_decimated.vtp", 0.0},    {"fandisk.off", 0.0},
+  {"teapot.obj", 0.0},             {"spot_triangulated.obj", 0.0},
+  {"abc_00000050_trimesh_000.stl", 0.0}, {"featuretype.STL", 0.0}};
+
+struct SharedPath
+{
+  const char* file;
+  const char* mesh;
+  double scale;
+  double radius;
+};
+
+// ../shared/data/paths/README.md's table.
+const std::vector<SharedPath> kSharedPaths = {
+  {"bunny-probe.csv", "stanford-bunny.obj", 0.4, 0.002},
+  {"liver-probe.csv", "VH_M_Liver.glb", 0.5, 0.002},
+  {"screw-probe.csv", "M3x10_screw.stl", 0.005, 0.0005},
+  {"cranium-probe.csv", "cranium_bone_iso075mm.ply", 0.001, 0.001}};
+
+struct Ticks
+{
+  std::vector<double> solveAll;
+  std::vector<double> solveContact;
+  std::vector<double> iterations;
+  std::vector<double> trianglesTested;
+  void append(const Ticks& other)
+  {
+    auto add = [](std::vector<double>& to, const std::vector<double>& from) {
+      to.insert(to.end(), from.begin(), from.end());
+    };
+    add(solveAll, other.solveAll);
+    add(solveContact, other.solveContact);
+    add(iterations, other.iterations);
+    add(trianglesTested, other.trianglesTested);
+  }
+};
+
+// Nearest-rank quantile, as RunSummary computes the summary's: the value below which a
+// fraction q of the (sorted) samples lies.
+double quantile(const std::vector<double>& sorted, double q)
+{
+  if (sorted.empty())
+  {
+    return 0.0;
+  }
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
+  return sorted[std::min(sorted.size(), std::max<std::size_t>(rank, 1)) - 1];
+}
+
+// (t, fraction of ticks slower than t) at fractions spaced evenly in log from 1 to 1 / N.
+nlohmann::json tail(const std::vector<double>& sorted)
+{
+  nlohmann::json points = nlohmann::json::array();
+  const auto n = static_cast<double>(sorted.size());
+  std::size_t lastIndex = sorted.size();
+  for (int k = 0; k <= kTailPoints && !sorted.empty(); ++k)
+  {
+    const double fraction = std::pow(n, -static_cast<double>(k) / kTailPoints);
+    const auto slower = static_cast<std::size_t>(std::floor(fraction * n));
+    const std::size_t index = sorted.size() - std::max<std::size_t>(slower, 1);
+    if (index == lastIndex)
+    {
+      continue;
+    }
+    lastIndex = index;
+    points.push_back({sorted[index], static_cast<double>(sorted.size() - 1 - index) / n});
+  }
+  return points;
+}
+
+nlohmann::json statistics(Ticks ticks, bool withTail)
+{
+  for (std::vector<double>* v :
+       {&ticks.solveAll, &ticks.solveContact, &ticks.iterations, &ticks.trianglesTested})
+  {
+    std::sort(v->begin(), v->end());
+  }
+  auto summary = [](const std::vector<double>& v) {
+    return nlohmann::json{{"median", quantile(v, 0.5)},
+                          {"p99", quantile(v, 0.99)},
+                          {"p99.9", quantile(v, 0.999)},
+                          {"max", v.empty() ? 0.0 : v.back()}};
+  };
+  double tested = 0.0;
+  for (double t : ticks.trianglesTested)
+  {
+    tested += t;
+  }
+  nlohmann::json json = {
+    {"ticks", ticks.solveAll.size()},
+    {"contact_ticks", ticks.solveContact.size()},
+    {"contact_solve_ns", summary(ticks.solveContact)},
+    {"solve_ns", summary(ticks.solveAll)},
+    {"iterations", {{"p99.9", quantile(ticks.iterations, 0.999)},
+                    {"max", ticks.iterations.empty() ? 0.0 : ticks.iterations.back()}}},
+    {"triangles_tested",
+     {{"mean", ticks.trianglesTested.empty()
+                 ? 0.0
+                 : tested / static_cast<double>(ticks.trianglesTested.size())},
+      {"max", ticks.trianglesTested.empty() ? 0.0 : ticks.trianglesTested.back()}}}};
+  if (withTail)
+  {
+    json["tail"] = tail(ticks.solveAll);
+  }
+  return json;
+}
+
+// Plays `path` through the scene as `proxima run` does (lockstep, default servo and proxy
+// parameters but the radius).
+Ticks play(const CollisionScene& scene, const FingerPath& path, double radius)
+{
+  ProxyParameters parameters;
+  parameters.radius = radius;
+  parameters.timeStep = 1.0 / kRate;
+  ProxySolver solver;
+  solver.setScene(&scene, parameters);
+  solver.resetProxy(path.positions.front());
+  LockstepSettings settings;
+  settings.rate = kRate;
+  settings.startTime = path.startTime();
+  settings.numTicks = ticksCovering(path.startTime(), path.endTime(), kRate);
+  SimulatedDevice device(path);
+  Ticks ticks;
+  runLockstep(settings, solver, device, ServoParameters{}, [&](const TickRecord& record) {
+    const auto ns = static_cast<double>(record.solveNanoseconds);
+    ticks.solveAll.push_back(ns);
+    if (record.contacts > 0)
+    {
+      ticks.solveContact.push_back(ns);
+    }
+    ticks.iterations.push_back(record.iterations);
+    ticks.trianglesTested.push_back(record.trianglesTested);
+  });
+  return ticks;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
+}
+
+// The shared mesh in metres, as `proxima run --scale` loads it.
+bool loadShared(const SharedMesh& mesh, CollisionScene& scene, double& scale)
+{
+  const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/" + mesh.file;
+  if (!std::filesystem::exists(file))
+  {
+    std::fprintf(stderr, "%s: not in %s, skipped\n", mesh.file, PROXIMA_SHARED_MESHES);
+    return false;
+  }
+  scale = mesh.scale;
+  if (scale == 0.0)
+  {
+    scale = 0.25 / loadTriangleMesh(file).diagonal();
+  }
+  scene.addObject(loadTriangleMesh(file, scale));
+  return true;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s OUT.json [--quick] [--seeds N]\n", argv[0]);
+    return 2;
+  }
+  bool quick = false;
+  int seeds = 3;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string argument = argv[i];
+    if (argument == "--quick")
+    {
+      quick = true;
+    }
+    else if (argument == "--seeds" && i + 1 < argc)
+    {
+      seeds = std::max(1, std::atoi(argv[++i]));
+    }
+    else
+    {
+      std::fprintf(stderr, "%s: unknown argument %s\n", argv[0], argument.c_str());
+      return 2;
+    }
+  }
+  if (quick)
+  {
+    seeds = 1;
+  }
+  const std::vector<double> radii =
+    quick ? std::vector<double>{0.0005, 0.002} : std::vector<double>{0.0005, 0.001, 0.002, 0.003};
+
+  const auto start = std::chrono::steady_clock::now();
+  nlohmann::json cases = nlohmann::json::array();
+  nlohmann::json pooled = nlohmann::json::array();
+  std::map<double, Ticks> byRadius;
+  for (const SharedMesh& mesh : kMeshes)
+  {
+    CollisionScene scene;
+    double scale = 0.0;
+    if (!loadShared(mesh, scene, scale))
+    {
+      continue;
+    }
+    const CollisionObject& object = scene.objects.front();
+    // One path per seed, the same at every radius, so radii compare on the same motion.
+    std::vector<FingerPath> paths;
+    for (int seed = 1; seed <= seeds; ++seed)
+    {
+      ProbeOptions options;
+      options.seed = static_cast<std::uint64_t>(seed);
+      options.rate = kRate;
+      paths.push_back(makeProbePath({ProbeSurface{&object.mesh, &object.tree}}, options));
+    }
+    for (double radius : radii)
+    {
+      Ticks all;
+      for (int seed = 1; seed <= seeds; ++seed)
+      {
+        const Ticks ticks = play(scene, paths[static_cast<std::size_t>(seed - 1)], radius);
+        // Tails only where they are plotted (pooled over seeds), to keep the report small.
+        nlohmann::json json = statistics(ticks, false);
+        json["mesh"] = mesh.file;
+        json["scale"] = scale;
+        json["triangles"] = object.mesh.numTriangles();
+        json["radius_m"] = radius;
+        json["seed"] = seed;
+        cases.push_back(json);
+        all.append(ticks);
+        std::fprintf(stderr, "%-30s r %.1f mm seed %d: contact median %7.0f ns, p99.9 %8.0f ns, "
+                             "max %8.0f ns\n",
+                     mesh.file, radius * 1e3, seed, json["contact_solve_ns"]["median"].get<double>(),
+                     json["contact_solve_ns"]["p99.9"].get<double>(),
+                     json["contact_solve_ns"]["max"].get<double>());
+      }
+      nlohmann::json json = statistics(all, true);
+      json["mesh"] = mesh.file;
+      json["radius_m"] = radius;
+      json["seeds"] = seeds;
+      pooled.push_back(json);
+      byRadius[radius].append(all);
+    }
+  }
+  for (const auto& [radius, ticks] : byRadius)
+  {
+    nlohmann::json json = statistics(ticks, true);
+    json["mesh"] = "all meshes";
+    json["radius_m"] = radius;
+    json["seeds"] = seeds;
+    pooled.push_back(json);
+  }
+
+  // The shared person-like paths, at their README's scale and radius.
+  nlohmann::json sharedPaths = nlohmann::json::array();
+  const std::string pathsFolder = std::string(PROXIMA_SHARED_MESHES) + "/../paths";
+  for (const SharedPath& shared : kSharedPaths)
+  {
+    const std::string pathFile = pathsFolder + "/" + shared.file;
+    const std::string meshFile = std::string(PROXIMA_SHARED_MESHES) + "/" + shared.mesh;
+    if (!std::filesystem::exists(pathFile) || !std::filesystem::exists(meshFile))
+    {
+      std::fprintf(stderr, "%s: not in %s, skipped\n", shared.file, pathsFolder.c_str());
+      continue;
+    }
+    CollisionScene scene;
+    scene.addObject(loadTriangleMesh(meshFile, shared.scale));
+    const Ticks ticks = play(scene, readFingerPathFile(pathFile), shared.radius);
+    nlohmann::json json = statistics(ticks, true);
+    json["path"] = shared.file;
+    json["mesh"] = shared.mesh;
+    json["scale"] = shared.scale;
+    json["triangles"] = scene.objects.front().mesh.numTriangles();
+    json["radius_m"] = shared.radius;
+    sharedPaths.push_back(json);
+    std::fprintf(stderr, "%-30s (shared path): contact median %7.0f ns, p99.9 %8.0f ns\n",
+                 shared.file, json["contact_solve_ns"]["median"].get<double>(),
+                 json["contact_solve_ns"]["p99.9"].get<double>());
+  }
+
+  const nlohmann::json report = {{"quick", quick},
+                                 {"seeds", seeds},
+                                 {"radii_m", radii},
+                                 {"rate_hz", kRate},
+                                 {"run_s", millisecondsSince(start) / 1e3},
+                                 {"cases", cases},
+                                 {"pooled", pooled},
+                                 {"shared_paths", sharedPaths}};
+  std::ofstream out(argv[1]);
+  out << report.dump(1) << "\n";
+  if (!out)
+  {
+    std::perror(argv[1]);
+    return 1;
+  }
+  std::fprintf(stderr, "%s written in %.0f s\n", argv[1], millisecondsSince(start) / 1e3);
+  return 0;
+}

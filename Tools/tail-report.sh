@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Regenerates the worst-tick report (DESIGN.md section 5, "the tail is the headline"): builds
+# Testing/Benchmarks/BenchProbeTail, runs the probe path on every shared mesh at radii 0.5-3 mm
+# (and the shared person-like paths), and plots the tail into Documentation/Figures/probe_tail.png
+# and Documentation/ProbeTailTable.md. A few minutes on one core; QUICK=1 for one seed and two
+# radii. Run it on an idle machine: the figure and table name the machine and its load.
+# Usage: bash Tools/tail-report.sh [build-dir]      (default: build; SEEDS=3, QUICK=0)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build}"
+figures="$root/Documentation/Figures"
+mkdir -p "$figures"
+
+cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD_TESTING=ON \
+  -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build" --target BenchProbeTail -j 2
+
+cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+machine="$cpu, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start, $(date -u +%Y-%m-%d)"
+json="$figures/probe_tail.json"
+arguments=(--seeds "${SEEDS:-3}")
+if [ "${QUICK:-0}" = 1 ]; then
+  arguments=(--quick)
+fi
+"$build/Testing/Benchmarks/BenchProbeTail" "$json" "${arguments[@]}"
+
+python=""
+for candidate in /usr/bin/python3 python3; do
+  if "$candidate" -c "import matplotlib" 2>/dev/null; then
+    python="$candidate"
+    break
+  fi
+done
+if [ -z "$python" ]; then
+  echo "tail-report.sh: no python3 with matplotlib (apt-get install python3-matplotlib)" >&2
+  exit 1
+fi
+"$python" "$root/Testing/Benchmarks/plot_probe_tail.py" "$json" \
+  --figure "$figures/probe_tail.png" --table "$root/Documentation/ProbeTailTable.md" \
+  --machine "$machine"
