@@ -38,6 +38,21 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
       // A hair larger, so that the double rounding of the rejection test never drops a
       // triangle that touches exactly.
       m_sphereRadius[m_count] = radius * (1.0 + 1e-12) + 1e-300;
+      const Vec3 normalCross = cross(c.b - c.a, c.c - c.a);
+      const double normalLength = norm(normalCross);
+      const Vec3 normal = normalLength > 0.0 ? normalCross / normalLength : Vec3{};
+      const double offset = dot(normal, centroid);
+      const double off = std::max({std::fabs(dot(normal, c.a) - offset),
+                                   std::fabs(dot(normal, c.b) - offset),
+                                   std::fabs(dot(normal, c.c) - offset)});
+      m_normalX[m_count] = normal.x;
+      m_normalY[m_count] = normal.y;
+      m_normalZ[m_count] = normal.z;
+      m_planeOffset[m_count] = offset;
+      // The corners' rounding off the plane, and the rounding of a height measured at any point
+      // near the triangle (coordinates up to |centroid| + radius): generous, as it only widens a
+      // filter that the exact test follows.
+      m_planeSlack[m_count] = 2.0 * off + 1e-12 * (maxAbsComponent(centroid) + radius);
       m_object[m_count] = objectIndex;
       ++m_count;
     }
@@ -45,6 +60,93 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
   m_center = center;
   m_reach = reach;
   m_valid = true;
+  m_lastBlocker = -1;
+}
+
+int CandidateCache::spheresNearSegment(const Vec3& start, const Vec3& motion, double reach,
+                                       int* out) const
+{
+  // One pass over the spheres with no branch in the body, so that it stays a few nanoseconds a
+  // sphere for the hundreds a large proxy keeps in its cache: the survivors are compacted into
+  // `out` by an index that advances only on a pass.
+  const double motionSquared = dot(motion, motion);
+  const double inverse = motionSquared > 0.0 ? 1.0 / motionSquared : 0.0;
+  int count = 0;
+  for (int i = 0; i < m_count; ++i)
+  {
+    const double cx = m_sphereX[i] - start.x;
+    const double cy = m_sphereY[i] - start.y;
+    const double cz = m_sphereZ[i] - start.z;
+    double s = (cx * motion.x + cy * motion.y + cz * motion.z) * inverse;
+    s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+    const double dx = cx - motion.x * s;
+    const double dy = cy - motion.y * s;
+    const double dz = cz - motion.z * s;
+    const double r = m_sphereRadius[i] + reach;
+    out[count] = i;
+    count += dx * dx + dy * dy + dz * dz <= r * r ? 1 : 0;
+  }
+  return count;
+}
+
+bool CandidateCache::mayReachPoint(int i, const Vec3& point, double reach) const
+{
+  const Vec3 toCenter{m_sphereX[i] - point.x, m_sphereY[i] - point.y, m_sphereZ[i] - point.z};
+  const double sphereReach = m_sphereRadius[i] + reach;
+  if (squaredNorm(toCenter) > sphereReach * sphereReach)
+  {
+    return false;
+  }
+  const Vec3 normal{m_normalX[i], m_normalY[i], m_normalZ[i]};
+  const double planeReach = reach + m_planeSlack[i];
+  const double height = dot(normal, point) - m_planeOffset[i];
+  if (std::fabs(height) > planeReach)
+  {
+    return false;
+  }
+  // In the plane: the point's foot must come within the circle's radius plus what the height
+  // leaves of the reach.
+  const double lateral = std::sqrt(std::max(0.0, planeReach * planeReach - height * height));
+  const Vec3 inPlane = toCenter - normal * dot(normal, toCenter);
+  const double circleReach = m_sphereRadius[i] + lateral;
+  return squaredNorm(inPlane) <= circleReach * circleReach;
+}
+
+bool CandidateCache::mayReachSegment(int i, const Vec3& start, const Vec3& motion,
+                                     double motionSquared, double reach) const
+{
+  // Distance from the triangle's sphere centre to the segment.
+  const Vec3 toCenter = Vec3{m_sphereX[i], m_sphereY[i], m_sphereZ[i]} - start;
+  double s = motionSquared > 0.0 ? dot(toCenter, motion) / motionSquared : 0.0;
+  s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+  const double sphereReach = m_sphereRadius[i] + reach;
+  if (squaredDistance(toCenter, motion * s) > sphereReach * sphereReach)
+  {
+    return false;
+  }
+  // The segment's heights above the plane are linear along it: it stays beyond the reach on one
+  // side, or comes no nearer than the lower end.
+  const Vec3 normal{m_normalX[i], m_normalY[i], m_normalZ[i]};
+  const double planeReach = reach + m_planeSlack[i];
+  const double startHeight = dot(normal, start) - m_planeOffset[i];
+  const double endHeight = startHeight + dot(normal, motion);
+  if ((startHeight > planeReach && endHeight > planeReach) ||
+      (startHeight < -planeReach && endHeight < -planeReach))
+  {
+    return false;
+  }
+  const double lowest = (startHeight > 0.0) == (endHeight > 0.0)
+                          ? std::min(std::fabs(startHeight), std::fabs(endHeight))
+                          : 0.0;
+  const double lateral = std::sqrt(std::max(0.0, planeReach * planeReach - lowest * lowest));
+  // The segment projected into the plane, against the triangle's bounding circle there.
+  const Vec3 centerInPlane = toCenter - normal * dot(normal, toCenter);
+  const Vec3 motionInPlane = motion - normal * dot(normal, motion);
+  const double inPlaneSquared = squaredNorm(motionInPlane);
+  double u = inPlaneSquared > 0.0 ? dot(centerInPlane, motionInPlane) / inPlaneSquared : 0.0;
+  u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+  const double circleReach = m_sphereRadius[i] + lateral;
+  return squaredDistance(centerInPlane, motionInPlane * u) <= circleReach * circleReach;
 }
 
 std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Vec3& point,
@@ -54,13 +156,12 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
 {
   std::uint32_t found = 0;
   const double maxDistanceSquared = maxDistance * maxDistance;
-  for (int i = 0; i < m_count; ++i)
+  int near[kCapacity];
+  const int numNear = spheresNearSegment(point, Vec3{}, maxDistance, near);
+  for (int k = 0; k < numNear; ++k)
   {
-    const double dx = m_sphereX[i] - point.x;
-    const double dy = m_sphereY[i] - point.y;
-    const double dz = m_sphereZ[i] - point.z;
-    const double reach = m_sphereRadius[i] + maxDistance;
-    if (dx * dx + dy * dy + dz * dz > reach * reach)
+    const int i = near[k];
+    if (!mayReachPoint(i, point, maxDistance))
     {
       continue;
     }
@@ -80,35 +181,85 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
   return found;
 }
 
+double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end,
+                                      double distance) const
+{
+  // The segment's points p with |p - centre| <= reach - distance: from the start (inside) to
+  // where it leaves that ball.
+  const double inner = m_reach - distance;
+  if (!m_valid || !(inner >= 0.0))
+  {
+    return 0.0;
+  }
+  const Vec3 from = start - m_center;
+  const double startSquared = squaredNorm(from);
+  if (startSquared > inner * inner)
+  {
+    return 0.0;
+  }
+  const Vec3 motion = end - start;
+  if (squaredNorm(end - m_center) <= inner * inner)
+  {
+    return 1.0;
+  }
+  // Exit root of |from + t motion|^2 = inner^2 with the start inside: c <= 0, so the larger root,
+  // written without cancellation.
+  const double a = squaredNorm(motion);
+  const double b = dot(from, motion);
+  const double c = startSquared - inner * inner;
+  const double root = std::sqrt(std::max(0.0, b * b - a * c));
+  const double exit = b > 0.0 ? -c / (b + root) : (root - b) / a;
+  // Rounded down a hair, so that the fraction never claims a point just outside the ball.
+  return std::clamp(exit * (1.0 - 1e-12), 0.0, 1.0);
+}
+
 SweepContact CandidateCache::firstContact(const CollisionScene& scene, const SweepQuery& query,
-                                          QueryStats& stats) const
+                                          double covered, QueryStats& stats) const
 {
   SweepContact best;
   const Vec3 motion = query.end - query.start;
   const double motionSquared = dot(motion, motion);
   const double beyond = query.radius + query.skin;
-  for (int i = 0; i < m_count; ++i)
-  {
-    // Distance from the triangle's sphere centre to the part of the path before the best contact.
-    const Vec3 toCenter = Vec3{m_sphereX[i], m_sphereY[i], m_sphereZ[i]} - query.start;
-    const double limit = best.t;
-    double s = motionSquared > 0.0 ? dot(toCenter, motion) / motionSquared : 0.0;
-    s = s < 0.0 ? 0.0 : (s > limit ? limit : s);
-    const double reach = m_sphereRadius[i] + beyond;
-    if (squaredDistance(toCenter, motion * s) > reach * reach)
+  int blocker = -1;
+  auto test = [&](int i) {
+    // Only the part of the path before the best contact so far (or the covered part) can give
+    // an earlier one.
+    const double bound = best.hit ? best.t : covered;
+    if (!mayReachSegment(i, query.start, motion * bound, motionSquared * bound * bound, beyond))
     {
-      continue;
+      return;
     }
     ++stats.trianglesTested;
     const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
-    const SweepResult hit = sweepSphereTriangleWithSkin(query.start, motion, query.radius,
-                                                        query.skin, c);
-    if (hit.hit && (!best.hit || hit.t < best.t))
+    const SweepResult hit =
+      sweepSphereTriangleWithSkin(query.start, motion, query.radius, query.skin, c);
+    if (hit.hit && hit.t <= covered && (!best.hit || hit.t < best.t))
     {
       best.hit = true;
       best.t = hit.t;
       best.triangle = m_triangle[i];
+      blocker = i;
     }
+  };
+  const int first = m_lastBlocker;
+  if (first >= 0)
+  {
+    test(first);
+  }
+  // The spheres near the part of the path that can still give the first contact.
+  const double bound = best.hit ? best.t : covered;
+  int near[kCapacity];
+  const int numNear = spheresNearSegment(query.start, motion * bound, beyond, near);
+  for (int k = 0; k < numNear; ++k)
+  {
+    if (near[k] != first)
+    {
+      test(near[k]);
+    }
+  }
+  if (best.hit)
+  {
+    m_lastBlocker = blocker;
   }
   return best;
 }

@@ -2,6 +2,14 @@
 // from the sphere trees once and reused while the proxy stays near that centre. A query whose
 // reach lies inside the cached ball is answered from this short list exactly as the trees would
 // answer it (same triangles, same first contact); any other query goes to the trees.
+//
+// A proxy resting on a surface is within reach of every triangle's bounding sphere for a
+// proxy radius around it, so the sphere test alone let hundreds of triangles through to the exact
+// test when the proxy is large against the triangles (r = 2 mm on 0.5 mm edges). A triangle's
+// points lie in its plane, so the distance from a point at height h above that plane to the
+// triangle is at least sqrt(h^2 + l^2), where l is the distance in the plane to the triangle's
+// bounding circle: a triangle under a proxy sliding along its neighbours (h ~ r) is reached only
+// where the proxy passes right over it.
 #pragma once
 
 #include "Geometry/SphereTree.h"
@@ -40,12 +48,31 @@ public:
                              NearbyTriangle* out, std::uint32_t* outObjects,
                              std::uint32_t capacity, QueryStats& stats) const;
 
-  /// First contact of the sweep among cached triangles. Call only when both ends of the sweep
-  /// are covered with the sweep's radius + skin.
-  SweepContact firstContact(const CollisionScene& scene, const SweepQuery& query,
+  /// How much of the sweep from `start` to `end` (as a fraction of it, 0 to 1) stays within the
+  /// cache's cover with `distance` around it; 0 when the start is not covered.
+  double coveredFraction(const Vec3& start, const Vec3& end, double distance) const;
+
+  /// First contact of the sweep among cached triangles at a fraction t <= `covered` of the sweep,
+  /// which must be covered up to there with the sweep's radius + skin (coveredFraction): then the
+  /// trees would find this contact too, and no earlier one. No hit means none up to `covered`.
+  /// The triangle that stopped the last sweep is tested first: a proxy creeping along a surface
+  /// is stopped by the same triangle sweep after sweep, and once its contact bounds the sweep,
+  /// the filters reject the triangles beyond it without their exact test.
+  SweepContact firstContact(const CollisionScene& scene, const SweepQuery& query, double covered,
                             QueryStats& stats) const;
 
 private:
+  /// Whether cached triangle `i` can come within `reach` of the segment from `start` along
+  /// `motion` (of squared length `motionSquared`): its bounding sphere, then its plane and its
+  /// bounding circle in that plane. Never false for a triangle the exact test would find.
+  bool mayReachSegment(int i, const Vec3& start, const Vec3& motion, double motionSquared,
+                       double reach) const;
+  /// The same for a point.
+  bool mayReachPoint(int i, const Vec3& point, double reach) const;
+  /// The cached triangles whose bounding spheres come within `reach` of the segment from `start`
+  /// along `motion` (a point for zero motion), into `out`; returns how many.
+  int spheresNearSegment(const Vec3& start, const Vec3& motion, double reach, int* out) const;
+
   bool m_valid = false;
   Vec3 m_center;
   double m_reach = 0.0;
@@ -55,8 +82,19 @@ private:
   double m_sphereY[kCapacity];
   double m_sphereZ[kCapacity];
   double m_sphereRadius[kCapacity];
+  // Each triangle's plane: unit normal and offset (n . x = offset in the plane; a zero normal for
+  // a triangle with no area, whose tests then fall back to the sphere), and how far rounding may
+  // put a corner off that plane.
+  double m_normalX[kCapacity];
+  double m_normalY[kCapacity];
+  double m_normalZ[kCapacity];
+  double m_planeOffset[kCapacity];
+  double m_planeSlack[kCapacity];
   std::uint32_t m_object[kCapacity];
   std::uint32_t m_triangle[kCapacity];
+  /// The cached triangle of the last sweep's contact, or -1 (a hint for the next sweep's order:
+  /// mutable, as it changes no answer).
+  mutable int m_lastBlocker = -1;
 };
 
 } // namespace proxima
