@@ -13,6 +13,12 @@ struct ProxyParameters
   double skin = 0.0;
   /// Move/update iterations allowed in one tick; hitting it is reported.
   int maxIterations = 256;
+  /// The work budget of one tick (0: none). The tick stops before the move stage that would
+  /// exceed it, with the proxy where it is (every move is swept, so that is always feasible);
+  /// the next tick goes on from there. Iterations are deterministic; wall time is not, so a
+  /// lockstep run stays reproducible bit for bit only while no tick hits a time budget.
+  int tickBudgetIterations = 0;
+  double tickBudgetSeconds = 0.0;
   /// Temporal coherence: keep the triangles within radius + margin of the proxy and answer the
   /// tick's queries from them while the proxy stays within half the margin. Exact either way.
   bool temporalCoherence = true;

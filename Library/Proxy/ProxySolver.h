@@ -55,6 +55,8 @@ struct ProxyTickResult
   int iterations = 0;
   /// The iteration cap ended the tick before the proxy stopped moving.
   bool hitIterationCap = false;
+  /// The tick's work budget (ProxyParameters::tickBudget*) ended it before the proxy stopped.
+  bool budgetLimited = false;
   /// The finger position was not finite: the tick was refused and the proxy held.
   bool refusedFinger = false;
   /// More primitives were within reach than the fixed buffers hold (planes were dropped).
@@ -160,6 +162,9 @@ private:
   Vec3 withinReach(const Vec3& finger) const;
   /// Re-centres the candidate cache on the proxy when it has wandered off, at a tick's start.
   void refreshCache(QueryStats& stats);
+  /// Within a tick: re-centres the candidate cache on a proxy that a move took into contact far
+  /// from the cached centre.
+  void followInCache(QueryStats& stats);
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
