@@ -1,0 +1,174 @@
+// A fast subset of the probe corpus (`proxima path probe`, Documentation/Performance.md) under
+// the oracle on every tick: person-like probing of real meshes at large radii, where the finger
+// goes deep and the proxy must slide far within a tick, which gentle strokes never exercise.
+// The tail benchmark (Testing/Benchmarks/BenchProbeTail) times the whole corpus; this checks
+// that the same kind of probing keeps every invariant of DESIGN.md section 4. No timing here.
+#include "ScriptedHarness.h"
+
+#include "IO/FingerPathFile.h"
+#include "IO/MeshReader.h"
+#include "Runtime/PathGenerators.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace proxima
+{
+namespace
+{
+struct ProbeCase
+{
+  const char* file;
+  double scale;
+  double radius;
+  std::uint64_t seed;
+};
+
+std::ostream& operator<<(std::ostream& out, const ProbeCase& c) { return out << c.file; }
+
+class ProbeCorpus : public testing::TestWithParam<ProbeCase>
+{
+};
+
+TEST_P(ProbeCorpus, InvariantsHoldOnEveryTick)
+{
+  const ProbeCase& probe = GetParam();
+  const std::string path = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.file;
+  if (!std::filesystem::exists(path))
+  {
+    GTEST_SKIP() << "shared mesh not found: " << path
+                 << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  scene->addObject(loadTriangleMesh(path, probe.scale));
+  const oracle::MeshOracle oracle(*scene);
+  ProbeOptions options;
+  options.seed = probe.seed;
+  options.duration = 1.5; // a few presses, strokes and a jab or wander: seconds of oracle time
+  scripted::ScriptedCase c;
+  c.name = std::string(probe.file) + "/probe-seed-" + std::to_string(probe.seed);
+  c.scene = scene.get();
+  c.oracle = &oracle;
+  c.proxy.radius = probe.radius;
+  c.path = makeProbePath(scene->objects.front().mesh, options);
+  c.rate = options.rate;
+  const scripted::ScriptedOutcome outcome = scripted::runScriptedCase(c);
+  scripted::expectInvariants(c.name, outcome);
+}
+
+// The radii of the shared person-like paths (../shared/data/paths/README.md): large against the
+// triangles, where the worst ticks were.
+INSTANTIATE_TEST_SUITE_P(
+  Probe, ProbeCorpus,
+  testing::Values(ProbeCase{"stanford-bunny.obj", 0.4, 0.002, 1},
+                  ProbeCase{"VH_M_Liver.glb", 0.5, 0.002, 2},
+                  ProbeCase{"M3x10_screw.stl", 0.005, 0.0005, 3},
+                  ProbeCase{"fandisk.off", 0.1, 0.003, 4}),
+  [](const testing::TestParamInfo<ProbeCase>& info) {
+    std::string name = info.param.file;
+    for (char& ch : name)
+    {
+      ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    }
+    return name;
+  });
+
+} // namespace
+} // namespace proxima
+
+namespace proxima
+{
+namespace
+{
+struct SharedProbePath
+{
+  const char* path;
+  const char* mesh;
+  double scale;
+  double radius;
+  /// The window of the path checked: 1.5 s (times PROXIMA_STRESS_SCALE, 0.25 in the sanitizer
+  /// build) around `worst`, the time of the tick that took the most iterations on commit 6a85cac,
+  /// so that a run takes seconds, not minutes (the whole bunny path under the oracle took 160 s).
+  /// PROXIMA_PROBE_FULL=1 checks every tick.
+  double worst;
+};
+
+double environmentScale()
+{
+  const char* text = std::getenv("PROXIMA_STRESS_SCALE");
+  const double scale = text != nullptr ? std::strtod(text, nullptr) : 1.0;
+  return scale > 0.0 && scale <= 1.0 ? scale : 1.0;
+}
+
+std::ostream& operator<<(std::ostream& out, const SharedProbePath& c) { return out << c.path; }
+
+class SharedProbePaths : public testing::TestWithParam<SharedProbePath>
+{
+};
+
+// The person-like paths of ../shared/data/paths at their scale and radius: the ones whose worst
+// ticks took 170-216 iterations before the crease stretch. Every tick under the oracle.
+TEST_P(SharedProbePaths, InvariantsHoldOnEveryTick)
+{
+  const SharedProbePath& probe = GetParam();
+  const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.mesh;
+  const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/../paths/" + probe.path;
+  if (!std::filesystem::exists(mesh) || !std::filesystem::exists(file))
+  {
+    GTEST_SKIP() << "shared mesh or path not found: " << mesh << ", " << file
+                 << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  scene->addObject(loadTriangleMesh(mesh, probe.scale));
+  const oracle::MeshOracle oracle(*scene);
+  scripted::ScriptedCase c;
+  c.name = probe.path;
+  c.scene = scene.get();
+  c.oracle = &oracle;
+  c.proxy.radius = probe.radius;
+  const FingerPath whole = readFingerPathFile(file);
+  const char* full = std::getenv("PROXIMA_PROBE_FULL");
+  if (full != nullptr && std::string(full) == "1")
+  {
+    c.path = whole;
+  }
+  else
+  {
+    const double halfWidth = 0.75 * environmentScale();
+    const double from = std::max(whole.startTime(), probe.worst - halfWidth);
+    for (std::size_t i = 0; i < whole.size(); ++i)
+    {
+      if (whole.times[i] >= from && whole.times[i] <= from + 2.0 * halfWidth)
+      {
+        c.path.append(whole.times[i] - from, whole.positions[i]);
+      }
+    }
+  }
+  const scripted::ScriptedOutcome outcome = scripted::runScriptedCase(c);
+  scripted::expectInvariants(c.name, outcome);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  Shared, SharedProbePaths,
+  testing::Values(
+    SharedProbePath{"bunny-probe.csv", "stanford-bunny.obj", 0.4, 0.002, 5.077},
+    SharedProbePath{"liver-probe.csv", "VH_M_Liver.glb", 0.5, 0.002, 0.648},
+    SharedProbePath{"screw-probe.csv", "M3x10_screw.stl", 0.005, 0.0005, 3.859},
+    SharedProbePath{"cranium-probe.csv", "cranium_bone_iso075mm.ply", 0.001, 0.001, 0.411}),
+  [](const testing::TestParamInfo<SharedProbePath>& info) {
+    std::string name = info.param.path;
+    for (char& ch : name)
+    {
+      ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    }
+    return name;
+  });
+
+} // namespace
+} // namespace proxima
