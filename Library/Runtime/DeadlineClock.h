@@ -93,10 +93,9 @@ struct DeadlineFloorSettings
 struct DeadlineFloorReport
 {
   LoopStatistics statistics;
-  /// What the floor thread ran with (describeScheduling), and why SCHED_FIFO was refused if it
-  /// was asked for and refused.
+  /// What the floor thread ran with (describeScheduling): SCHED_FIFO when asked for and
+  /// permitted, else the normal policy, as the servo thread then gets.
   std::string scheduling;
-  std::string refusal;
 };
 
 /// Runs the bare loop on a thread of its own for `settings.duration` and waits for it.
