@@ -72,7 +72,8 @@ def main():
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     curves = (("plain", "servo", "tab:blue", "servo, no swap"),
               ("swap", "servo", "tab:orange", "servo, swap at %g s" % (arguments.seconds / 2)),
-              ("plain", "floor", "black", "bare floor loop"))
+              ("plain", "floor", "black", "bare floor loop before no swap"),
+              ("swap", "floor", "tab:grey", "bare floor loop before swap"))
     for axis, quantity, label, limit in (
             (axes[0], "period", "period (us, 1 us bins)", 3 * nominal),
             (axes[1], "wake_latency", "wake-up latency after the deadline (us, 1 us bins)",
