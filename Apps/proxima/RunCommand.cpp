@@ -186,14 +186,19 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   const LoopStatistics servoStatistics = runtime.servoStatistics();
   report["servo"] = loopJson(servoStatistics, runtime.servoScheduling());
   report["proxy"] = loopJson(runtime.proxyStatistics());
-  std::cerr << "proxima run: servo " << deadlineLine(servoStatistics);
+  std::string line = "proxima run: servo " + deadlineLine(servoStatistics);
   if (!options.noFloor)
   {
     report["floor"] = loopJson(floor.statistics, floor.scheduling);
-    std::cerr << "; bare floor loop just before (" << floor.scheduling << ") "
-              << deadlineLine(floor.statistics);
+    line += "; bare floor loop just before (" + floor.scheduling + ") " +
+            deadlineLine(floor.statistics);
   }
-  std::cerr << "\n";
+  // For a person at a terminal, like the progress; a script reads the summary, and a run that
+  // succeeds prints nothing else on standard error.
+  if (isatty(STDERR_FILENO) != 0)
+  {
+    std::cerr << line << "\n";
+  }
 }
 
 int run(const RunOptions& options)
