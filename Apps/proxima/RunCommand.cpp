@@ -11,6 +11,7 @@
 #include "IO/TraceWriter.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/LockstepRuntime.h"
+#include "Runtime/DeadlineClock.h"
 #include "Runtime/RunSummary.h"
 #include "Runtime/ThreadedRuntime.h"
 
@@ -36,6 +37,7 @@ struct RunOptions
   std::string summary;
   DeviceChoiceOptions device;
   bool realtime = false;
+  bool noFloor = false;
 };
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -93,16 +95,41 @@ void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
   json["viscosity_N_s_per_m"] = material.viscosity;
 }
 
-nlohmann::ordered_json loopJson(const LoopStatistics& statistics)
+nlohmann::ordered_json loopJson(const LoopStatistics& statistics, const std::string& scheduling = {})
 {
-  return {{"ticks", statistics.ticks},
-          {"missed_deadlines", statistics.missedDeadlines},
-          {"over_budget_ticks", statistics.overBudgetTicks},
-          {"jitter_us",
-           {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
-            {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
-            {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}}},
-          {"max_work_us", static_cast<double>(statistics.maxWorkNanoseconds) / 1e3}};
+  nlohmann::ordered_json json;
+  if (!scheduling.empty())
+  {
+    json["scheduling"] = scheduling;
+  }
+  json["ticks"] = statistics.ticks;
+  json["wake_ups"] = statistics.wakeUps;
+  json["late_wake_ups"] = statistics.lateWakeUps;
+  json["missed_deadlines"] = statistics.missedDeadlines;
+  json["over_budget_ticks"] = statistics.overBudgetTicks;
+  json["wake_latency_us"] = {{"p50", statistics.wakeLatencyQuantileNanoseconds(0.5) / 1e3},
+                             {"p99", statistics.wakeLatencyQuantileNanoseconds(0.99) / 1e3},
+                             {"p99.9", statistics.wakeLatencyQuantileNanoseconds(0.999) / 1e3},
+                             {"max", static_cast<double>(statistics.maxWakeLatencyNanoseconds) / 1e3}};
+  json["jitter_us"] = {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
+                       {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
+                       {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}};
+  json["max_work_us"] = static_cast<double>(statistics.maxWorkNanoseconds) / 1e3;
+  return json;
+}
+
+/// "woke late 12 of 29001 times (0.04 %), missed 30 deadlines": the human line's figures.
+std::string deadlineLine(const LoopStatistics& statistics)
+{
+  const double percent = statistics.wakeUps > 0 ? 100.0 * static_cast<double>(statistics.lateWakeUps) /
+                                                    static_cast<double>(statistics.wakeUps)
+                                                : 0.0;
+  char text[160];
+  std::snprintf(text, sizeof text, "woke late %llu of %llu times (%.2f %%), missed %llu deadlines",
+                static_cast<unsigned long long>(statistics.lateWakeUps),
+                static_cast<unsigned long long>(statistics.wakeUps), percent,
+                static_cast<unsigned long long>(statistics.missedDeadlines));
+  return text;
 }
 
 /// Plays the path through the threaded runtime on the real clock: the servo and proxy loops on
@@ -118,6 +145,18 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   settings.servoRate = shared.rate;
   settings.recordTicks = numTicks;
   settings.duration = fingerPath.endTime();
+  // The platform's floor, right before the run in this process: a bare loop with the servo's
+  // rate, duration and scheduling and no work, counted by the servo's own clock code.
+  DeadlineFloorReport floor;
+  if (!options.noFloor)
+  {
+    DeadlineFloorSettings floorSettings;
+    floorSettings.rate = settings.servoRate;
+    floorSettings.duration = settings.duration;
+    floorSettings.realtimeScheduling = settings.realtimeScheduling;
+    floorSettings.priority = settings.servoPriority;
+    floor = measureDeadlineFloor(floorSettings);
+  }
   ThreadedRuntime runtime(device, servoParameters(shared), settings);
   runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front());
   std::string message;
@@ -144,8 +183,22 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
     onTick(record);
   }
   report["scheduling"] = message;
-  report["servo"] = loopJson(runtime.servoStatistics());
+  const LoopStatistics servoStatistics = runtime.servoStatistics();
+  report["servo"] = loopJson(servoStatistics, runtime.servoScheduling());
   report["proxy"] = loopJson(runtime.proxyStatistics());
+  std::string line = "proxima run: servo " + deadlineLine(servoStatistics);
+  if (!options.noFloor)
+  {
+    report["floor"] = loopJson(floor.statistics, floor.scheduling);
+    line += "; bare floor loop just before (" + floor.scheduling + ") " +
+            deadlineLine(floor.statistics);
+  }
+  // For a person at a terminal, like the progress; a script reads the summary, and a run that
+  // succeeds prints nothing else on standard error.
+  if (isatty(STDERR_FILENO) != 0)
+  {
+    std::cerr << line << "\n";
+  }
 }
 
 int run(const RunOptions& options)
@@ -328,6 +381,9 @@ Command addRunCommand(CLI::App& parent)
   app->add_flag("--realtime", options->realtime,
                 "Run on the real clock through the threaded runtime (servo and proxy threads at "
                 "--rate, 1000 to 10000 Hz), as a real device needs; the default is lockstep");
+  app->add_flag("--no-floor", options->noFloor,
+                "With --realtime: skip the bare deadline loop that otherwise runs just before, for "
+                "as long as the path, to measure the platform's floor (the summary's \"floor\")");
   addSceneOptionsAfterPath(*app, options->scene);
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return run(*options); }};

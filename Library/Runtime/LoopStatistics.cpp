@@ -70,6 +70,20 @@ double LoopStatistics::jitterQuantileNanoseconds(double q) const
   return quantileOfBins(std::move(bins), q);
 }
 
+double LoopStatistics::wakeLatencyQuantileNanoseconds(double q) const
+{
+  std::vector<std::pair<double, std::uint64_t>> bins;
+  bins.reserve(kWakeBins);
+  for (int i = 0; i + 1 < kWakeBins; ++i)
+  {
+    bins.emplace_back(static_cast<double>((i + 1) * kBinNanoseconds), wakeLatencyHistogram[i]);
+  }
+  bins.emplace_back(std::max(static_cast<double>(kWakeBins * kBinNanoseconds),
+                             static_cast<double>(maxWakeLatencyNanoseconds)),
+                    wakeLatencyHistogram[kWakeBins - 1]);
+  return quantileOfBins(std::move(bins), q);
+}
+
 void LoopStatisticsRecorder::reset(double rate)
 {
   m_rate.store(rate, std::memory_order_relaxed);
@@ -80,6 +94,13 @@ void LoopStatisticsRecorder::reset(double rate)
   m_maxWork.store(0, std::memory_order_relaxed);
   m_overBudget.store(0, std::memory_order_relaxed);
   for (auto& bin : m_histogram)
+  {
+    bin.store(0, std::memory_order_relaxed);
+  }
+  m_wakeUps.store(0, std::memory_order_relaxed);
+  m_lateWakeUps.store(0, std::memory_order_relaxed);
+  m_maxWakeLatency.store(0, std::memory_order_relaxed);
+  for (auto& bin : m_wakeHistogram)
   {
     bin.store(0, std::memory_order_relaxed);
   }
@@ -117,6 +138,19 @@ void LoopStatisticsRecorder::recordMissed(std::uint64_t count)
   m_missed.fetch_add(count, std::memory_order_relaxed);
 }
 
+void LoopStatisticsRecorder::recordWakeUp(std::int64_t latencyNanoseconds, bool late)
+{
+  const std::int64_t bin = std::clamp<std::int64_t>(
+    latencyNanoseconds / LoopStatistics::kBinNanoseconds, 0, LoopStatistics::kWakeBins - 1);
+  m_wakeHistogram[static_cast<std::size_t>(bin)].fetch_add(1, std::memory_order_relaxed);
+  m_wakeUps.fetch_add(1, std::memory_order_relaxed);
+  if (late)
+  {
+    m_lateWakeUps.fetch_add(1, std::memory_order_relaxed);
+  }
+  storeMax(m_maxWakeLatency, latencyNanoseconds);
+}
+
 LoopStatistics LoopStatisticsRecorder::snapshot() const
 {
   LoopStatistics statistics;
@@ -130,6 +164,13 @@ LoopStatistics LoopStatisticsRecorder::snapshot() const
   for (int i = 0; i < LoopStatistics::kBins; ++i)
   {
     statistics.periodHistogram[i] = m_histogram[i].load(std::memory_order_relaxed);
+  }
+  statistics.wakeUps = m_wakeUps.load(std::memory_order_relaxed);
+  statistics.lateWakeUps = m_lateWakeUps.load(std::memory_order_relaxed);
+  statistics.maxWakeLatencyNanoseconds = m_maxWakeLatency.load(std::memory_order_relaxed);
+  for (int i = 0; i < LoopStatistics::kWakeBins; ++i)
+  {
+    statistics.wakeLatencyHistogram[i] = m_wakeHistogram[i].load(std::memory_order_relaxed);
   }
   return statistics;
 }

@@ -1,6 +1,8 @@
 // Period and deadline statistics of a fixed-rate loop: a histogram of the time between the starts
-// of consecutive ticks, written by the loop's own thread with relaxed atomics and read from any
-// thread while it runs.
+// of consecutive ticks and one of how late each wake-up came after its deadline, written by the
+// loop's own thread with relaxed atomics and read from any thread while it runs. The servo loop
+// and the bare floor loop (DeadlineClock.h) fill the same recorder through the same clock, so
+// their figures compare one to one.
 #pragma once
 
 #include <array>
@@ -17,6 +19,9 @@ struct LoopStatistics
   /// longer.
   static constexpr std::int64_t kBinNanoseconds = 1000;
   static constexpr int kBins = 2048;
+  /// Wake-up latency bins (1 us each): 8 ms, because a shared virtual machine's p99.9 wake-up
+  /// is a few milliseconds late; the last bin holds everything later.
+  static constexpr int kWakeBins = 8192;
 
   double rate = 0.0;
   std::uint64_t ticks = 0;
@@ -31,11 +36,21 @@ struct LoopStatistics
   std::int64_t maxWorkNanoseconds = 0;
   std::uint64_t overBudgetTicks = 0;
   std::array<std::uint64_t, kBins> periodHistogram{};
+  /// Every wake-up from a deadline sleep (one more than `ticks`, which counts periods), those
+  /// that came more than one period after their deadline, the latest one, and the histogram of
+  /// wake-up latency (time from the deadline to the wake-up).
+  std::uint64_t wakeUps = 0;
+  std::uint64_t lateWakeUps = 0;
+  std::int64_t maxWakeLatencyNanoseconds = 0;
+  std::array<std::uint64_t, kWakeBins> wakeLatencyHistogram{};
 
   /// Quantile q in [0, 1] of the tick period in nanoseconds, at the bin's upper edge.
   double periodQuantileNanoseconds(double q) const;
   /// Quantile q of |period - nominal period| in nanoseconds: the loop's jitter.
   double jitterQuantileNanoseconds(double q) const;
+  /// Quantile q of the wake-up latency in nanoseconds, at the bin's upper edge; in the last
+  /// (open) bin, the latest wake-up, which bounds it.
+  double wakeLatencyQuantileNanoseconds(double q) const;
 };
 
 /// The writer side, owned by one loop thread.
@@ -50,6 +65,8 @@ public:
   void recordWork(std::int64_t workNanoseconds);
   /// Deadlines that passed while the loop was late, whose ticks were skipped.
   void recordMissed(std::uint64_t count);
+  /// The loop woke `latencyNanoseconds` after its deadline; `late`: more than one period after.
+  void recordWakeUp(std::int64_t latencyNanoseconds, bool late);
   LoopStatistics snapshot() const;
 
 private:
@@ -61,6 +78,10 @@ private:
   std::atomic<std::int64_t> m_maxWork{0};
   std::atomic<std::uint64_t> m_overBudget{0};
   std::array<std::atomic<std::uint64_t>, LoopStatistics::kBins> m_histogram{};
+  std::atomic<std::uint64_t> m_wakeUps{0};
+  std::atomic<std::uint64_t> m_lateWakeUps{0};
+  std::atomic<std::int64_t> m_maxWakeLatency{0};
+  std::array<std::atomic<std::uint64_t>, LoopStatistics::kWakeBins> m_wakeHistogram{};
 };
 
 } // namespace proxima

@@ -1,45 +1,20 @@
 #include "Runtime/ThreadedRuntime.h"
 
+#include "Runtime/DeadlineClock.h"
 #include "Runtime/LockstepTick.h"
 #include "Runtime/SnapshotChannel.h"
 
-#include <pthread.h>
-#include <sched.h>
 #include <sys/prctl.h>
-#include <time.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 namespace proxima
 {
 namespace
 {
-using Nanoseconds = std::int64_t;
-
-Nanoseconds monotonicNow()
-{
-  timespec now{};
-  clock_gettime(CLOCK_MONOTONIC, &now);
-  return static_cast<Nanoseconds>(now.tv_sec) * 1000000000 + now.tv_nsec;
-}
-
-/// Sleeps until the absolute CLOCK_MONOTONIC time `deadline`: a fixed deadline does not drift the
-/// way a sleep for one period after the work would.
-void sleepUntil(Nanoseconds deadline)
-{
-  timespec target{};
-  target.tv_sec = static_cast<time_t>(deadline / 1000000000);
-  target.tv_nsec = static_cast<long>(deadline % 1000000000);
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &target, nullptr) == EINTR)
-  {
-  }
-}
-
 /// The finger sample the servo thread posts to the proxy thread.
 struct FingerPost
 {
@@ -72,52 +47,6 @@ struct SceneSlot
   ProxyParameters parameters;
   Vec3 proxyStart;
   std::uint64_t version = 0;
-};
-
-/// One fixed-rate loop's clock: absolute deadlines from a start time, skipping ahead (and
-/// counting the missed deadlines) when a tick comes too late.
-class LoopClock
-{
-public:
-  LoopClock(Nanoseconds start, double rate, LoopStatisticsRecorder& statistics)
-    : m_start(start), m_period(static_cast<Nanoseconds>(std::llround(1e9 / rate))),
-      m_statistics(statistics)
-  {
-  }
-
-  /// Waits for the next tick's deadline; returns its tick number.
-  std::uint64_t waitForNextTick()
-  {
-    const Nanoseconds deadline = m_start + static_cast<Nanoseconds>(m_tick) * m_period;
-    sleepUntil(deadline);
-    const Nanoseconds now = monotonicNow();
-    const bool late = now > deadline + m_period / 2;
-    if (m_lastWake != 0)
-    {
-      m_statistics.record(now - m_lastWake, late);
-    }
-    m_lastWake = now;
-    const std::uint64_t tick = m_tick;
-    // Deadlines that passed while this tick was late are skipped, not run back to back.
-    const Nanoseconds behind = now - deadline;
-    const std::uint64_t skipped = behind > m_period ? static_cast<std::uint64_t>(behind / m_period) : 0;
-    if (skipped > 0)
-    {
-      m_statistics.recordMissed(skipped);
-    }
-    m_tick += 1 + skipped;
-    return tick + skipped;
-  }
-
-  void workDone() { m_statistics.recordWork(monotonicNow() - m_lastWake); }
-  Nanoseconds period() const { return m_period; }
-
-private:
-  Nanoseconds m_start;
-  Nanoseconds m_period;
-  LoopStatisticsRecorder& m_statistics;
-  std::uint64_t m_tick = 0;
-  Nanoseconds m_lastWake = 0;
 };
 
 ProxyPost makeProxyPost(const FingerPost& finger, const ProxyStepOutcome& outcome,
@@ -193,6 +122,7 @@ struct ThreadedRuntime::Impl
 
   std::thread servoThread;
   std::thread proxyThread;
+  std::string servoScheduling;
 };
 
 void ThreadedRuntime::Impl::installPendingScene()
@@ -207,7 +137,7 @@ void ThreadedRuntime::Impl::installPendingScene()
   {
     return;
   }
-  const Nanoseconds begin = monotonicNow();
+  const Nanoseconds begin = monotonicNanoseconds();
   solver->setScene(next->scene.get(), next->parameters);
   if (live == nullptr)
   {
@@ -215,7 +145,7 @@ void ThreadedRuntime::Impl::installPendingScene()
   }
   SceneSlot* previous = live;
   live = next;
-  const Nanoseconds took = monotonicNow() - begin;
+  const Nanoseconds took = monotonicNanoseconds() - begin;
   if (took > longestInstall.load(std::memory_order_relaxed))
   {
     longestInstall.store(took, std::memory_order_relaxed);
@@ -228,7 +158,7 @@ void ThreadedRuntime::Impl::installPendingScene()
 void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
 {
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
-  LoopClock clock(start, settings.proxyRate, proxyStatistics);
+  DeadlineClock clock(start, settings.proxyRate, proxyStatistics);
   ServoForce recordForce(servo, limits);
   bool updatedOnce = false;
   std::uint64_t lastTick = 0;
@@ -239,7 +169,7 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
     const Nanoseconds stall = stallRequest.exchange(0, std::memory_order_acq_rel);
     if (stall > 0)
     {
-      sleepUntil(monotonicNow() + stall);
+      sleepUntilNanoseconds(monotonicNanoseconds() + stall);
     }
     installPendingScene();
     // New is decided by the sample's tick, not by the channel's write count: the servo can post
@@ -285,7 +215,7 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
 void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
 {
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
-  LoopClock clock(start, settings.servoRate, servoStatistics);
+  DeadlineClock clock(start, settings.servoRate, servoStatistics);
   ServoForce force(servo, limits);
   while (!stopRequested.load(std::memory_order_acquire))
   {
@@ -367,19 +297,6 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
   return version;
 }
 
-namespace
-{
-/// Asks for SCHED_FIFO at `priority` for `thread`; the error text when refused, empty when
-/// granted.
-std::string requestRealtime(std::thread& thread, int priority)
-{
-  sched_param parameters{};
-  parameters.sched_priority = priority;
-  const int error = pthread_setschedparam(thread.native_handle(), SCHED_FIFO, &parameters);
-  return error == 0 ? std::string() : std::string(std::strerror(error));
-}
-} // namespace
-
 bool ThreadedRuntime::start(std::string& message)
 {
   Impl& impl = *m_impl;
@@ -396,7 +313,7 @@ bool ThreadedRuntime::start(std::string& message)
   // Both loops count from one start a little ahead, so the threads exist before their first
   // deadline. With equal rates the proxy loop runs half a period after the servo: each update
   // has the servo's newest sample and is published before the next servo tick.
-  const Nanoseconds start = monotonicNow() + 10000000;
+  const Nanoseconds start = monotonicNanoseconds() + 10000000;
   const Nanoseconds proxyOffset =
     impl.settings.proxyRate == impl.settings.servoRate
       ? static_cast<Nanoseconds>(std::llround(0.5e9 / impl.settings.servoRate))
@@ -422,8 +339,8 @@ bool ThreadedRuntime::start(std::string& message)
             " Hz";
   if (impl.settings.realtimeScheduling)
   {
-    const std::string servoError = requestRealtime(impl.servoThread, impl.settings.servoPriority);
-    const std::string proxyError = requestRealtime(impl.proxyThread, impl.settings.proxyPriority);
+    const std::string servoError = requestFifoScheduling(impl.servoThread, impl.settings.servoPriority);
+    const std::string proxyError = requestFifoScheduling(impl.proxyThread, impl.settings.proxyPriority);
     if (servoError.empty() && proxyError.empty())
     {
       message += "; real-time scheduling (SCHED_FIFO) granted";
@@ -435,6 +352,7 @@ bool ThreadedRuntime::start(std::string& message)
                  "(/etc/security/limits.conf) or CAP_SYS_NICE";
     }
   }
+  impl.servoScheduling = describeScheduling(impl.servoThread);
   return true;
 }
 
@@ -479,6 +397,11 @@ std::int64_t ThreadedRuntime::longestSceneInstallNanoseconds() const
 LoopStatistics ThreadedRuntime::servoStatistics() const
 {
   return m_impl->servoStatistics.snapshot();
+}
+
+std::string ThreadedRuntime::servoScheduling() const
+{
+  return m_impl->servoScheduling;
 }
 
 LoopStatistics ThreadedRuntime::proxyStatistics() const

@@ -79,6 +79,9 @@ public:
   /// Period and deadline statistics of each loop, readable while running.
   LoopStatistics servoStatistics() const;
   LoopStatistics proxyStatistics() const;
+  /// The servo thread's policy and priority as start() left them (e.g. "SCHED_FIFO 80"): what a
+  /// floor loop (DeadlineClock.h) must run with to be comparable.
+  std::string servoScheduling() const;
   /// The recorded ticks (RuntimeSettings::recordTicks), after stop().
   std::vector<TickRecord> records() const;
 

@@ -1,13 +1,18 @@
 // Measures the threaded runtime's loops on the real clock: the servo at a chosen rate (4 kHz by
 // default) for a chosen time (60 s) while the finger strokes the 1.5M-triangle skull, and
 // optionally a model swap half way: a second skull scene is built on this thread while the loops
-// run and is published. Prints one JSON object: period jitter quantiles, missed deadlines, ticks
-// over budget, the longest period and tick, and the swap's build-to-live time; and writes the
-// servo period histogram as CSV for Tools/servo_jitter.py. Not a test: the numbers depend on the
-// machine and its load.
+// run and is published. Just before, unless --no-floor, the bare floor loop (DeadlineClock.h) runs
+// for as long with the servo's rate and scheduling and no work: the platform's floor, counted by
+// the same code. Prints one JSON object: wake-up latency and period jitter quantiles, late
+// wake-ups, missed deadlines, ticks over budget, the longest period and tick for the servo, the
+// proxy loop and the floor, and the swap's build-to-live time; and writes the servo's and the
+// floor's period and wake-up latency histograms as CSV for Tools/servo_jitter.py. Not a test: the
+// numbers depend on the machine and its load.
 //
-//   ServoLoopJitter [--seconds S] [--rate HZ] [--swap] [--histogram FILE.csv] [--mesh FILE]
+//   ServoLoopJitter [--seconds S] [--rate HZ] [--swap] [--no-floor] [--histogram FILE.csv]
+//                   [--mesh FILE]
 #include "IO/MeshReader.h"
+#include "Runtime/DeadlineClock.h"
 #include "Runtime/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Runtime/ThreadedRuntime.h"
@@ -40,21 +45,53 @@ std::shared_ptr<const CollisionScene> buildScene(const std::string& file, double
   return scene;
 }
 
-nlohmann::json loopJson(const LoopStatistics& statistics)
+nlohmann::json loopJson(const LoopStatistics& statistics, const std::string& scheduling = {})
 {
-  return {{"rate_hz", statistics.rate},
-          {"ticks", statistics.ticks},
-          {"missed_deadlines", statistics.missedDeadlines},
-          {"over_budget_ticks", statistics.overBudgetTicks},
-          {"jitter_us",
-           {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
-            {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
-            {"p99.9", statistics.jitterQuantileNanoseconds(0.999) / 1e3},
-            {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}}},
-          {"period_us",
-           {{"min", static_cast<double>(statistics.minPeriodNanoseconds) / 1e3},
-            {"max", static_cast<double>(statistics.maxPeriodNanoseconds) / 1e3}}},
-          {"max_work_us", static_cast<double>(statistics.maxWorkNanoseconds) / 1e3}};
+  nlohmann::json json = {
+    {"rate_hz", statistics.rate},
+    {"ticks", statistics.ticks},
+    {"wake_ups", statistics.wakeUps},
+    {"late_wake_ups", statistics.lateWakeUps},
+    {"missed_deadlines", statistics.missedDeadlines},
+    {"over_budget_ticks", statistics.overBudgetTicks},
+    {"wake_latency_us",
+     {{"p50", statistics.wakeLatencyQuantileNanoseconds(0.5) / 1e3},
+      {"p99", statistics.wakeLatencyQuantileNanoseconds(0.99) / 1e3},
+      {"p99.9", statistics.wakeLatencyQuantileNanoseconds(0.999) / 1e3},
+      {"max", static_cast<double>(statistics.maxWakeLatencyNanoseconds) / 1e3}}},
+    {"jitter_us",
+     {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
+      {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
+      {"p99.9", statistics.jitterQuantileNanoseconds(0.999) / 1e3},
+      {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}}},
+    {"period_us",
+     {{"min", static_cast<double>(statistics.minPeriodNanoseconds) / 1e3},
+      {"max", static_cast<double>(statistics.maxPeriodNanoseconds) / 1e3}}},
+    {"max_work_us", static_cast<double>(statistics.maxWorkNanoseconds) / 1e3}};
+  if (!scheduling.empty())
+  {
+    json["scheduling"] = scheduling;
+  }
+  return json;
+}
+
+/// One loop's two histograms as CSV rows `loop,quantity,bin_us,count`, empty bins left out.
+void writeHistograms(std::ostream& file, const std::string& loop, const LoopStatistics& statistics)
+{
+  for (int i = 0; i < LoopStatistics::kBins; ++i)
+  {
+    if (statistics.periodHistogram[i] != 0)
+    {
+      file << loop << ",period," << i << "," << statistics.periodHistogram[i] << "\n";
+    }
+  }
+  for (int i = 0; i < LoopStatistics::kWakeBins; ++i)
+  {
+    if (statistics.wakeLatencyHistogram[i] != 0)
+    {
+      file << loop << ",wake_latency," << i << "," << statistics.wakeLatencyHistogram[i] << "\n";
+    }
+  }
 }
 } // namespace
 
@@ -63,6 +100,7 @@ int main(int argc, char** argv)
   double seconds = 60.0;
   double rate = 4000.0;
   bool swap = false;
+  bool floor = true;
   std::string histogram;
   std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/cranium_bone_iso075mm.ply";
   for (int i = 1; i < argc; ++i)
@@ -81,6 +119,10 @@ int main(int argc, char** argv)
     {
       swap = true;
     }
+    else if (argument == "--no-floor")
+    {
+      floor = false;
+    }
     else if (argument == "--histogram" && hasValue)
     {
       histogram = argv[++i];
@@ -91,7 +133,7 @@ int main(int argc, char** argv)
     }
     else
     {
-      std::cerr << "usage: ServoLoopJitter [--seconds S] [--rate HZ] [--swap] "
+      std::cerr << "usage: ServoLoopJitter [--seconds S] [--rate HZ] [--swap] [--no-floor] "
                    "[--histogram FILE.csv] [--mesh FILE]\n";
       return 2;
     }
@@ -116,6 +158,17 @@ int main(int argc, char** argv)
   settings.servoRate = rate;
   settings.duration = seconds;
   ServoParameters servo;
+  // The floor first, in this process, with the scene already built: nothing else runs meanwhile.
+  DeadlineFloorReport floorReport;
+  if (floor)
+  {
+    DeadlineFloorSettings floorSettings;
+    floorSettings.rate = rate;
+    floorSettings.duration = seconds;
+    floorSettings.realtimeScheduling = settings.realtimeScheduling;
+    floorSettings.priority = settings.servoPriority;
+    floorReport = measureDeadlineFloor(floorSettings);
+  }
   ThreadedRuntime runtime(device, servo, settings);
   runtime.publishScene(scene, parameters, device.path().positions.front());
   std::string message;
@@ -157,20 +210,20 @@ int main(int argc, char** argv)
                            {"triangles", scene->objects[0].mesh.numTriangles()},
                            {"seconds", seconds},
                            {"scheduling", message},
-                           {"servo", loopJson(servoStatistics)},
+                           {"servo", loopJson(servoStatistics, runtime.servoScheduling())},
                            {"proxy", loopJson(runtime.proxyStatistics())},
+                           {"floor", floor ? loopJson(floorReport.statistics, floorReport.scheduling)
+                                           : nlohmann::json(nullptr)},
                            {"swap", swapJson}};
   std::cout << report.dump(2) << "\n";
   if (!histogram.empty())
   {
     std::ofstream file(histogram);
-    file << "period_us,ticks\n";
-    for (int i = 0; i < LoopStatistics::kBins; ++i)
+    file << "loop,quantity,bin_us,count\n";
+    writeHistograms(file, "servo", servoStatistics);
+    if (floor)
     {
-      if (servoStatistics.periodHistogram[i] != 0)
-      {
-        file << i << "," << servoStatistics.periodHistogram[i] << "\n";
-      }
+      writeHistograms(file, "floor", floorReport.statistics);
     }
   }
   return 0;
