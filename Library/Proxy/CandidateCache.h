@@ -29,6 +29,8 @@ public:
   void invalidate() { m_valid = false; }
   bool valid() const { return m_valid; }
   const Vec3& center() const { return m_center; }
+  /// The radius of the cached ball.
+  double reach() const { return m_reach; }
   int size() const { return m_count; }
 
   /// Takes every triangle within `reach` of `center` from the scene's trees (those whose leaf

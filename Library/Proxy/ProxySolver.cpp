@@ -392,7 +392,7 @@ void ProxySolver::refreshCache(QueryStats& stats)
     return;
   }
   const double contactReach = m_parameters.radius + contactEpsilon();
-  if (m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * m_coherenceMargin)
+  if (cacheHoldsProxy())
   {
     return;
   }
@@ -404,7 +404,30 @@ void ProxySolver::refreshCache(QueryStats& stats)
     m_cache.invalidate();
     return;
   }
-  m_cache.rebuild(*m_scene, m_proxy, contactReach + m_coherenceMargin, m_scratch, stats);
+  rebuildCache(stats);
+}
+
+bool ProxySolver::cacheHoldsProxy() const
+{
+  // Within half the cached margin of the centre: the next moves are likely to stay covered.
+  const double margin = m_cache.reach() - (m_parameters.radius + contactEpsilon());
+  return m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * margin;
+}
+
+void ProxySolver::rebuildCache(QueryStats& stats)
+{
+  // A ball with more triangles than the cache holds (a large proxy on a fine or folded part)
+  // left every query of the tick to the trees; a smaller margin still holds the contact's
+  // neighbourhood, at the price of re-centring sooner.
+  const double contactReach = m_parameters.radius + contactEpsilon();
+  for (double margin = m_coherenceMargin; margin >= m_coherenceMargin / 16.0; margin /= 4.0)
+  {
+    m_cache.rebuild(*m_scene, m_proxy, contactReach + margin, m_scratch, stats);
+    if (m_cache.valid())
+    {
+      return;
+    }
+  }
 }
 
 void ProxySolver::followInCache(QueryStats& stats)
@@ -418,12 +441,11 @@ void ProxySolver::followInCache(QueryStats& stats)
   {
     return;
   }
-  if (m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * m_coherenceMargin)
+  if (cacheHoldsProxy())
   {
     return;
   }
-  const double contactReach = m_parameters.radius + contactEpsilon();
-  m_cache.rebuild(*m_scene, m_proxy, contactReach + m_coherenceMargin, m_scratch, stats);
+  rebuildCache(stats);
 }
 
 ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, QueryStats& stats)

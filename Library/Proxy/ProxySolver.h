@@ -165,6 +165,11 @@ private:
   /// Within a tick: re-centres the candidate cache on a proxy that a move took into contact far
   /// from the cached centre.
   void followInCache(QueryStats& stats);
+  /// Rebuilds the candidate cache around the proxy, with a smaller margin if the ball is too
+  /// crowded for it.
+  void rebuildCache(QueryStats& stats);
+  /// Whether the candidate cache is valid and the proxy within half its margin of its centre.
+  bool cacheHoldsProxy() const;
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
