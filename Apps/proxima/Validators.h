@@ -104,7 +104,7 @@ inline std::string parseTickBudget(const std::string& text, TickWorkBudget& budg
         return "'" + term + "' must be above 0 and at most 1000000us (one second)";
       }
       haveSeconds = true;
-      budget.seconds = value * 1e-6;
+      budget.seconds = value / 1e6; // divided, not times 1e-6: 50us gives exactly 5e-05
     }
     else
     {
