@@ -26,6 +26,7 @@ def read_trace(path):
     rows = []
     with open(path) as f:
         for row in csv.DictReader(f):
-            rows.append({key: (int(value) if key in ("tick", "contacts", "iterations", "solve_ns")
+            rows.append({key: (int(value) if key in ("tick", "contacts", "iterations", "solve_ns",
+                                                        "object", "flags")
                                else float(value)) for key, value in row.items()})
     return rows

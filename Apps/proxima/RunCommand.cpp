@@ -10,6 +10,7 @@
 #include "IO/SceneBuilder.h"
 #include "IO/TraceWriter.h"
 #include "Proxy/ProxySolver.h"
+#include "Runtime/BudgetResidual.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/RunSummary.h"
@@ -145,6 +146,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   settings.servoRate = shared.rate;
   settings.recordTicks = numTicks;
   settings.duration = fingerPath.endTime();
+  settings.tickBudget = tickBudget(shared, TickWorkBudget::servoSafe());
   // The platform's floor, right before the run in this process: a bare loop with the servo's
   // rate, duration and scheduling and no work, counted by the servo's own clock code.
   DeadlineFloorReport floor;
@@ -217,8 +219,14 @@ int run(const RunOptions& options)
   const std::shared_ptr<const CollisionScene> sceneHolder(std::move(loaded.scene));
   const CollisionScene& scene = *sceneHolder;
 
+  // Lockstep runs default to no budget, so that their traces stay reproducible bit for bit; the
+  // threaded runtime defaults to the budget that keeps a 4 kHz servo fed.
+  const TickWorkBudget budget =
+    tickBudget(shared, options.realtime ? TickWorkBudget::servoSafe() : TickWorkBudget{});
+  ProxyParameters parameters = proxyParameters(shared);
+  budget.applyTo(parameters);
   ProxySolver solver;
-  solver.setScene(&scene, proxyParameters(shared));
+  solver.setScene(&scene, parameters);
   solver.resetProxy(fingerPath.positions.front());
 
   LockstepSettings settings;
@@ -231,6 +239,7 @@ int run(const RunOptions& options)
   TraceWriter trace(options.out);
   RunSummary summary;
   const auto runStart = std::chrono::steady_clock::now();
+  double replayMilliseconds = 0.0;
   nlohmann::ordered_json realtimeReport;
   if (options.realtime)
   {
@@ -244,9 +253,20 @@ int run(const RunOptions& options)
   else
   {
     Progress progress(settings.numTicks);
+    // The residual of a budget-limited tick: the same tick replayed without the budget, after
+    // the tick's timed update, so that solve_ns stays the budgeted tick's own time.
+    BudgetResidualProbe residualProbe(scene, parameters);
+    Vec3 tickStart = solver.proxy();
     runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
       trace.write(record);
       summary.add(record);
+      if (record.budgetLimited)
+      {
+        const auto replayStart = std::chrono::steady_clock::now();
+        summary.addBudgetResidual(residualProbe.residual(tickStart, record.finger, record.proxy));
+        replayMilliseconds += millisecondsSince(replayStart);
+      }
+      tickStart = record.proxy;
       if ((record.tick & 1023u) == 0)
       {
         progress.update(record.tick);
@@ -257,7 +277,7 @@ int run(const RunOptions& options)
   }
   trace.close();
   device.finish();
-  const double runMilliseconds = millisecondsSince(runStart);
+  const double runMilliseconds = millisecondsSince(runStart) - replayMilliseconds;
 
   std::uint64_t numTriangles = 0;
   std::uint64_t numDegenerate = 0;
@@ -344,6 +364,33 @@ int run(const RunOptions& options)
                       {"p99.9", summary.solveNanosecondsQuantile(0.999)},
                       {"max", summary.solveNanosecondsQuantile(1.0)}};
   json["triangles_tested_per_tick"] = summary.meanTrianglesTested();
+  nlohmann::ordered_json budgetJson;
+  budgetJson["tick_budget"] = budget.text();
+  budgetJson["seconds"] = budget.seconds;
+  budgetJson["iterations"] = budget.iterations;
+  budgetJson["limited_ticks"] = summary.budgetLimitedTicks();
+  if (options.realtime)
+  {
+    // A realtime tick cannot be replayed as it ran: its start and its budget were the clock's.
+    budgetJson["residual_m"] = nullptr;
+  }
+  else
+  {
+    budgetJson["residual_m"] = {{"max", summary.budgetResidualQuantile(1.0)},
+                                {"median", summary.budgetResidualQuantile(0.5)}};
+  }
+  nlohmann::ordered_json histogram = nlohmann::ordered_json::object();
+  for (const auto& [ticks, runs] : summary.recoveryHistogram())
+  {
+    histogram[std::to_string(ticks)] = runs;
+  }
+  budgetJson["recovery_ticks"] = {{"runs", summary.recoveries()},
+                                  {"max", summary.recoveryTicksQuantile(1.0)},
+                                  {"p99", summary.recoveryTicksQuantile(0.99)},
+                                  {"histogram", std::move(histogram)},
+                                  {"unrecovered_at_end", summary.unrecoveredLimitedTicks()}};
+  budgetJson["replay_ms"] = replayMilliseconds;
+  json["budget"] = std::move(budgetJson);
   json["read_ms"] = readMilliseconds;
   json["tree_build_ms"] = loaded.treeBuildMilliseconds;
   json["run_ms"] = runMilliseconds;
@@ -375,7 +422,9 @@ Command addRunCommand(CLI::App& parent)
     "run", "Play a finger path through a mesh or a scene in lockstep mode; write the trace and a "
            "summary");
   addSceneOptionsThroughPath(*app, options->scene);
-  app->add_option("--out", options->out, "Trace CSV to write (trace v1)")->required();
+  app->add_option("--out", options->out, "Trace CSV to write (trace v2: v1's columns, then "
+                                         "object and flags)")
+    ->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
   addDeviceOptions(*app, options->device);
   app->add_flag("--realtime", options->realtime,
@@ -385,6 +434,10 @@ Command addRunCommand(CLI::App& parent)
                 "With --realtime: skip the bare deadline loop that otherwise runs just before, for "
                 "as long as the path, to measure the platform's floor (the summary's \"floor\")");
   addSceneOptionsAfterPath(*app, options->scene);
+  addTickBudgetOption(*app, options->scene,
+                      "Default: none in lockstep, so that lockstep traces stay reproducible bit "
+                      "for bit (an iteration budget keeps them so, a time budget does not); 50us "
+                      "with --realtime, which keeps a 4 kHz servo fed");
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return run(*options); }};
 }

@@ -1,5 +1,7 @@
 #include "SceneOptions.h"
 
+#include "Validators.h"
+
 #include "IO/InputError.h"
 #include "IO/SceneFile.h"
 
@@ -191,6 +193,33 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
   {
     scene->excludes(option);
   }
+}
+
+void addTickBudgetOption(CLI::App& app, SceneOptions& options, const std::string& defaults)
+{
+  app.add_option("--tick-budget", options.tickBudget,
+                  "Work budget of one proxy tick: <N>us of wall time, <N>it move/update "
+                  "iterations, both (50us,40it), or none. A tick that reaches it stops with the "
+                  "proxy where it is (always feasible) and the next tick goes on from there. " +
+                    defaults)
+    ->check(tickBudgetValue());
+}
+
+TickWorkBudget tickBudget(const SceneOptions& options, const TickWorkBudget& byDefault)
+{
+  if (options.tickBudget.empty())
+  {
+    return byDefault;
+  }
+  TickWorkBudget budget;
+  const std::string refused = parseTickBudget(options.tickBudget, budget);
+  if (!refused.empty())
+  {
+    // The option's check refuses this before any command runs; this is for a caller that
+    // filled SceneOptions by itself.
+    throw InputError("--tick-budget", refused);
+  }
+  return budget;
 }
 
 void checkSceneOptions(const SceneOptions& options, const CLI::App& app)

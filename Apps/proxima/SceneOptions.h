@@ -7,6 +7,7 @@
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/FingerPath.h"
 #include "Runtime/ServoTick.h"
+#include "Runtime/TickBudget.h"
 
 #include <CLI/CLI.hpp>
 
@@ -36,6 +37,8 @@ struct SceneOptions
   std::string textureRole;
   double textureAmplitude = 0.0;
   std::string textureChannel = "luminance";
+  /// --tick-budget as given (checked by tickBudgetValue); empty: the command's default.
+  std::string tickBudget;
 };
 
 /// Registers --mesh, --scene, --radius, --stiffness and --path on `app`. Separate from
@@ -46,6 +49,10 @@ void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options);
 /// (--scale, --shading, --feature-angle, friction, viscosity, --texture*), which --scene
 /// excludes.
 void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options);
+/// Registers --tick-budget; `defaults` says in the help what the command uses without it.
+void addTickBudgetOption(CLI::App& app, SceneOptions& options, const std::string& defaults);
+/// The budget of --tick-budget, or `byDefault` when it was not given.
+TickWorkBudget tickBudget(const SceneOptions& options, const TickWorkBudget& byDefault);
 /// The checks between these options that CLI11 cannot say by itself, as usage errors (status 2);
 /// call from the subcommand's callback.
 void checkSceneOptions(const SceneOptions& options, const CLI::App& app);

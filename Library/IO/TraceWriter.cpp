@@ -35,10 +35,12 @@ void TraceWriter::write(const TickRecord& r)
 {
   // %.17g: positions round-trip exactly, so traces compare bit for bit.
   std::fprintf(m_file,
-               "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%lld\n",
+               "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%lld,"
+               "%d,%u\n",
                static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y,
                r.finger.z, r.proxy.x, r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z,
-               r.contacts, r.iterations, static_cast<long long>(r.solveNanoseconds));
+               r.contacts, r.iterations, static_cast<long long>(r.solveNanoseconds),
+               r.contactObject, static_cast<unsigned>(tickFlags(r)));
 }
 
 void TraceWriter::close()

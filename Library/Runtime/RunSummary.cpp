@@ -5,6 +5,23 @@
 
 namespace proxima
 {
+namespace
+{
+// Nearest-rank quantile of `values`, sorted here in place; 0 for none.
+template <typename T>
+double nearestRank(std::vector<T>& values, double q)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const double clamped = std::clamp(q, 0.0, 1.0);
+  const auto rank =
+    static_cast<std::size_t>(std::ceil(clamped * static_cast<double>(values.size())));
+  return static_cast<double>(values[rank == 0 ? 0 : rank - 1]);
+}
+} // namespace
 
 void RunSummary::add(const TickRecord& record)
 {
@@ -22,6 +39,17 @@ void RunSummary::add(const TickRecord& record)
   m_frictionLimitedTicks += record.frictionLimited ? 1 : 0;
   m_trianglesTested += record.trianglesTested;
   m_maxForce = std::max(m_maxForce, norm(record.force));
+  if (record.budgetLimited)
+  {
+    ++m_budgetLimitedTicks;
+    ++m_limitedRun;
+  }
+  else if (m_limitedRun > 0)
+  {
+    // This tick is the first that settled after the run: the run took its length to recover.
+    m_recoveryTicks.push_back(m_limitedRun);
+    m_limitedRun = 0;
+  }
   m_solveNanoseconds.push_back(record.solveNanoseconds);
   m_sorted = false;
 }
@@ -41,6 +69,25 @@ double RunSummary::solveNanosecondsQuantile(double q) const
   const auto rank = static_cast<std::size_t>(
     std::ceil(clamped * static_cast<double>(m_solveNanoseconds.size())));
   return static_cast<double>(m_solveNanoseconds[rank == 0 ? 0 : rank - 1]);
+}
+
+void RunSummary::addBudgetResidual(double metres) { m_budgetResiduals.push_back(metres); }
+
+double RunSummary::budgetResidualQuantile(double q) const
+{
+  return nearestRank(m_budgetResiduals, q);
+}
+
+double RunSummary::recoveryTicksQuantile(double q) const { return nearestRank(m_recoveryTicks, q); }
+
+std::map<std::uint64_t, std::uint64_t> RunSummary::recoveryHistogram() const
+{
+  std::map<std::uint64_t, std::uint64_t> histogram;
+  for (const std::uint64_t ticks : m_recoveryTicks)
+  {
+    ++histogram[ticks];
+  }
+  return histogram;
 }
 
 double RunSummary::meanTrianglesTested() const

@@ -4,6 +4,7 @@
 #include "Runtime/ServoTick.h"
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace proxima
@@ -33,6 +34,24 @@ public:
   double solveNanosecondsQuantile(double q) const;
   double meanTrianglesTested() const;
 
+  /// Ticks the work budget stopped before the proxy settled (TickRecord::budgetLimited).
+  std::uint64_t budgetLimitedTicks() const { return m_budgetLimitedTicks; }
+  /// The distance in metres between where a budget-limited tick ended and where the same tick
+  /// ends without a budget (measured by the caller, e.g. BudgetResidualProbe); one per call.
+  void addBudgetResidual(double metres);
+  std::uint64_t budgetResiduals() const { return m_budgetResiduals.size(); }
+  /// Quantile q in [0, 1] of those residuals (nearest rank), 0 with none.
+  double budgetResidualQuantile(double q) const;
+  /// Recovery: each run of consecutive budget-limited ticks took as many ticks as it is long
+  /// until the first tick that is not limited. recoveries() counts the runs that did recover;
+  /// a run still going when the records end is unrecoveredLimitedTicks() long.
+  std::uint64_t recoveries() const { return m_recoveryTicks.size(); }
+  std::uint64_t unrecoveredLimitedTicks() const { return m_limitedRun; }
+  /// Quantile q in [0, 1] of the recovered runs' lengths in ticks (nearest rank), 0 with none.
+  double recoveryTicksQuantile(double q) const;
+  /// How many recovered runs took each number of ticks.
+  std::map<std::uint64_t, std::uint64_t> recoveryHistogram() const;
+
 private:
   std::uint64_t m_ticks = 0;
   std::uint64_t m_contactTicks = 0;
@@ -48,6 +67,11 @@ private:
   std::uint64_t m_frictionLimitedTicks = 0;
   std::uint64_t m_trianglesTested = 0;
   double m_maxForce = 0.0;
+  std::uint64_t m_budgetLimitedTicks = 0;
+  /// Length of the run of budget-limited ticks that the last record belongs to (0: not limited).
+  std::uint64_t m_limitedRun = 0;
+  mutable std::vector<std::uint64_t> m_recoveryTicks;
+  mutable std::vector<double> m_budgetResiduals;
   mutable std::vector<std::int64_t> m_solveNanoseconds;
   mutable bool m_sorted = true;
 };

@@ -21,6 +21,8 @@ TickRecord makeTickRecord(std::uint64_t tick, double time, const DeviceSample& s
   record.contactOverflow = result.contactOverflow;
   record.stuck = result.stuck;
   record.frictionLimited = result.frictionLimited;
+  record.budgetLimited = result.budgetLimited;
+  record.contactObject = result.numContacts > 0 ? static_cast<int>(result.contacts[0].object) : -1;
   record.trianglesTested = result.queries.trianglesTested;
   record.fingerRefused = outcome.refused;
   record.force = force.force;
@@ -29,6 +31,23 @@ TickRecord makeTickRecord(std::uint64_t tick, double time, const DeviceSample& s
   record.deviceLost = force.deviceLost;
   record.rateLimited = force.rateLimited;
   return record;
+}
+
+std::uint32_t tickFlags(const TickRecord& record)
+{
+  std::uint32_t flags = 0;
+  const auto set = [&flags](bool condition, TickFlag flag) { flags |= condition ? flag : 0u; };
+  set(record.budgetLimited, kTickBudgetLimited);
+  set(record.hitIterationCap, kTickIterationCap);
+  set(record.forceClamped, kTickForceClamped);
+  set(record.fading, kTickForceFading);
+  set(record.deviceLost, kTickDeviceLost);
+  set(record.fingerRefused, kTickFingerRefused);
+  set(record.stuck, kTickStuck);
+  set(record.frictionLimited, kTickFrictionLimited);
+  set(record.contactOverflow, kTickContactOverflow);
+  set(record.rateLimited, kTickForceRateLimited);
+  return flags;
 }
 
 TickRecord runServoTick(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,

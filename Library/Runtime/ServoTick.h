@@ -52,8 +52,32 @@ struct TickRecord
   /// Static friction held the proxy; dynamic or viscous friction shortened its slide.
   bool stuck = false;
   bool frictionLimited = false;
+  /// The tick's work budget (ProxyParameters::tickBudget*) stopped the proxy before it settled:
+  /// feasible, but not yet at the constrained minimum; the next tick goes on from there.
+  bool budgetLimited = false;
+  /// Index in the scene of the object of the first active contact, -1 when free.
+  int contactObject = -1;
   std::uint32_t trianglesTested = 0;
 };
+
+/// The bits of trace v2's `flags` column (Documentation/CommandLine.md). Values are part of the
+/// file format: append new bits, never renumber.
+enum TickFlag : std::uint32_t
+{
+  kTickBudgetLimited = 1u << 0,
+  kTickIterationCap = 1u << 1,
+  kTickForceClamped = 1u << 2,
+  kTickForceFading = 1u << 3,
+  kTickDeviceLost = 1u << 4,
+  kTickFingerRefused = 1u << 5,
+  kTickStuck = 1u << 6,
+  kTickFrictionLimited = 1u << 7,
+  kTickContactOverflow = 1u << 8,
+  kTickForceRateLimited = 1u << 9,
+};
+
+/// The record's conditions as a TickFlag bitmask.
+std::uint32_t tickFlags(const TickRecord& record);
 
 struct ProxyStepOutcome;
 struct ServoForceOutput;

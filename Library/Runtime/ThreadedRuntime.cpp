@@ -290,7 +290,9 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
 {
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
-  auto* slot = new SceneSlot{std::move(scene), parameters, proxyStart, version};
+  ProxyParameters budgeted = parameters;
+  m_impl->settings.tickBudget.applyTo(budgeted);
+  auto* slot = new SceneSlot{std::move(scene), budgeted, proxyStart, version};
   // A scene published before the proxy loop took the last one replaces it unseen.
   delete m_impl->pending.exchange(slot, std::memory_order_acq_rel);
   m_impl->collectRetired();

@@ -13,6 +13,7 @@
 #include "Runtime/HapticState.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoTick.h"
+#include "Runtime/TickBudget.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,12 @@ struct RuntimeSettings
   /// The run ends by itself when the servo clock reaches this many seconds (finished() turns
   /// true); 0 runs until stop().
   double duration = 0.0;
+  /// The proxy loop's work budget per tick; it replaces the budget fields of every scene's
+  /// ProxyParameters (publishScene), because how long a proxy tick may take is a property of
+  /// the loops' schedule, not of the scene. Default 50 us (TickWorkBudget::servoSafe): a 4 kHz
+  /// servo then sees a fresh proxy at least every ~50 us plus one iteration. A budget-limited
+  /// tick leaves the proxy feasible where it stopped and the next tick goes on from there.
+  TickWorkBudget tickBudget = TickWorkBudget::servoSafe();
 };
 
 class ThreadedRuntime
@@ -57,6 +64,7 @@ public:
   /// (the servo then limits the force's rate of change for a moment, so the change does not
   /// kick). The first scene also places the proxy at `proxyStart`. Returns the scene's version
   /// (1, 2, ...). Scenes the proxy loop has let go of are freed here, on the caller's thread.
+  /// The parameters' tick-budget fields are replaced by RuntimeSettings::tickBudget.
   std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
                              const ProxyParameters& parameters, const Vec3& proxyStart);
 

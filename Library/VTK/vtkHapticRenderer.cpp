@@ -111,6 +111,8 @@ bool vtkHapticRenderer::Start()
   settings.proxyRate = this->ProxyRate;
   settings.realtimeScheduling = this->RealtimeScheduling != 0;
   settings.duration = this->Duration;
+  settings.tickBudget =
+    proxima::TickWorkBudget{this->TickBudgetSeconds, this->TickBudgetIterations};
   m_runtime.reset();
   m_runtime = std::make_unique<proxima::ThreadedRuntime>(*m_device, servo, settings);
   // A restart publishes the newest snapshot again: a new runtime starts without a scene.
@@ -183,6 +185,8 @@ void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxForce: " << this->MaxForce << "\n";
   os << indent << "MaxIterations: " << this->MaxIterations << "\n";
   os << indent << "Skin: " << this->Skin << " (0: from the scene)\n";
+  os << indent << "TickBudgetSeconds: " << this->TickBudgetSeconds
+     << ", TickBudgetIterations: " << this->TickBudgetIterations << " (0 and 0: none)\n";
   os << indent << "ServoRate: " << this->ServoRate << "\n";
   os << indent << "ProxyRate: " << this->ProxyRate << "\n";
   os << indent << "RealtimeScheduling: " << (this->RealtimeScheduling ? "On" : "Off") << "\n";

@@ -11,6 +11,7 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/LoopStatistics.h"
+#include "Runtime/TickBudget.h"
 
 #include <vtkObject.h>
 
@@ -67,6 +68,18 @@ public:
   /// Documentation/Epsilons.md).
   vtkSetClampMacro(Skin, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Skin, double);
+  ///@}
+
+  ///@{
+  /// The proxy loop's work budget per tick (RuntimeSettings::tickBudget): seconds of wall time
+  /// (default 50e-6, which keeps a 4 kHz servo fed: 250 us per period, the proxy publishes at
+  /// least every ~50 us plus one iteration) and move/update iterations (default 0: none). 0 and
+  /// 0 means no budget. A budget-limited tick leaves the proxy feasible where it stopped; the
+  /// next tick goes on from there. Read at Start.
+  vtkSetClampMacro(TickBudgetSeconds, double, 0.0, 1.0);
+  vtkGetMacro(TickBudgetSeconds, double);
+  vtkSetClampMacro(TickBudgetIterations, int, 0, 1000000);
+  vtkGetMacro(TickBudgetIterations, int);
   ///@}
 
   ///@{
@@ -128,6 +141,8 @@ protected:
   double MaxForce = 10.0;
   int MaxIterations = 256;
   double Skin = 0.0;
+  double TickBudgetSeconds = proxima::kServoSafeTickBudgetSeconds;
+  int TickBudgetIterations = 0;
   double ServoRate = 4000.0;
   double ProxyRate = 0.0;
   vtkTypeBool RealtimeScheduling = 0;

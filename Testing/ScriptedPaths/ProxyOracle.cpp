@@ -569,7 +569,8 @@ std::string InvariantStats::summary(const std::string& name) const
       << " m, max force error " << maxForceError << " (relative), max replay discrepancy "
       << maxReplayDiscrepancy << " m\n"
       << "[oracle] " << name << ": max iterations " << maxIterations << ", iteration-cap ticks "
-      << capTicks << ", overflow ticks " << overflowTicks << ", refused ticks " << refusedTicks
+      << capTicks << ", budget-limited ticks " << budgetLimitedTicks << ", overflow ticks "
+      << overflowTicks << ", refused ticks " << refusedTicks
       << " (uncapped they converge in <= " << maxUncappedIterations << " iterations, ending up to "
       << maxCapLag << " m from the capped end; non-terminating " << nonTerminating << ")"
       << ", failures " << failures() << " (penetration " << penetrations << ", crossing "
@@ -605,7 +606,7 @@ void TickChecker::reset(const Vec3& proxy) { m_proxy = proxy; }
 void TickChecker::check(std::uint64_t tick, const Vec3& finger, const ProxyTickResult& result)
 {
   check(tick, finger, result.proxy, result.iterations, result.numContacts, result.refusedFinger,
-        result.hitIterationCap, result.contactOverflow);
+        result.hitIterationCap, result.contactOverflow, result.budgetLimited);
 }
 
 double TickChecker::residual(const Vec3& proxy, const Vec3& finger, double* slide) const
@@ -691,7 +692,8 @@ Vec3 TickChecker::sought(const Vec3& finger) const
 }
 
 void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const Vec3& proxy,
-                        int iterations, int contacts, bool refused, bool hitCap, bool overflow)
+                        int iterations, int contacts, bool refused, bool hitCap, bool overflow,
+                        bool budgetLimited)
 {
   InvariantStats& s = m_stats;
   const double radius = m_parameters.radius;
@@ -706,6 +708,7 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
   ++s.ticks;
   s.contactTicks += contacts > 0 ? 1 : 0;
   s.capTicks += hitCap ? 1 : 0;
+  s.budgetLimitedTicks += budgetLimited ? 1 : 0;
   s.overflowTicks += overflow ? 1 : 0;
   s.maxIterations = std::max(s.maxIterations, iterations);
   m_proxy = proxy;
@@ -723,7 +726,11 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
   std::vector<Vec3> points{before};
   if (iterations >= 2)
   {
+    // Cap k reproduces the first k move stages; the budget is dropped so that a time budget
+    // cannot stop a replay elsewhere (an iteration budget stops where the cap does anyway).
     ProxyParameters capped = m_parameters;
+    capped.tickBudgetIterations = 0;
+    capped.tickBudgetSeconds = 0.0;
     for (int k = 1; k <= iterations; ++k)
     {
       capped.maxIterations = k;
@@ -810,13 +817,18 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
     }
   }
 
-  checkEnd(where(), proxy, finger, iterations);
+  if (!budgetLimited)
+  {
+    checkEnd(where(), proxy, finger, iterations);
+  }
   if (hitCap)
   {
     // Why the cap was hit: too few iterations for a slow (zig-zag) convergence, or a loop that
     // never settles. Replayed without the cap from the same start.
     ProxyParameters uncapped = m_parameters;
     uncapped.maxIterations = m_settings.uncappedIterations;
+    uncapped.tickBudgetIterations = 0;
+    uncapped.tickBudgetSeconds = 0.0;
     m_replay->setScene(&m_scene, uncapped);
     m_replay->resetProxy(before);
     const ProxyTickResult converged = m_replay->update(requestedFinger);

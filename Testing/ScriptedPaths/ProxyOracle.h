@@ -117,6 +117,9 @@ struct InvariantStats
   std::uint64_t contactTicks = 0;
   std::uint64_t refusedTicks = 0;
   std::uint64_t capTicks = 0;
+  /// Ticks the work budget stopped early: checked for (a), (b), (e)-(g) like any tick, but not
+  /// for (c) and (d), which are about where a tick settles (the next ticks go on from there).
+  std::uint64_t budgetLimitedTicks = 0;
   std::uint64_t overflowTicks = 0;
   std::uint64_t moveSegments = 0;
   std::uint64_t freePathChecks = 0;
@@ -189,7 +192,7 @@ public:
   void check(std::uint64_t tick, const Vec3& finger, const ProxyTickResult& result);
   /// The same from what a trace row holds.
   void check(std::uint64_t tick, const Vec3& finger, const Vec3& proxy, int iterations,
-             int contacts, bool refused, bool hitCap, bool overflow);
+             int contacts, bool refused, bool hitCap, bool overflow, bool budgetLimited = false);
 
   const Vec3& proxy() const { return m_proxy; }
   InvariantStats& stats() { return m_stats; }

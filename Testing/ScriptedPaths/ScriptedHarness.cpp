@@ -116,7 +116,8 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
   Vec3 previousForce;
   runLockstep(lockstep, solver, device, c.servo, [&](const TickRecord& record) {
     checker.check(record.tick, record.finger, record.proxy, record.iterations, record.contacts,
-                  record.fingerRefused, record.hitIterationCap, record.contactOverflow);
+                  record.fingerRefused, record.hitIterationCap, record.contactOverflow,
+                  record.budgetLimited);
     // (e) Force: kp (proxy - finger) clamped to the device limit, or the last force held.
     const std::string where = "tick " + std::to_string(record.tick);
     const auto overridden = c.fingerOverrides.find(record.tick);
@@ -186,6 +187,7 @@ void expectInvariants(const std::string& name, const ScriptedOutcome& outcome)
   testing::Test::RecordProperty("max_free_path_error_m", oracle::str(s.maxFreePathError));
   testing::Test::RecordProperty("max_iterations", std::to_string(s.maxIterations));
   testing::Test::RecordProperty("iteration_cap_ticks", std::to_string(s.capTicks));
+  testing::Test::RecordProperty("budget_limited_ticks", std::to_string(s.budgetLimitedTicks));
   testing::Test::RecordProperty("cap_lag_m", oracle::str(s.maxCapLag));
   EXPECT_GT(s.ticks, 0u) << name;
   EXPECT_EQ(s.penetrations, 0u) << name << ": (a) penetration";

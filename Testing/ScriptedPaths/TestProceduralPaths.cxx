@@ -298,5 +298,59 @@ TEST(ScriptedProcedural, NaNFingerSamplesAreRefused)
   EXPECT_EQ(outcome.stats.refusedTicks, nanTicks.size());
 }
 
+// A work budget of 2 iterations per tick on a deep press and a fast stroke over an icosphere,
+// across many facets: the budget stops many ticks early, yet every tick stays feasible (the oracle
+// checks penetration and tunnelling on all of them, and the local minimum only where no budget
+// cut the tick short), and once the finger holds still the proxy catches up with where an
+// unbudgeted run ends.
+TEST(ScriptedProcedural, IterationBudgetStaysFeasibleAndCatchesUp)
+{
+  const Stage stage(makeIcosphere(3, 0.02));
+  const Vec3 above{0.0, 0.0, 0.03};
+  const Vec3 pressed{0.0, 0.0, 0.012}; // 8 mm deep
+  const Vec3 stroked{0.012, 0.006, 0.006};
+  constexpr double kHoldSeconds = 0.2;
+  const FingerPath path = concatenatePaths({makeSlidePath(above, pressed, 0.03, kRate),
+                                            makeSlidePath(pressed, stroked, 0.05, kRate),
+                                            makeSlidePath(stroked, stroked, kHoldSeconds, kRate)},
+                                           kRate);
+  const auto runWithBudget = [&](const std::string& name, int budgetIterations) {
+    ScriptedCase c;
+    c.name = name;
+    c.scene = stage.scene.get();
+    c.oracle = stage.oracle.get();
+    c.proxy.radius = kRadius;
+    c.proxy.tickBudgetIterations = budgetIterations;
+    c.path = path;
+    c.rate = kRate;
+    c.keepTrace = true;
+    c.start = above;
+    ScriptedOutcome outcome = scripted::runScriptedCase(c);
+    scripted::expectInvariants(name, outcome);
+    return outcome;
+  };
+  const ScriptedOutcome budgeted = runWithBudget("budget/2it-deep-press", 2);
+  const ScriptedOutcome unbudgeted = runWithBudget("budget/none-deep-press", 0);
+
+  EXPECT_EQ(budgeted.stats.penetrations, 0u);
+  EXPECT_EQ(budgeted.stats.crossings, 0u);
+  EXPECT_EQ(budgeted.stats.tunnels, 0u);
+  EXPECT_GT(budgeted.stats.budgetLimitedTicks, 0u) << "the budget never bit: the case tests nothing";
+  EXPECT_EQ(unbudgeted.stats.budgetLimitedTicks, 0u);
+  ASSERT_EQ(budgeted.trace.size(), unbudgeted.trace.size());
+  ASSERT_FALSE(budgeted.trace.empty());
+  // Well into the hold the budgeted run has caught up: no tick limited any more, same end.
+  const std::size_t settledFrom =
+    budgeted.trace.size() - static_cast<std::size_t>(kHoldSeconds * kRate / 2.0);
+  for (std::size_t i = settledFrom; i < budgeted.trace.size(); ++i)
+  {
+    EXPECT_FALSE(budgeted.trace[i].budgetLimited) << "tick " << i << " still budget-limited";
+  }
+  const double apart = distance(budgeted.trace.back().proxy, unbudgeted.trace.back().proxy);
+  RecordProperty("end_distance_from_unbudgeted_m", oracle::str(apart));
+  EXPECT_LE(apart, 1e-9) << "budgeted run ends at " << oracle::str(budgeted.trace.back().proxy)
+                         << ", unbudgeted at " << oracle::str(unbudgeted.trace.back().proxy);
+}
+
 } // namespace
 } // namespace proxima

@@ -2,7 +2,8 @@
 """Fails unless a `proxima run --realtime` trace agrees with the lockstep trace of the same run:
 every realtime row is a lockstep tick with the same time and finger, and the same proxy to 1 nm
 (bit for bit until the proxy loop first skips a sample; after a skip only the steps the proxy
-took differ). At least half the ticks must be there.
+took differ). At least half the ticks must be there. The realtime run must have no tick budget
+(--tick-budget none): a time budget stops ticks wherever the clock says.
 
     compare_realtime_trace.py LOCKSTEP.csv REALTIME.csv"""
 import csv
