@@ -95,16 +95,24 @@ bool solveGram(const Vec3* n, int count, const double* rhs, double* mu)
 GoalSolution solveGoalByEnumeration(const Vec3& toFinger, const Vec3* normals, int numPlanes)
 {
   GoalSolution best;
+  best.usedExactFallback = true;
   const double scale = norm(toFinger);
   if (isFeasible(toFinger, normals, numPlanes, scale))
   {
     best.displacement = toFinger;
     return best;
   }
+  // KKT: x = v + sum_{i in S} mu_i n_i with n_i . x = 0 on S, mu_i >= 0, and x feasible for all
+  // planes. The problem is convex, so a feasible KKT point is the optimum: the enumeration goes
+  // by the size of the active set and stops at the first size that has one (the nearest of that
+  // size, against rounding). Three independent planes through the proxy pin it (x = 0), which is
+  // feasible by itself, so triples need no feasibility check, only the signs of their depths.
+  // The cost is bounded by design: at most m + m(m-1)/2 candidates checked against the m planes,
+  // then at most m(m-1)(m-2)/6 3x3 solves; at m = kMaxConstraintPlanes = 32 about 21,000 dot
+  // products. (Checking every triple against every plane, and keeping looking after the optimum
+  // was found, made single iterations on CAD soups take about 2 ms.)
   double bestDistance = -1.0;
   int subset[3] = {0, 0, 0};
-  // KKT: x = v + sum_{i in S} mu_i n_i with n_i . x = 0 on S, mu_i >= 0, and x feasible for all
-  // planes. The problem is convex, so the feasible KKT point nearest v is the optimum.
   auto tryCandidate = [&](int count) {
     Vec3 n[3];
     double rhs[3];
@@ -116,14 +124,14 @@ GoalSolution solveGoalByEnumeration(const Vec3& toFinger, const Vec3* normals, i
     double mu[3];
     if (!solveGram(n, count, rhs, mu))
     {
-      return;
+      return false;
     }
     Vec3 x = toFinger;
     for (int k = 0; k < count; ++k)
     {
       if (mu[k] < -kFeasibilityTolerance * scale)
       {
-        return;
+        return false;
       }
       x += n[k] * mu[k];
     }
@@ -131,9 +139,9 @@ GoalSolution solveGoalByEnumeration(const Vec3& toFinger, const Vec3* normals, i
     {
       x = Vec3{}; // three independent planes through the proxy pin it
     }
-    if (!isFeasible(x, normals, numPlanes, scale))
+    else if (!isFeasible(x, normals, numPlanes, scale))
     {
-      return;
+      return false;
     }
     const double d = squaredDistance(x, toFinger);
     if (bestDistance < 0.0 || d < bestDistance)
@@ -147,19 +155,35 @@ GoalSolution solveGoalByEnumeration(const Vec3& toFinger, const Vec3* normals, i
         best.depth[k] = std::fmax(mu[k], 0.0);
       }
     }
+    return true;
   };
   for (int i = 0; i < numPlanes; ++i)
   {
     subset[0] = i;
     tryCandidate(1);
+  }
+  for (int i = 0; i < numPlanes && bestDistance < 0.0; ++i)
+  {
+    subset[0] = i;
     for (int j = i + 1; j < numPlanes; ++j)
     {
       subset[1] = j;
       tryCandidate(2);
+    }
+  }
+  for (int i = 0; i < numPlanes && bestDistance < 0.0; ++i)
+  {
+    subset[0] = i;
+    for (int j = i + 1; j < numPlanes && bestDistance < 0.0; ++j)
+    {
+      subset[1] = j;
       for (int k = j + 1; k < numPlanes; ++k)
       {
         subset[2] = k;
-        tryCandidate(3);
+        if (tryCandidate(3))
+        {
+          break; // every valid triple pins the proxy at the same point
+        }
       }
     }
   }
@@ -168,7 +192,6 @@ GoalSolution solveGoalByEnumeration(const Vec3& toFinger, const Vec3* normals, i
     // Only rounding can leave no candidate (all subsets marginally infeasible): stay put.
     best.displacement = Vec3{};
   }
-  best.usedExactFallback = true;
   return best;
 }
 

@@ -453,5 +453,54 @@ TEST(GoalSolver, EnumerationAloneAgreesWithOracle)
   worst.print("enumeration");
 }
 
+TEST(GoalSolver, EnumerationAtThirtyTwoPlanesAgreesWithOracle)
+{
+  // The fallback's worst case by design: the most planes the solver holds, a funnel whose apex
+  // pins the proxy, so that no single plane or pair answers and every single and pair is tried
+  // before a triple gives the depths; and random directions around it. Checked against the exact
+  // QP of the oracle, through the fallback alone and through solveGoal.
+  constexpr int kPlanes = kMaxConstraintPlanes;
+  std::mt19937_64 engine(32);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Worst worst;
+  for (double slopeDegrees : {10.0, 45.0, 80.0})
+  {
+    const double slope = slopeDegrees * kPi / 180.0;
+    // 31 faces and one more plane, steep and facing down, to fill the 32.
+    std::vector<Vec3> normals;
+    for (int i = 0; i < kPlanes - 1; ++i)
+    {
+      const double phi = 2 * kPi * i / (kPlanes - 1);
+      normals.push_back(
+        {-std::sin(slope) * std::cos(phi), -std::sin(slope) * std::sin(phi), std::cos(slope)});
+    }
+    normals.push_back(normalizedOrZero(Vec3{1.0, 0.0, -0.1}));
+    const Vec3 down{0, 0, -0.01};
+    const GoalSolution pinned = solveGoalByEnumeration(down, normals.data(), kPlanes);
+    EXPECT_LT(norm(pinned.displacement), 1e-14) << "slope " << slopeDegrees;
+    EXPECT_GE(pinned.numActive, 2) << "slope " << slopeDegrees; // a pair or a triple pins it
+    // The depths hold the finger: finger - goal = -sum mu_i n_i with mu_i >= 0.
+    Vec3 held = down;
+    for (int k = 0; k < pinned.numActive; ++k)
+    {
+      EXPECT_GE(pinned.depth[k], 0.0);
+      held += normals[pinned.active[k]] * pinned.depth[k];
+    }
+    EXPECT_LT(norm(held), 1e-12) << "slope " << slopeDegrees;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+      const Vec3 v = Vec3{uniform(engine), uniform(engine), uniform(engine)} * 0.01;
+      const GoalSolution s = solveGoalByEnumeration(v, normals.data(), kPlanes);
+      const Vec3 exact = oracle::projectOntoCone(v, normals.data(), kPlanes);
+      ++worst.cases;
+      worst.displacement = std::max(worst.displacement, distance(s.displacement, exact) / 0.01);
+      ASSERT_LE(distance(s.displacement, exact), kRelative * 0.01)
+        << "slope " << slopeDegrees << ", trial " << trial << ": " << describe(v, normals);
+      EXPECT_TRUE(checkGoal(v, normals, worst));
+    }
+  }
+  worst.print("enumeration at 32 planes");
+}
+
 } // namespace
 } // namespace proxima
