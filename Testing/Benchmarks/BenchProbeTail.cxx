@@ -7,14 +7,27 @@
 // per mesh and radius, and over meshes per radius, with the tail of all ticks' solve times
 // (fraction slower than t) thinned to about 200 points. Tools/tail-report.sh plots them.
 //
+// Every case runs twice: without a work budget (the lockstep default, reproducible) and with
+// the servo-safe budget that the real-time runtime uses (TickWorkBudget::servoSafe(), 50 us),
+// because the budgeted tail is what a servo beside the proxy loop actually waits for. The
+// budgeted run adds what the budget cost: limited ticks, their residual (BudgetResidualProbe,
+// as `proxima run --summary` measures it) and the recovery of runs of limited ticks (counted
+// by RunSummary, so that the numbers mean what the summary's mean). Per case also the cost of
+// one iteration (solve time / iterations over ticks with an iteration, and triangles tested per
+// iteration), and per mesh that cost against r / median edge length, to show whether an
+// iteration grows with the number of triangles within reach, ~(r / edge)^2.
+//
 // Usage: BenchProbeTail OUT.json [--quick] [--seeds N]
 //   --quick: one seed, radii 0.5 and 2 mm, for a short check; default 3 seeds, all radii.
 #include "IO/FingerPathFile.h"
 #include "IO/MeshReader.h"
 #include "Proxy/ProxySolver.h"
+#include "Runtime/BudgetResidual.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/PathGenerators.h"
+#include "Runtime/RunSummary.h"
 #include "Runtime/SimulatedDevice.h"
+#include "Runtime/TickBudget.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,6 +40,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -71,10 +85,19 @@ const std::vector<SharedPath> kSharedPaths = {
 
 struct Ticks
 {
+  /// Per tick, in tick order (solveAll, iterations and trianglesTested line up).
   std::vector<double> solveAll;
   std::vector<double> solveContact;
   std::vector<double> iterations;
   std::vector<double> trianglesTested;
+  /// Budgeted runs only: how many ticks the budget limited, the residual of each (metres), the
+  /// length in ticks of each run of limited ticks that recovered, and the limited ticks of a run
+  /// still going at the path's end (they never recovered, so they are no recovery length).
+  bool budgeted = false;
+  std::uint64_t limited = 0;
+  std::vector<double> residuals;
+  std::vector<double> recoveries;
+  std::uint64_t unrecovered = 0;
   void append(const Ticks& other)
   {
     auto add = [](std::vector<double>& to, const std::vector<double>& from) {
@@ -84,8 +107,47 @@ struct Ticks
     add(solveContact, other.solveContact);
     add(iterations, other.iterations);
     add(trianglesTested, other.trianglesTested);
+    budgeted = budgeted || other.budgeted;
+    limited += other.limited;
+    add(residuals, other.residuals);
+    add(recoveries, other.recoveries);
+    unrecovered += other.unrecovered;
   }
 };
+
+/// Solve time and triangle tests per iteration over the ticks that ran at least one: ticks with
+/// none (free motion that needs no move) would only dilute the cost of the ones that do.
+struct IterationCost
+{
+  std::uint64_t ticks = 0;
+  double iterations = 0.0;
+  double solveNanoseconds = 0.0;
+  double trianglesTested = 0.0;
+  double nanosecondsPerIteration() const
+  {
+    return iterations > 0.0 ? solveNanoseconds / iterations : 0.0;
+  }
+  double trianglesPerIteration() const
+  {
+    return iterations > 0.0 ? trianglesTested / iterations : 0.0;
+  }
+};
+
+IterationCost iterationCost(const Ticks& ticks)
+{
+  IterationCost cost;
+  for (std::size_t i = 0; i < ticks.iterations.size(); ++i)
+  {
+    if (ticks.iterations[i] >= 1.0)
+    {
+      ++cost.ticks;
+      cost.iterations += ticks.iterations[i];
+      cost.solveNanoseconds += ticks.solveAll[i];
+      cost.trianglesTested += ticks.trianglesTested[i];
+    }
+  }
+  return cost;
+}
 
 // Nearest-rank quantile, as RunSummary computes the summary's: the value below which a
 // fraction q of the (sorted) samples lies.
@@ -122,6 +184,8 @@ nlohmann::json tail(const std::vector<double>& sorted)
 
 nlohmann::json statistics(Ticks ticks, bool withTail)
 {
+  // Before the sort below, which breaks the per-tick alignment that this needs.
+  const IterationCost cost = iterationCost(ticks);
   for (std::vector<double>* v :
        {&ticks.solveAll, &ticks.solveContact, &ticks.iterations, &ticks.trianglesTested})
   {
@@ -150,6 +214,26 @@ nlohmann::json statistics(Ticks ticks, bool withTail)
                  ? 0.0
                  : tested / static_cast<double>(ticks.trianglesTested.size())},
       {"max", ticks.trianglesTested.empty() ? 0.0 : ticks.trianglesTested.back()}}}};
+  json["per_iteration"] = {{"ticks_with_iterations", cost.ticks},
+                           {"iterations", cost.iterations},
+                           {"solve_ns", cost.nanosecondsPerIteration()},
+                           {"triangles_tested", cost.trianglesPerIteration()}};
+  if (ticks.budgeted)
+  {
+    std::sort(ticks.residuals.begin(), ticks.residuals.end());
+    std::sort(ticks.recoveries.begin(), ticks.recoveries.end());
+    json["budget"] = {
+      {"limited_ticks", ticks.limited},
+      {"limited_fraction", ticks.solveAll.empty() ? 0.0
+                                                  : static_cast<double>(ticks.limited) /
+                                                      static_cast<double>(ticks.solveAll.size())},
+      {"residual_m", {{"median", quantile(ticks.residuals, 0.5)},
+                      {"max", ticks.residuals.empty() ? 0.0 : ticks.residuals.back()}}},
+      {"recoveries", ticks.recoveries.size()},
+      {"recovery_ticks", {{"p99", quantile(ticks.recoveries, 0.99)},
+                          {"max", ticks.recoveries.empty() ? 0.0 : ticks.recoveries.back()}}},
+      {"unrecovered_limited_ticks", ticks.unrecovered}};
+  }
   if (withTail)
   {
     json["tail"] = tail(ticks.solveAll);
@@ -158,12 +242,14 @@ nlohmann::json statistics(Ticks ticks, bool withTail)
 }
 
 // Plays `path` through the scene as `proxima run` does (lockstep, default servo and proxy
-// parameters but the radius).
-Ticks play(const CollisionScene& scene, const FingerPath& path, double radius)
+// parameters but the radius and the budget).
+Ticks play(const CollisionScene& scene, const FingerPath& path, double radius,
+           const TickWorkBudget& budget)
 {
   ProxyParameters parameters;
   parameters.radius = radius;
   parameters.timeStep = 1.0 / kRate;
+  budget.applyTo(parameters);
   ProxySolver solver;
   solver.setScene(&scene, parameters);
   solver.resetProxy(path.positions.front());
@@ -173,7 +259,19 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius)
   settings.numTicks = ticksCovering(path.startTime(), path.endTime(), kRate);
   SimulatedDevice device(path);
   Ticks ticks;
+  ticks.budgeted = !budget.none();
+  // As RunCommand does: the replay runs after the tick's timed update, so solve_ns stays the
+  // budgeted tick's own time.
+  BudgetResidualProbe residualProbe(scene, parameters);
+  RunSummary summary;
+  Vec3 tickStart = solver.proxy();
   runLockstep(settings, solver, device, ServoParameters{}, [&](const TickRecord& record) {
+    summary.add(record);
+    if (record.budgetLimited)
+    {
+      ticks.residuals.push_back(residualProbe.residual(tickStart, record.finger, record.proxy));
+    }
+    tickStart = record.proxy;
     const auto ns = static_cast<double>(record.solveNanoseconds);
     ticks.solveAll.push_back(ns);
     if (record.contacts > 0)
@@ -183,7 +281,74 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius)
     ticks.iterations.push_back(record.iterations);
     ticks.trianglesTested.push_back(record.trianglesTested);
   });
+  ticks.limited = summary.budgetLimitedTicks();
+  for (const auto& [length, count] : summary.recoveryHistogram())
+  {
+    ticks.recoveries.insert(ticks.recoveries.end(), count, static_cast<double>(length));
+  }
+  ticks.unrecovered = summary.unrecoveredLimitedTicks();
   return ticks;
+}
+
+/// Both runs of one case: the lockstep default (no budget) and the real-time runtime's.
+struct Runs
+{
+  Ticks unbudgeted;
+  Ticks budgeted;
+};
+
+Runs playBoth(const CollisionScene& scene, const FingerPath& path, double radius)
+{
+  return {play(scene, path, radius, TickWorkBudget{}),
+          play(scene, path, radius, TickWorkBudget::servoSafe())};
+}
+
+/// The unbudgeted statistics at the top level (as before budgets), the budgeted ones under
+/// "budgeted".
+nlohmann::json statistics(const Runs& runs, bool withTail)
+{
+  nlohmann::json json = statistics(runs.unbudgeted, withTail);
+  json["budgeted"] = statistics(runs.budgeted, withTail);
+  return json;
+}
+
+void append(Runs& to, const Runs& from)
+{
+  to.unbudgeted.append(from.unbudgeted);
+  to.budgeted.append(from.budgeted);
+}
+
+/// Median length in metres of the mesh's distinct edges (an edge shared by two triangles counts
+/// once): the length that sets how many triangles a proxy of radius r has within reach.
+double medianEdgeLength(const TriangleMesh& mesh)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * static_cast<std::size_t>(mesh.numTriangles()));
+  for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
+  {
+    const auto& corner = mesh.indices(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = corner[static_cast<std::size_t>(k)];
+      const std::uint32_t b = corner[static_cast<std::size_t>((k + 1) % 3)];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<double> lengths;
+  lengths.reserve(edges.size());
+  for (const auto& [a, b] : edges)
+  {
+    lengths.push_back(distance(mesh.points()[a], mesh.points()[b]));
+  }
+  if (lengths.empty())
+  {
+    return 0.0;
+  }
+  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -247,7 +412,8 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json cases = nlohmann::json::array();
   nlohmann::json pooled = nlohmann::json::array();
-  std::map<double, Ticks> byRadius;
+  nlohmann::json meshes = nlohmann::json::array();
+  std::map<double, Runs> byRadius;
   for (const SharedMesh& mesh : kMeshes)
   {
     CollisionScene scene;
@@ -257,6 +423,8 @@ int main(int argc, char** argv)
       continue;
     }
     const CollisionObject& object = scene.objects.front();
+    const double edge = medianEdgeLength(object.mesh);
+    nlohmann::json series = nlohmann::json::array();
     // One path per seed, the same at every radius, so radii compare on the same motion.
     std::vector<FingerPath> paths;
     for (int seed = 1; seed <= seeds; ++seed)
@@ -268,10 +436,10 @@ int main(int argc, char** argv)
     }
     for (double radius : radii)
     {
-      Ticks all;
+      Runs all;
       for (int seed = 1; seed <= seeds; ++seed)
       {
-        const Ticks ticks = play(scene, paths[static_cast<std::size_t>(seed - 1)], radius);
+        const Runs ticks = playBoth(scene, paths[static_cast<std::size_t>(seed - 1)], radius);
         // Tails only where they are plotted (pooled over seeds), to keep the report small.
         nlohmann::json json = statistics(ticks, false);
         json["mesh"] = mesh.file;
@@ -280,20 +448,33 @@ int main(int argc, char** argv)
         json["radius_m"] = radius;
         json["seed"] = seed;
         cases.push_back(json);
-        all.append(ticks);
+        append(all, ticks);
         std::fprintf(stderr, "%-30s r %.1f mm seed %d: contact median %7.0f ns, p99.9 %8.0f ns, "
-                             "max %8.0f ns\n",
+                             "max %8.0f ns; budgeted max %8.0f ns, %5.2f%% limited\n",
                      mesh.file, radius * 1e3, seed, json["contact_solve_ns"]["median"].get<double>(),
                      json["contact_solve_ns"]["p99.9"].get<double>(),
-                     json["contact_solve_ns"]["max"].get<double>());
+                     json["contact_solve_ns"]["max"].get<double>(),
+                     json["budgeted"]["solve_ns"]["max"].get<double>(),
+                     100.0 * json["budgeted"]["budget"]["limited_fraction"].get<double>());
       }
       nlohmann::json json = statistics(all, true);
       json["mesh"] = mesh.file;
       json["radius_m"] = radius;
       json["seeds"] = seeds;
       pooled.push_back(json);
-      byRadius[radius].append(all);
+      // Seeds pooled, unbudgeted: the budget would cut the longest ticks' iterations short.
+      series.push_back({{"radius_m", radius},
+                        {"r_over_edge", edge > 0.0 ? radius / edge : 0.0},
+                        {"solve_ns_per_iteration", json["per_iteration"]["solve_ns"]},
+                        {"triangles_tested_per_iteration",
+                         json["per_iteration"]["triangles_tested"]}});
+      append(byRadius[radius], all);
     }
+    meshes.push_back({{"mesh", mesh.file},
+                      {"scale", scale},
+                      {"triangles", object.mesh.numTriangles()},
+                      {"median_edge_m", edge},
+                      {"iteration_cost", series}});
   }
   for (const auto& [radius, ticks] : byRadius)
   {
@@ -318,7 +499,7 @@ int main(int argc, char** argv)
     }
     CollisionScene scene;
     scene.addObject(loadTriangleMesh(meshFile, shared.scale));
-    const Ticks ticks = play(scene, readFingerPathFile(pathFile), shared.radius);
+    const Runs ticks = playBoth(scene, readFingerPathFile(pathFile), shared.radius);
     nlohmann::json json = statistics(ticks, true);
     json["path"] = shared.file;
     json["mesh"] = shared.mesh;
@@ -326,18 +507,23 @@ int main(int argc, char** argv)
     json["triangles"] = scene.objects.front().mesh.numTriangles();
     json["radius_m"] = shared.radius;
     sharedPaths.push_back(json);
-    std::fprintf(stderr, "%-30s (shared path): contact median %7.0f ns, p99.9 %8.0f ns\n",
+    std::fprintf(stderr, "%-30s (shared path): contact median %7.0f ns, p99.9 %8.0f ns; "
+                         "budgeted max %8.0f ns, %5.2f%% limited\n",
                  shared.file, json["contact_solve_ns"]["median"].get<double>(),
-                 json["contact_solve_ns"]["p99.9"].get<double>());
+                 json["contact_solve_ns"]["p99.9"].get<double>(),
+                 json["budgeted"]["solve_ns"]["max"].get<double>(),
+                 100.0 * json["budgeted"]["budget"]["limited_fraction"].get<double>());
   }
 
   const nlohmann::json report = {{"quick", quick},
                                  {"seeds", seeds},
                                  {"radii_m", radii},
                                  {"rate_hz", kRate},
+                                 {"budget_s", TickWorkBudget::servoSafe().seconds},
                                  {"run_s", millisecondsSince(start) / 1e3},
                                  {"cases", cases},
                                  {"pooled", pooled},
+                                 {"meshes", meshes},
                                  {"shared_paths", sharedPaths}};
   std::ofstream out(argv[1]);
   out << report.dump(1) << "\n";
