@@ -22,6 +22,16 @@ namespace proxima
 {
 namespace
 {
+// A file name as a test name: every character that is not a letter or digit becomes '_'.
+std::string testName(std::string file)
+{
+  for (char& ch : file)
+  {
+    ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  }
+  return file;
+}
+
 struct ProbeCase
 {
   const char* file;
@@ -70,22 +80,8 @@ INSTANTIATE_TEST_SUITE_P(
                   ProbeCase{"VH_M_Liver.glb", 0.5, 0.002, 2},
                   ProbeCase{"M3x10_screw.stl", 0.005, 0.0005, 3},
                   ProbeCase{"fandisk.off", 0.1, 0.003, 4}),
-  [](const testing::TestParamInfo<ProbeCase>& info) {
-    std::string name = info.param.file;
-    for (char& ch : name)
-    {
-      ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    }
-    return name;
-  });
+  [](const testing::TestParamInfo<ProbeCase>& info) { return testName(info.param.file); });
 
-} // namespace
-} // namespace proxima
-
-namespace proxima
-{
-namespace
-{
 struct SharedProbePath
 {
   const char* path;
@@ -161,14 +157,7 @@ INSTANTIATE_TEST_SUITE_P(
     SharedProbePath{"liver-probe.csv", "VH_M_Liver.glb", 0.5, 0.002, 0.648},
     SharedProbePath{"screw-probe.csv", "M3x10_screw.stl", 0.005, 0.0005, 3.859},
     SharedProbePath{"cranium-probe.csv", "cranium_bone_iso075mm.ply", 0.001, 0.001, 0.411}),
-  [](const testing::TestParamInfo<SharedProbePath>& info) {
-    std::string name = info.param.path;
-    for (char& ch : name)
-    {
-      ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    }
-    return name;
-  });
+  [](const testing::TestParamInfo<SharedProbePath>& info) { return testName(info.param.path); });
 
 } // namespace
 } // namespace proxima
