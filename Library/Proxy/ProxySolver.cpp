@@ -31,12 +31,6 @@ constexpr double kSameFaceNormalSine = 1e-13;
 // axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
 constexpr double kMaxCurvatureStretch = 64.0;
 
-// The largest factor a crease's slide is stretched by: along the crease line the distance to
-// the finger is least at the planar slide's end and back to where it started at twice its length,
-// so a stretch of at most 2 never carries the proxy farther from the finger, whatever the fall
-// after it finds (the oracle's energy rule: a tick ends no farther than it began).
-constexpr double kMaxCreaseStretch = 2.0;
-
 // How far a crease's stretched slide may reach, as a fraction of the curved surface's radius.
 constexpr double kCreaseStretchReach = 0.25;
 
@@ -391,7 +385,6 @@ void ProxySolver::refreshCache(QueryStats& stats)
   {
     return;
   }
-  const double contactReach = m_parameters.radius + contactEpsilon();
   if (cacheHoldsProxy())
   {
     return;
