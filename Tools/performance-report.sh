@@ -10,6 +10,8 @@
 # Run it on an idle machine: the figures name the machine and its load.
 # Usage: bash Tools/performance-report.sh [build-dir]      (default: build; SUBDIVISIONS=8, PASSES=5)
 set -euo pipefail
+# shellcheck source=report-helpers.sh
+source "$(dirname "$0")/report-helpers.sh"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build}"
 figures="$root/Documentation/Figures"
@@ -19,22 +21,11 @@ cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD
   -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" --target BenchTimeVersusError -j 2
 
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
-machine="$cpu, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start, $(date -u +%Y-%m-%d)"
+machine="$(machine_description)"
 json="$figures/time_versus_error.json"
 "$build/Testing/Benchmarks/BenchTimeVersusError" "$json" "${SUBDIVISIONS:-8}" "${PASSES:-5}"
 
-python=""
-for candidate in /usr/bin/python3 python3; do
-  if "$candidate" -c "import matplotlib" 2>/dev/null; then
-    python="$candidate"
-    break
-  fi
-done
-if [ -z "$python" ]; then
-  echo "performance-report.sh: no python3 with matplotlib (apt-get install python3-matplotlib)" >&2
-  exit 1
-fi
+python="$(matplotlib_python performance-report.sh)" || exit 1
 "$python" "$root/Testing/Benchmarks/plot_time_versus_error.py" "$json" \
   --figure "$figures/time_versus_error.png" --table "$root/Documentation/PerformanceTable.md" \
   --machine "$machine"

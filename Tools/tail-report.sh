@@ -8,6 +8,8 @@
 # radii. Run it on an idle machine: the figure and table name the machine and its load.
 # Usage: bash Tools/tail-report.sh [build-dir]      (default: build; SEEDS=3, QUICK=0)
 set -euo pipefail
+# shellcheck source=report-helpers.sh
+source "$(dirname "$0")/report-helpers.sh"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build}"
 figures="$root/Documentation/Figures"
@@ -17,8 +19,7 @@ cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD
   -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" --target BenchProbeTail -j 2
 
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
-machine="$cpu, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start, $(date -u +%Y-%m-%d)"
+machine="$(machine_description)"
 json="$figures/probe_tail.json"
 arguments=(--seeds "${SEEDS:-3}")
 if [ "${QUICK:-0}" = 1 ]; then
@@ -26,17 +27,7 @@ if [ "${QUICK:-0}" = 1 ]; then
 fi
 "$build/Testing/Benchmarks/BenchProbeTail" "$json" "${arguments[@]}"
 
-python=""
-for candidate in /usr/bin/python3 python3; do
-  if "$candidate" -c "import matplotlib" 2>/dev/null; then
-    python="$candidate"
-    break
-  fi
-done
-if [ -z "$python" ]; then
-  echo "tail-report.sh: no python3 with matplotlib (apt-get install python3-matplotlib)" >&2
-  exit 1
-fi
+python="$(matplotlib_python tail-report.sh)" || exit 1
 "$python" "$root/Testing/Benchmarks/plot_probe_tail.py" "$json" \
   --figure "$figures/probe_tail.png" --iteration-figure "$figures/probe_iteration_cost.png" \
   --table "$root/Documentation/ProbeTailTable.md" \

@@ -6,6 +6,8 @@
 # BENCHMARKS=tree or BENCHMARKS=proxy runs one of the two (default: both). Extra Google Benchmark
 # flags for BenchSphereTree go in BENCHMARK_ARGS, e.g. BENCHMARK_ARGS=--benchmark_filter=icosphere5
 set -euo pipefail
+# shellcheck source=report-helpers.sh
+source "$(dirname "$0")/../../Tools/report-helpers.sh"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${1:-$root/build-bench}"
 figures="$root/Documentation/Figures"
@@ -26,18 +28,8 @@ if [ "$which" != tree ]; then
   "$build/Testing/Benchmarks/BenchProxyTick" --benchmark_out="$proxyJson" \
     --benchmark_out_format=json
 fi
-# The first python3 that has matplotlib (a pyenv shim may shadow Debian's python3-matplotlib).
-python=""
-for candidate in python3 /usr/bin/python3; do
-  if "$candidate" -c "import matplotlib" 2>/dev/null; then
-    python="$candidate"
-    break
-  fi
-done
-if [ -z "$python" ]; then
-  echo "run_benchmarks.sh: no python3 with matplotlib (Debian: apt-get install python3-matplotlib)" >&2
-  exit 1
-fi
+# A python3 with matplotlib, Debian's first (a pyenv shim may shadow python3-matplotlib).
+python="$(matplotlib_python run_benchmarks.sh)" || exit 1
 if [ "$which" != proxy ]; then
   "$python" "$root/Testing/Benchmarks/plot_benchmarks.py" "$json" --figures "$figures" \
     --table "$root/Documentation/SphereTreeBenchmarksTable.md"
