@@ -526,7 +526,7 @@ int main(int argc, char** argv)
                                  {"meshes", meshes},
                                  {"shared_paths", sharedPaths}};
   std::ofstream out(argv[1]);
-  out << report.dump(1) << "\n";
+  out << report.dump() << "\n"; // compact: the tails make it a megabyte indented
   if (!out)
   {
     std::perror(argv[1]);
