@@ -89,29 +89,6 @@ int CandidateCache::spheresNearSegment(const Vec3& start, const Vec3& motion, do
   return count;
 }
 
-bool CandidateCache::mayReachPoint(int i, const Vec3& point, double reach) const
-{
-  const Vec3 toCenter{m_sphereX[i] - point.x, m_sphereY[i] - point.y, m_sphereZ[i] - point.z};
-  const double sphereReach = m_sphereRadius[i] + reach;
-  if (squaredNorm(toCenter) > sphereReach * sphereReach)
-  {
-    return false;
-  }
-  const Vec3 normal{m_normalX[i], m_normalY[i], m_normalZ[i]};
-  const double planeReach = reach + m_planeSlack[i];
-  const double height = dot(normal, point) - m_planeOffset[i];
-  if (std::fabs(height) > planeReach)
-  {
-    return false;
-  }
-  // In the plane: the point's foot must come within the circle's radius plus what the height
-  // leaves of the reach.
-  const double lateral = std::sqrt(std::max(0.0, planeReach * planeReach - height * height));
-  const Vec3 inPlane = toCenter - normal * dot(normal, toCenter);
-  const double circleReach = m_sphereRadius[i] + lateral;
-  return squaredNorm(inPlane) <= circleReach * circleReach;
-}
-
 bool CandidateCache::mayReachSegment(int i, const Vec3& start, const Vec3& motion,
                                      double motionSquared, double reach) const
 {
@@ -161,7 +138,7 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
   for (int k = 0; k < numNear; ++k)
   {
     const int i = near[k];
-    if (!mayReachPoint(i, point, maxDistance))
+    if (!mayReachSegment(i, point, Vec3{}, 0.0, maxDistance))
     {
       continue;
     }

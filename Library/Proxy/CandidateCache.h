@@ -66,11 +66,10 @@ public:
 private:
   /// Whether cached triangle `i` can come within `reach` of the segment from `start` along
   /// `motion` (of squared length `motionSquared`): its bounding sphere, then its plane and its
-  /// bounding circle in that plane. Never false for a triangle the exact test would find.
+  /// bounding circle in that plane. Never false for a triangle the exact test would find. A
+  /// point is the segment with zero motion.
   bool mayReachSegment(int i, const Vec3& start, const Vec3& motion, double motionSquared,
                        double reach) const;
-  /// The same for a point.
-  bool mayReachPoint(int i, const Vec3& point, double reach) const;
   /// The cached triangles whose bounding spheres come within `reach` of the segment from `start`
   /// along `motion` (a point for zero motion), into `out`; returns how many.
   int spheresNearSegment(const Vec3& start, const Vec3& motion, double reach, int* out) const;

@@ -381,11 +381,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
 
 void ProxySolver::refreshCache(QueryStats& stats)
 {
-  if (!m_parameters.temporalCoherence || m_scene == nullptr)
-  {
-    return;
-  }
-  if (cacheHoldsProxy())
+  if (!cacheNeedsRebuild())
   {
     return;
   }
@@ -400,11 +396,16 @@ void ProxySolver::refreshCache(QueryStats& stats)
   rebuildCache(stats);
 }
 
-bool ProxySolver::cacheHoldsProxy() const
+bool ProxySolver::cacheNeedsRebuild() const
 {
-  // Within half the cached margin of the centre: the next moves are likely to stay covered.
+  if (!m_parameters.temporalCoherence || m_scene == nullptr)
+  {
+    return false;
+  }
+  // Valid, and the proxy within half the cached margin of the centre: the next moves are likely
+  // to stay covered.
   const double margin = m_cache.reach() - (m_parameters.radius + contactEpsilon());
-  return m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * margin;
+  return !(m_cache.valid() && norm(m_proxy - m_cache.center()) <= 0.5 * margin);
 }
 
 void ProxySolver::rebuildCache(QueryStats& stats)
@@ -430,15 +431,10 @@ void ProxySolver::followInCache(QueryStats& stats)
   // to the trees (about 60% of the exact tests on the shared bunny probe path). A contact far
   // from the cached centre re-centres the cache there (in free flight the sweeps are long and go
   // to the trees anyway).
-  if (!m_parameters.temporalCoherence || m_scene == nullptr)
+  if (cacheNeedsRebuild())
   {
-    return;
+    rebuildCache(stats);
   }
-  if (cacheHoldsProxy())
-  {
-    return;
-  }
-  rebuildCache(stats);
 }
 
 ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, QueryStats& stats)

@@ -168,8 +168,9 @@ private:
   /// Rebuilds the candidate cache around the proxy, with a smaller margin if the ball is too
   /// crowded for it.
   void rebuildCache(QueryStats& stats);
-  /// Whether the candidate cache is valid and the proxy within half its margin of its centre.
-  bool cacheHoldsProxy() const;
+  /// Whether temporal coherence is on and the candidate cache is invalid or the proxy beyond
+  /// half its margin of its centre.
+  bool cacheNeedsRebuild() const;
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
