@@ -17,9 +17,7 @@ build="${1:-$root/build}"
 figures="$root/Documentation/Figures"
 mkdir -p "$figures"
 
-cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD_TESTING=ON \
-  -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" --target BenchTimeVersusError -j 2
+build_benchmark "$root" "$build" BenchTimeVersusError
 
 machine="$(machine_description)"
 json="$figures/time_versus_error.json"

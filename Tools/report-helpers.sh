@@ -22,3 +22,11 @@ machine_description() {
   cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
   echo "$cpu, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start, $(date -u +%Y-%m-%d)"
 }
+
+# Configures the Release test-and-benchmark build in BUILD-DIR from ROOT and builds TARGET.
+# Usage: build_benchmark ROOT BUILD-DIR TARGET
+build_benchmark() {
+  cmake -G Ninja -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD_TESTING=ON \
+    -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
+  cmake --build "$2" --target "$3" -j 2
+}

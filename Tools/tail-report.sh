@@ -15,9 +15,7 @@ build="${1:-$root/build}"
 figures="$root/Documentation/Figures"
 mkdir -p "$figures"
 
-cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPROXIMA_BUILD_TESTING=ON \
-  -DPROXIMA_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" --target BenchProbeTail -j 2
+build_benchmark "$root" "$build" BenchProbeTail
 
 machine="$(machine_description)"
 json="$figures/probe_tail.json"
