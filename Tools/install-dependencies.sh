@@ -19,9 +19,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   # command line and reports
   libcli11-dev nlohmann-json3-dev
-  # linear algebra
-  libeigen3-dev
-  # devices (later)
+  # devices: SpaceMouse (hidapi), Falcon (libusb); umockdev fakes their nodes in the tests
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   # tests, benchmarks, offscreen rendering and plots
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib
