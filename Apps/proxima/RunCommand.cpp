@@ -138,7 +138,7 @@ std::string deadlineLine(const LoopStatistics& statistics)
 /// the loops' statistics.
 void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene> scene,
                  const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
-                 const std::function<void(const TickRecord&)>& onTick,
+                 const std::function<void(const HapticState&)>& onTick,
                  nlohmann::ordered_json& report)
 {
   const SceneOptions& shared = options.scene;
@@ -180,7 +180,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   runtime.stop();
   progress.update(numTicks);
   progress.finish();
-  for (const TickRecord& record : runtime.records())
+  for (const HapticState& record : runtime.records())
   {
     onTick(record);
   }
@@ -244,7 +244,7 @@ int run(const RunOptions& options)
   if (options.realtime)
   {
     runRealtime(options, sceneHolder, fingerPath, settings.numTicks, device.device(),
-                [&](const TickRecord& record) {
+                [&](const HapticState& record) {
                   trace.write(record);
                   summary.add(record);
                 },
@@ -257,7 +257,7 @@ int run(const RunOptions& options)
     // the tick's timed update, so that solve_ns stays the budgeted tick's own time.
     BudgetResidualProbe residualProbe(scene, parameters);
     Vec3 tickStart = solver.proxy();
-    runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
+    runLockstep(settings, solver, device.device(), servo, [&](const HapticState& record) {
       trace.write(record);
       summary.add(record);
       if (record.budgetLimited)

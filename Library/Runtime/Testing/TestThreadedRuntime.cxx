@@ -95,7 +95,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   ASSERT_GT(ticks, 500u);
 
   // Lockstep on a virtual clock.
-  std::vector<TickRecord> lockstep;
+  std::vector<HapticState> lockstep;
   {
     ProxySolver solver;
     solver.setScene(scene.get(), proxyParameters());
@@ -105,7 +105,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
     settings.rate = kRate;
     settings.numTicks = ticks;
     runLockstep(settings, solver, device, servoParameters(),
-                [&](const TickRecord& record) { lockstep.push_back(record); });
+                [&](const HapticState& record) { lockstep.push_back(record); });
   }
 
   // The same path played in real time through both threads.
@@ -122,7 +122,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   ASSERT_TRUE(runtime.start(message)) << message;
   ASSERT_TRUE(waitFor([&] { return runtime.finished(); }, 60s));
   runtime.stop();
-  const std::vector<TickRecord> threaded = runtime.records();
+  const std::vector<HapticState> threaded = runtime.records();
   ASSERT_FALSE(threaded.empty());
 
   // Each proxy update took the servo's newest sample; the records name the sample's tick. Until
@@ -136,9 +136,9 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   std::uint64_t contactTicks = 0;
   for (std::size_t i = 0; i < threaded.size(); ++i)
   {
-    const TickRecord& a = threaded[i];
+    const HapticState& a = threaded[i];
     ASSERT_LT(a.tick, lockstep.size());
-    const TickRecord& b = lockstep[a.tick];
+    const HapticState& b = lockstep[a.tick];
     if (i > 0)
     {
       ASSERT_GT(a.tick, threaded[i - 1].tick);
@@ -146,7 +146,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
     }
     ASSERT_EQ(a.time, b.time) << "tick " << a.tick;
     ASSERT_TRUE(sameBits(a.finger, b.finger)) << "tick " << a.tick;
-    ASSERT_EQ(a.contacts > 0, b.contacts > 0) << "tick " << a.tick;
+    ASSERT_EQ(a.numContacts > 0, b.numContacts > 0) << "tick " << a.tick;
     if (!skipped)
     {
       ASSERT_TRUE(sameBits(a.proxy, b.proxy)) << "tick " << a.tick;
@@ -159,7 +159,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
       ASSERT_LT(distance(a.proxy, b.proxy), 1e-9) << "tick " << a.tick;
       ASSERT_LT(distance(a.force, b.force), 800.0 * 1e-9) << "tick " << a.tick;
     }
-    contactTicks += a.contacts > 0 ? 1 : 0;
+    contactTicks += a.numContacts > 0 ? 1 : 0;
   }
   RecordProperty("ticks", static_cast<int>(ticks));
   RecordProperty("ticks_compared", static_cast<int>(threaded.size()));
