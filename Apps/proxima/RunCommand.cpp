@@ -14,6 +14,7 @@
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/RunSummary.h"
+#include "Runtime/ServoRate.h"
 #include "Runtime/ThreadedRuntime.h"
 
 #include <nlohmann/json.hpp>
@@ -206,9 +207,10 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
 int run(const RunOptions& options)
 {
   const SceneOptions& shared = options.scene;
-  if (options.realtime && !(shared.rate >= 1000.0 && shared.rate <= 10000.0))
+  if (options.realtime && !isServoRate(shared.rate))
   {
-    throw InputError("--rate", "must be from 1000 to 10000 Hz with --realtime (the servo loop's range)");
+    throw InputError("--rate", "must be " + servoRateRange() +
+                                 " with --realtime (the servo loop's range)");
   }
   const auto readStart = std::chrono::steady_clock::now();
   LoadedScene loaded = loadScene(shared);

@@ -2,13 +2,14 @@
 
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/HapticStep.h"
+#include "Runtime/ServoRate.h"
 #include "Runtime/SnapshotChannel.h"
 
 #include <sys/prctl.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 namespace proxima
@@ -31,7 +32,11 @@ struct ThreadedRuntime::Impl
     : device(device_), limits(device_.limits()), servo(servo_), settings(settings_),
       solver(std::make_unique<ProxySolver>())
   {
-    settings.servoRate = std::clamp(settings.servoRate, 1000.0, 10000.0);
+    const std::string rateError = servoRateError(settings.servoRate);
+    if (!rateError.empty())
+    {
+      throw std::invalid_argument(rateError);
+    }
     if (!(settings.proxyRate > 0.0))
     {
       settings.proxyRate = settings.servoRate;

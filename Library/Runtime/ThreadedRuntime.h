@@ -28,7 +28,7 @@ namespace proxima
 
 struct RuntimeSettings
 {
-  /// Servo loop rate in Hz, 1 to 10 kHz.
+  /// Servo loop rate in Hz, 1 to 10 kHz (ServoRate.h; the runtime refuses any other).
   double servoRate = 4000.0;
   /// Proxy-update loop rate in Hz; 0 runs it at the servo rate.
   double proxyRate = 0.0;
@@ -56,6 +56,8 @@ class ThreadedRuntime
 {
 public:
   /// `device` must outlive the runtime; it is used by the servo thread only while running.
+  /// Throws std::invalid_argument when settings.servoRate is not a servo rate (ServoRate.h): a
+  /// rate is refused at configuration time, never clamped.
   ThreadedRuntime(HapticDevice& device, const ServoParameters& servo,
                   const RuntimeSettings& settings);
   ~ThreadedRuntime();

@@ -12,9 +12,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 namespace proxima
@@ -320,13 +322,32 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   RecordProperty("skull", haveSkull ? 1 : 0);
 }
 
+TEST(ThreadedRuntime, RefusesAServoRateOutsideTheRuleAtConstruction)
+{
+  // Refused, not clamped: a clamped rate ran the loops at one rate while the proxy's time step
+  // came from another.
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 0.0});
+  SimulatedDevice device(path);
+  for (const double rate : {20000.0, 999.0, 0.0, -4000.0, std::nan("")})
+  {
+    RuntimeSettings settings;
+    settings.servoRate = rate;
+    EXPECT_THROW(ThreadedRuntime(device, ServoParameters{}, settings), std::invalid_argument)
+      << rate;
+  }
+  RuntimeSettings floor;
+  floor.servoRate = 1000.0;
+  EXPECT_NO_THROW(ThreadedRuntime(device, ServoParameters{}, floor));
+}
+
 TEST(ThreadedRuntime, StartMessageNamesTheRatesAndTheSchedulingOutcome)
 {
   FingerPath path;
   path.append(0.0, {0.0, 0.0, 0.0});
   SimulatedDevice device(path);
   RuntimeSettings settings;
-  settings.servoRate = 20000.0; // above the 10 kHz ceiling: clamped
+  settings.servoRate = 10000.0; // the ceiling (ServoRate.h): a rate above it is refused
   settings.realtimeScheduling = true;
   settings.duration = 0.02;
   ThreadedRuntime runtime(device, ServoParameters{}, settings);
