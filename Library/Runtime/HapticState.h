@@ -1,4 +1,6 @@
-// What one haptic tick did: the output of the tick's step (HapticStep.h) in every runner. The
+// One haptic tick's input and output, the data of the tick's step (HapticStep.h) in every runner.
+// TickInput is what a tick starts from: its number, its time and the device's sample; the threaded
+// runtime's servo thread posts it to the proxy thread. HapticState is what the tick did: the
 // lockstep runner hands it to the trace (one row per tick, DESIGN.md section 3), the threaded
 // runtime's proxy thread posts its proxy half to the servo thread and the servo thread publishes
 // the whole of it (ThreadedRuntime::latestState), and the VTK layer draws it. Plain values only,
@@ -6,11 +8,22 @@
 #pragma once
 
 #include "Core/Vec3.h"
+#include "Runtime/HapticDevice.h"
 
 #include <cstdint>
 
 namespace proxima
 {
+
+struct TickInput
+{
+  /// Servo tick number: tick k of a run at rate f runs at startTime + k / f.
+  std::uint64_t tick = 0;
+  /// Seconds on the runtime's clock (virtual in lockstep, the servo clock's when threaded).
+  double time = 0.0;
+  /// The finger and the device's state (valid, connected, buttons) at `time`.
+  DeviceSample sample;
+};
 
 /// One active contact, as drawn by the representations: a plane through `point` with `normal`,
 /// and the friction cone around the normal.

@@ -1,17 +1,16 @@
 // One haptic tick, the step every runner runs: device -> finger -> proxy -> (dynamics) -> force ->
 // device (paper section 8; Documentation/Threading.md). Its input is a TickInput (tick, time,
-// device sample) and its output a HapticState (proxy, contacts, force, flags, timings). The
-// lockstep runner (LockstepRuntime.h) and the VTK layer's lockstep pictures run hapticStep in one
-// thread; the threaded runtime runs its halves on two threads, stepProxy on the proxy thread and
-// ServoForce::step on the servo thread, and hands the HapticState between them. Same steps, so a
-// threaded run and a lockstep run of a path agree.
+// device sample) and its output a HapticState (proxy, contacts, force, flags, timings), both in
+// HapticState.h. The lockstep runner (LockstepRuntime.h) and the VTK layer's lockstep pictures run
+// hapticStep in one thread; the threaded runtime runs its halves on two threads, stepProxy on the
+// proxy thread and ServoForce::step on the servo thread, and hands the HapticState between them.
+// Same steps, so a threaded run and a lockstep run of a path agree.
 #pragma once
 
 #include "Proxy/ProxySolver.h"
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoForce.h"
-#include "Runtime/TickInput.h"
 
 #include <cstdint>
 

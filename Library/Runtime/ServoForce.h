@@ -10,7 +10,6 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoParameters.h"
-#include "Runtime/TickInput.h"
 
 #include <cstdint>
 
