@@ -23,7 +23,6 @@ struct SceneSlot
   Vec3 proxyStart;
   std::uint64_t version = 0;
 };
-
 } // namespace
 
 struct ThreadedRuntime::Impl
@@ -141,14 +140,14 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       sleepUntilNanoseconds(monotonicNanoseconds() + stall);
     }
     installPendingScene();
-    // New is decided by the sample's tick, not by the channel's write count: the servo can post
-    // again between a count and the read that follows it, and the read then already holds the
-    // newer sample, which the next count would have the loop update on a second time.
     if (!fingerPosted.load(std::memory_order_acquire))
     {
       clock.workDone();
       continue; // no finger sample yet
     }
+    // New is decided by the sample's tick, not by the channel's write count: the servo can post
+    // again between a count and the read that follows it, and the read then already holds the
+    // newer sample, which the next count would have the loop update on a second time.
     const TickInput post = finger.read();
     if (updatedOnce && post.tick == lastTick)
     {
