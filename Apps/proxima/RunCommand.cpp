@@ -14,6 +14,7 @@
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/RunSummary.h"
+#include "Runtime/ServoRate.h"
 #include "Runtime/ThreadedRuntime.h"
 
 #include <nlohmann/json.hpp>
@@ -138,7 +139,7 @@ std::string deadlineLine(const LoopStatistics& statistics)
 /// the loops' statistics.
 void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene> scene,
                  const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
-                 const std::function<void(const TickRecord&)>& onTick,
+                 const std::function<void(const HapticState&)>& onTick,
                  nlohmann::ordered_json& report)
 {
   const SceneOptions& shared = options.scene;
@@ -180,7 +181,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   runtime.stop();
   progress.update(numTicks);
   progress.finish();
-  for (const TickRecord& record : runtime.records())
+  for (const HapticState& record : runtime.records())
   {
     onTick(record);
   }
@@ -206,9 +207,10 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
 int run(const RunOptions& options)
 {
   const SceneOptions& shared = options.scene;
-  if (options.realtime && !(shared.rate >= 1000.0 && shared.rate <= 10000.0))
+  if (options.realtime && !isServoRate(shared.rate))
   {
-    throw InputError("--rate", "must be from 1000 to 10000 Hz with --realtime (the servo loop's range)");
+    throw InputError("--rate", "must be " + servoRateRange() +
+                                 " with --realtime (the servo loop's range)");
   }
   const auto readStart = std::chrono::steady_clock::now();
   LoadedScene loaded = loadScene(shared);
@@ -244,7 +246,7 @@ int run(const RunOptions& options)
   if (options.realtime)
   {
     runRealtime(options, sceneHolder, fingerPath, settings.numTicks, device.device(),
-                [&](const TickRecord& record) {
+                [&](const HapticState& record) {
                   trace.write(record);
                   summary.add(record);
                 },
@@ -257,7 +259,7 @@ int run(const RunOptions& options)
     // the tick's timed update, so that solve_ns stays the budgeted tick's own time.
     BudgetResidualProbe residualProbe(scene, parameters);
     Vec3 tickStart = solver.proxy();
-    runLockstep(settings, solver, device.device(), servo, [&](const TickRecord& record) {
+    runLockstep(settings, solver, device.device(), servo, [&](const HapticState& record) {
       trace.write(record);
       summary.add(record);
       if (record.budgetLimited)

@@ -6,7 +6,7 @@
 #include "IO/SceneBuilder.h"
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/FingerPath.h"
-#include "Runtime/ServoTick.h"
+#include "Runtime/ServoParameters.h"
 #include "Runtime/TickBudget.h"
 
 #include <CLI/CLI.hpp>

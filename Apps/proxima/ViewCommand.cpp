@@ -10,6 +10,7 @@
 #include "IO/InputError.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
+#include "Runtime/ServoRate.h"
 #include "VTK/ScenePolyData.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticStateRepresentation.h"
@@ -122,6 +123,11 @@ void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
 int view(const ViewOptions& options)
 {
   const SceneOptions& shared = options.scene;
+  // The viewer runs the real-time loops: their rate rule, refused before anything is loaded.
+  if (!isServoRate(shared.rate))
+  {
+    throw InputError("--rate", "must be " + servoRateRange() + " (the servo loop's range)");
+  }
   LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
   checkPathStart(shared, loaded, fingerPath);

@@ -31,7 +31,7 @@ TraceWriter::~TraceWriter()
   }
 }
 
-void TraceWriter::write(const TickRecord& r)
+void TraceWriter::write(const HapticState& r)
 {
   // %.17g: positions round-trip exactly, so traces compare bit for bit.
   std::fprintf(m_file,
@@ -39,7 +39,7 @@ void TraceWriter::write(const TickRecord& r)
                "%d,%u\n",
                static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y,
                r.finger.z, r.proxy.x, r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z,
-               r.contacts, r.iterations, static_cast<long long>(r.solveNanoseconds),
+               r.numContacts, r.iterations, static_cast<long long>(r.solveNanoseconds),
                r.contactObject, static_cast<unsigned>(tickFlags(r)));
 }
 

@@ -6,7 +6,7 @@
 // TickFlag bits (Documentation/CommandLine.md).
 #pragma once
 
-#include "Runtime/ServoTick.h"
+#include "Runtime/HapticState.h"
 
 #include <cstdio>
 #include <string>
@@ -27,7 +27,7 @@ public:
   TraceWriter(const TraceWriter&) = delete;
   TraceWriter& operator=(const TraceWriter&) = delete;
 
-  void write(const TickRecord& record);
+  void write(const HapticState& record);
   /// Flushes and closes; throws std::runtime_error if the data did not reach the file.
   void close();
 

@@ -1,8 +1,13 @@
-// Lockstep mode: the servo tick run in one thread on a virtual clock. The same input gives the
-// same trace bit for bit (all but the measured solve time), so scripted runs are testable.
+// Lockstep mode: the haptic tick (HapticStep.h) run in one thread on a virtual clock. The same
+// input gives the same trace bit for bit (all but the measured solve time), so scripted runs are
+// testable. Where a lockstep tick begins: runLockstep -> hapticStep -> ProxySolver::update and
+// ServoForce::step.
 #pragma once
 
-#include "Runtime/ServoTick.h"
+#include "Proxy/ProxySolver.h"
+#include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/ServoParameters.h"
 
 #include <cstdint>
 #include <functional>
@@ -21,9 +26,9 @@ struct LockstepSettings
 /// Number of servo ticks that cover [start, end] at `rate` (both ends included).
 std::uint64_t ticksCovering(double start, double end, double rate);
 
-/// Runs settings.numTicks ticks and hands each record to `onTick`, in order.
+/// Runs settings.numTicks ticks and hands each tick's state to `onTick`, in order.
 void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDevice& device,
                  const ServoParameters& parameters,
-                 const std::function<void(const TickRecord&)>& onTick);
+                 const std::function<void(const HapticState&)>& onTick);
 
 } // namespace proxima

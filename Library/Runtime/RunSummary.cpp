@@ -23,10 +23,10 @@ double nearestRank(std::vector<T>& values, double q)
 }
 } // namespace
 
-void RunSummary::add(const TickRecord& record)
+void RunSummary::add(const HapticState& record)
 {
   ++m_ticks;
-  m_contactTicks += record.contacts > 0 ? 1 : 0;
+  m_contactTicks += record.numContacts > 0 ? 1 : 0;
   m_totalIterations += static_cast<std::uint64_t>(record.iterations);
   m_maxIterations = std::max(m_maxIterations, record.iterations);
   m_capTicks += record.hitIterationCap ? 1 : 0;

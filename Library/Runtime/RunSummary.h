@@ -1,7 +1,7 @@
 // Statistics of a run, gathered tick by tick: what `proxima run --summary` reports.
 #pragma once
 
-#include "Runtime/ServoTick.h"
+#include "Runtime/HapticState.h"
 
 #include <cstdint>
 #include <map>
@@ -13,7 +13,7 @@ namespace proxima
 class RunSummary
 {
 public:
-  void add(const TickRecord& record);
+  void add(const HapticState& record);
 
   std::uint64_t ticks() const { return m_ticks; }
   std::uint64_t contactTicks() const { return m_contactTicks; }
@@ -34,7 +34,7 @@ public:
   double solveNanosecondsQuantile(double q) const;
   double meanTrianglesTested() const;
 
-  /// Ticks the work budget stopped before the proxy settled (TickRecord::budgetLimited).
+  /// Ticks the work budget stopped before the proxy settled (HapticState::budgetLimited).
   std::uint64_t budgetLimitedTicks() const { return m_budgetLimitedTicks; }
   /// The distance in metres between where a budget-limited tick ended and where the same tick
   /// ends without a budget (measured by the caller, e.g. BudgetResidualProbe); one per call.

@@ -16,27 +16,30 @@ ServoForce::ServoForce(const ServoParameters& parameters, const DeviceLimits& li
 {
 }
 
-ServoForceOutput ServoForce::step(const ServoForceInput& input)
+void ServoForce::step(const TickInput& input, HapticState& state)
 {
-  ServoForceOutput output;
+  // Only this stage sets these; a state handed in twice must not keep the last tick's.
+  state.forceClamped = false;
+  state.fading = false;
+  state.rateLimited = false;
   const double dt = m_started ? std::max(0.0, input.time - m_lastTime) : 0.0;
   m_started = true;
   m_lastTime = input.time;
   // A fade over fadeTime moves the gain by dt / fadeTime a tick; no fade time means at once.
   const double gainStep = m_parameters.fadeTime > 0.0 ? dt / m_parameters.fadeTime : 1.0;
 
-  if (m_sceneSeen && input.sceneVersion != m_sceneVersion)
+  if (m_sceneSeen && state.sceneVersion != m_sceneVersion)
   {
     m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
   }
   m_sceneSeen = true;
-  m_sceneVersion = input.sceneVersion;
+  m_sceneVersion = state.sceneVersion;
 
-  output.deviceLost = !input.sample.connected;
-  output.proxyStale = input.proxyAge > m_parameters.watchdogTimeout;
+  state.deviceLost = !input.sample.connected;
+  state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;
   Vec3 force;
   bool held = false;
-  if (output.deviceLost || output.proxyStale)
+  if (state.deviceLost || state.proxyStale)
   {
     // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
     // far from it while the proxy loop was stuck.
@@ -52,24 +55,24 @@ ServoForceOutput ServoForce::step(const ServoForceInput& input)
     force = m_fadeFrom * m_fadeLevel;
     // Once the fault clears, the spring comes back from the level the fade reached.
     m_gain = m_fadeLevel;
-    output.fading = true;
+    state.fading = true;
   }
   else
   {
     m_faulted = false;
-    const bool usable = input.sample.valid && !input.proxyRefused;
+    const bool usable = input.sample.valid && !state.fingerRefused;
     if (usable)
     {
       // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
       // continuous, since proxy and finger coincide out of contact.
-      force = (input.proxy - input.sample.position) *
-              (m_parameters.stiffness * input.stiffnessScale);
+      force = (state.proxy - input.sample.position) *
+              (m_parameters.stiffness * state.stiffnessScale);
       if (m_gain < 1.0)
       {
         m_gain = m_gain + gainStep;
         m_gain = m_gain < 1.0 - kGainRounding ? m_gain : 1.0;
         force = force * m_gain;
-        output.fading = m_gain < 1.0;
+        state.fading = m_gain < 1.0;
       }
     }
     else
@@ -86,7 +89,7 @@ ServoForceOutput ServoForce::step(const ServoForceInput& input)
   if (!held && magnitude > m_maxForce)
   {
     force = force * (m_maxForce / magnitude);
-    output.clamped = true;
+    state.forceClamped = true;
   }
   if (input.time < m_rateLimitUntil)
   {
@@ -96,12 +99,11 @@ ServoForceOutput ServoForce::step(const ServoForceInput& input)
     if (changeMagnitude > allowed)
     {
       force = m_lastForce + change * (allowed / changeMagnitude);
-      output.rateLimited = true;
+      state.rateLimited = true;
     }
   }
   m_lastForce = force;
-  output.force = force;
-  return output;
+  state.force = force;
 }
 
 } // namespace proxima

@@ -8,47 +8,22 @@
 #pragma once
 
 #include "Runtime/HapticDevice.h"
-#include "Runtime/ServoTick.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/ServoParameters.h"
 
 #include <cstdint>
 
 namespace proxima
 {
 
-/// What the force stage is given at one servo tick.
-struct ServoForceInput
-{
-  DeviceSample sample;
-  /// The last published proxy, the stiffness-map factor at its contacts, and whether its step
-  /// refused the finger it was given.
-  Vec3 proxy;
-  double stiffnessScale = 1.0;
-  bool proxyRefused = false;
-  /// Seconds between this tick and the finger sample the proxy state was computed from: 0 in
-  /// lockstep, about one period in the threaded runtime, more when the proxy loop stalls.
-  double proxyAge = 0.0;
-  /// The version of the scene the proxy state was computed on; a change starts the rate limit.
-  std::uint64_t sceneVersion = 0;
-  double time = 0.0;
-};
-
-struct ServoForceOutput
-{
-  Vec3 force;
-  bool clamped = false;
-  /// The force is below what the spring asks because it is fading out or back in.
-  bool fading = false;
-  bool deviceLost = false;
-  bool proxyStale = false;
-  bool rateLimited = false;
-};
-
 class ServoForce
 {
 public:
   explicit ServoForce(const ServoParameters& parameters, const DeviceLimits& limits = {});
 
-  ServoForceOutput step(const ServoForceInput& input);
+  /// The force for the tick `input` from the proxy half of `state` (proxy, stiffnessScale,
+  /// fingerRefused, proxyAge, sceneVersion): sets the state's force fields.
+  void step(const TickInput& input, HapticState& state);
 
   const ServoParameters& parameters() const { return m_parameters; }
   double maxForce() const { return m_maxForce; }

@@ -1,46 +1,21 @@
 #include "Runtime/ThreadedRuntime.h"
 
 #include "Runtime/DeadlineClock.h"
-#include "Runtime/LockstepTick.h"
+#include "Runtime/HapticStep.h"
+#include "Runtime/ServoRate.h"
 #include "Runtime/SnapshotChannel.h"
 
 #include <sys/prctl.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 namespace proxima
 {
 namespace
 {
-/// The finger sample the servo thread posts to the proxy thread.
-struct FingerPost
-{
-  std::uint64_t tick = 0;
-  double time = 0.0;
-  DeviceSample sample;
-  bool posted = false;
-};
-
-/// What the proxy thread publishes after each update.
-struct ProxyPost
-{
-  bool valid = false;
-  std::uint64_t sampleTick = 0;
-  double sampleTime = 0.0;
-  Vec3 proxy;
-  double stiffnessScale = 1.0;
-  bool refused = false;
-  int numContacts = 0;
-  ContactSnapshot contacts[3];
-  bool stuck = false;
-  bool frictionLimited = false;
-  std::uint64_t sceneVersion = 0;
-  double proxyRadius = 0.0;
-};
-
 struct SceneSlot
 {
   std::shared_ptr<const CollisionScene> scene;
@@ -48,24 +23,6 @@ struct SceneSlot
   Vec3 proxyStart;
   std::uint64_t version = 0;
 };
-
-ProxyPost makeProxyPost(const FingerPost& finger, const ProxyStepOutcome& outcome,
-                        const SceneSlot* scene)
-{
-  ProxyPost post;
-  post.valid = true;
-  post.sampleTick = finger.tick;
-  post.sampleTime = finger.time;
-  post.proxy = outcome.proxy;
-  post.stiffnessScale = outcome.result.stiffnessScale;
-  post.refused = outcome.refused;
-  post.numContacts = snapshotContacts(outcome.result, post.contacts);
-  post.stuck = outcome.result.stuck;
-  post.frictionLimited = outcome.result.frictionLimited;
-  post.sceneVersion = scene != nullptr ? scene->version : 0;
-  post.proxyRadius = scene != nullptr ? scene->parameters.radius : 0.0;
-  return post;
-}
 } // namespace
 
 struct ThreadedRuntime::Impl
@@ -74,7 +31,11 @@ struct ThreadedRuntime::Impl
     : device(device_), limits(device_.limits()), servo(servo_), settings(settings_),
       solver(std::make_unique<ProxySolver>())
   {
-    settings.servoRate = std::clamp(settings.servoRate, 1000.0, 10000.0);
+    const std::string rateError = servoRateError(settings.servoRate);
+    if (!rateError.empty())
+    {
+      throw std::invalid_argument(rateError);
+    }
     if (!(settings.proxyRate > 0.0))
     {
       settings.proxyRate = settings.servoRate;
@@ -99,9 +60,16 @@ struct ThreadedRuntime::Impl
   RuntimeSettings settings;
   std::unique_ptr<ProxySolver> solver;
 
-  SnapshotChannel<FingerPost> finger;
-  SnapshotChannel<ProxyPost> proxyState;
+  /// Servo thread to proxy thread: the newest tick's input.
+  SnapshotChannel<TickInput> finger;
+  /// Proxy thread to servo thread: the proxy half of the newest update's state.
+  SnapshotChannel<HapticState> proxyState;
+  /// Servo thread to the application: each tick's whole state.
   SnapshotChannel<HapticState> state;
+  /// Set (release) after the first write of `finger` and `proxyState`: a reader that sees one
+  /// set reads a posted value, never the channel's default.
+  std::atomic<bool> fingerPosted{false};
+  std::atomic<bool> proxyPosted{false};
 
   std::atomic<SceneSlot*> pending{nullptr};
   std::atomic<SceneSlot*> retired{nullptr};
@@ -117,7 +85,7 @@ struct ThreadedRuntime::Impl
 
   LoopStatisticsRecorder servoStatistics;
   LoopStatisticsRecorder proxyStatistics;
-  std::vector<TickRecord> records;
+  std::vector<HapticState> records;
   std::size_t recordCount = 0;
 
   std::thread servoThread;
@@ -172,41 +140,51 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       sleepUntilNanoseconds(monotonicNanoseconds() + stall);
     }
     installPendingScene();
+    if (!fingerPosted.load(std::memory_order_acquire))
+    {
+      clock.workDone();
+      continue; // no finger sample yet
+    }
     // New is decided by the sample's tick, not by the channel's write count: the servo can post
     // again between a count and the read that follows it, and the read then already holds the
     // newer sample, which the next count would have the loop update on a second time.
-    const FingerPost post = finger.read();
-    if (!post.posted || (updatedOnce && post.tick == lastTick))
+    const TickInput post = finger.read();
+    if (updatedOnce && post.tick == lastTick)
     {
       clock.workDone();
       continue; // no new finger sample: nothing to update
     }
     updatedOnce = true;
     lastTick = post.tick;
-    ProxyStepOutcome outcome;
+    HapticState updated;
     if (live != nullptr)
     {
-      outcome = runProxyStep(*solver, post.sample);
+      stepProxy(*solver, post, updated);
     }
     else
     {
       // No scene yet: free space, the proxy is the finger.
-      outcome.refused = !(post.sample.valid && post.sample.connected);
-      outcome.proxy = outcome.refused ? solver->proxy() : post.sample.position;
-      if (!outcome.refused)
+      updated.tick = post.tick;
+      updated.time = post.time;
+      updated.finger = post.sample.position;
+      updated.fingerRefused = !(post.sample.valid && post.sample.connected);
+      updated.proxy = updated.fingerRefused ? solver->proxy() : post.sample.position;
+      if (!updated.fingerRefused)
       {
         solver->resetProxy(post.sample.position);
       }
     }
-    const std::uint64_t version = live != nullptr ? live->version : 0;
-    proxyState.write(makeProxyPost(post, outcome, live));
+    updated.sceneVersion = live != nullptr ? live->version : 0;
+    stepDynamics(post, updated);
+    proxyState.write(updated);
+    proxyPosted.store(true, std::memory_order_release);
     if (recordCount < records.size())
     {
-      // The lockstep runner's force stage on this thread's sequence: with no sample skipped,
-      // these records equal a lockstep run's.
-      const ServoForceOutput force =
-        recordForce.step(freshForceInput(post.sample, outcome, post.time, version));
-      records[recordCount++] = makeTickRecord(post.tick, post.time, post.sample, outcome, force);
+      // The lockstep runner's force stage on this thread's sequence (the proxy fresh, age 0):
+      // with no sample skipped, these records equal a lockstep run's.
+      HapticState& record = records[recordCount++];
+      record = updated;
+      recordForce.step(post, record);
     }
     clock.workDone();
   }
@@ -227,44 +205,29 @@ void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
       finishedFlag.store(true, std::memory_order_release);
       break;
     }
-    const DeviceSample sample = device.read(time);
-    finger.write(FingerPost{tick, time, sample, true});
+    const TickInput input{tick, time, device.read(time)};
+    finger.write(input);
+    fingerPosted.store(true, std::memory_order_release);
 
-    const ProxyPost proxy = proxyState.read();
-    ServoForceInput input;
-    input.sample = sample;
-    input.time = time;
-    if (proxy.valid)
+    // The proxy half comes from the proxy thread's last update; this tick's finger, time and
+    // force are the servo's own.
+    HapticState snapshot;
+    if (proxyPosted.load(std::memory_order_acquire))
     {
-      input.proxy = proxy.proxy;
-      input.stiffnessScale = proxy.stiffnessScale;
-      input.proxyRefused = proxy.refused;
-      input.proxyAge = time - proxy.sampleTime;
-      input.sceneVersion = proxy.sceneVersion;
+      snapshot = proxyState.read();
+      snapshot.proxyAge = time - snapshot.time;
     }
     else
     {
       // Nothing from the proxy loop yet: no force, and the watchdog counts from the start.
-      input.proxy = sample.position;
-      input.proxyAge = time;
+      snapshot.proxy = input.sample.position;
+      snapshot.proxyAge = time;
     }
-    const ServoForceOutput output = force.step(input);
-    device.writeForce(output.force, time);
-
-    HapticState snapshot;
     snapshot.tick = tick;
     snapshot.time = time;
-    snapshot.finger = sample.position;
-    snapshot.proxy = input.proxy;
-    snapshot.proxyRadius = proxy.proxyRadius;
-    snapshot.force = output.force;
-    snapshot.numContacts = proxy.numContacts;
-    std::copy(std::begin(proxy.contacts), std::end(proxy.contacts), std::begin(snapshot.contacts));
-    snapshot.stuck = proxy.stuck;
-    snapshot.frictionLimited = proxy.frictionLimited;
-    snapshot.fading = output.fading;
-    snapshot.deviceLost = output.deviceLost;
-    snapshot.sceneVersion = proxy.sceneVersion;
+    snapshot.finger = input.sample.position;
+    force.step(input, snapshot);
+    device.writeForce(snapshot.force, time);
     state.write(snapshot);
     clock.workDone();
   }
@@ -411,13 +374,13 @@ LoopStatistics ThreadedRuntime::proxyStatistics() const
   return m_impl->proxyStatistics.snapshot();
 }
 
-std::vector<TickRecord> ThreadedRuntime::records() const
+std::vector<HapticState> ThreadedRuntime::records() const
 {
   if (m_impl->started)
   {
     return {};
   }
-  return std::vector<TickRecord>(m_impl->records.begin(),
+  return std::vector<HapticState>(m_impl->records.begin(),
                                  m_impl->records.begin() +
                                    static_cast<std::ptrdiff_t>(m_impl->recordCount));
 }

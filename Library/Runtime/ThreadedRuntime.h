@@ -3,8 +3,10 @@
 // thread and renders the spring force from the last published proxy; the proxy thread runs the
 // solver on the latest finger. Everything between threads is lock-free: the finger and the proxy
 // state go through single-writer snapshots, scenes through an atomic swap that only ever installs
-// a complete scene and never frees one on a haptic thread. The step functions are those of the
-// lockstep runner (ServoTick.h), so a threaded run and a lockstep run of a path agree.
+// a complete scene and never frees one on a haptic thread. The steps are the lockstep runner's
+// (HapticStep.h): the servo thread posts a TickInput, the proxy thread runs stepProxy on it and
+// posts the HapticState, and the servo thread runs ServoForce::step on that state and publishes
+// it. A threaded run and a lockstep run of a path agree.
 #pragma once
 
 #include "Proxy/CollisionScene.h"
@@ -12,7 +14,7 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/LoopStatistics.h"
-#include "Runtime/ServoTick.h"
+#include "Runtime/ServoParameters.h"
 #include "Runtime/TickBudget.h"
 
 #include <cstddef>
@@ -26,7 +28,7 @@ namespace proxima
 
 struct RuntimeSettings
 {
-  /// Servo loop rate in Hz, 1 to 10 kHz.
+  /// Servo loop rate in Hz, 1 to 10 kHz (ServoRate.h; the runtime refuses any other).
   double servoRate = 4000.0;
   /// Proxy-update loop rate in Hz; 0 runs it at the servo rate.
   double proxyRate = 0.0;
@@ -35,8 +37,9 @@ struct RuntimeSettings
   bool realtimeScheduling = true;
   int servoPriority = 80;
   int proxyPriority = 70;
-  /// Keep the first `recordTicks` servo ticks as TickRecords (preallocated), for comparing a
-  /// threaded run with a lockstep one; 0 keeps none.
+  /// Keep the states of the first `recordTicks` proxy updates (preallocated), each with the
+  /// force the lockstep runner would give it, for comparing a threaded run with a lockstep one;
+  /// 0 keeps none.
   std::size_t recordTicks = 0;
   /// The run ends by itself when the servo clock reaches this many seconds (finished() turns
   /// true); 0 runs until stop().
@@ -53,6 +56,8 @@ class ThreadedRuntime
 {
 public:
   /// `device` must outlive the runtime; it is used by the servo thread only while running.
+  /// Throws std::invalid_argument when settings.servoRate is not a servo rate (ServoRate.h): a
+  /// rate is refused at configuration time, never clamped.
   ThreadedRuntime(HapticDevice& device, const ServoParameters& servo,
                   const RuntimeSettings& settings);
   ~ThreadedRuntime();
@@ -91,7 +96,7 @@ public:
   /// floor loop (DeadlineClock.h) must run with to be comparable.
   std::string servoScheduling() const;
   /// The recorded ticks (RuntimeSettings::recordTicks), after stop().
-  std::vector<TickRecord> records() const;
+  std::vector<HapticState> records() const;
 
   /// Fault injection for tests and demonstrations: the proxy loop sleeps `seconds` at its next
   /// tick, as if it had stalled, so the servo's watchdog fades the force.

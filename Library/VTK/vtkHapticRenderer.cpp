@@ -1,10 +1,13 @@
 #include "VTK/vtkHapticRenderer.h"
 
+#include "Runtime/ServoRate.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Runtime/ThreadedRuntime.h"
 #include "VTK/vtkHapticScene.h"
 
 #include <vtkObjectFactory.h>
+
+#include <stdexcept>
 
 vtkStandardNewMacro(vtkHapticRenderer);
 vtkCxxSetObjectMacro(vtkHapticRenderer, Scene, vtkHapticScene);
@@ -58,6 +61,23 @@ void vtkHapticRenderer::SetFingerPath(const proxima::FingerPath& path)
   this->Modified();
 }
 
+bool vtkHapticRenderer::SetServoRate(double rate)
+{
+  const std::string error = proxima::servoRateError(rate);
+  if (!error.empty())
+  {
+    vtkErrorMacro("SetServoRate refused: " << error << "; the rate stays " << this->ServoRate
+                                           << " Hz.");
+    return false;
+  }
+  if (this->ServoRate != rate)
+  {
+    this->ServoRate = rate;
+    this->Modified();
+  }
+  return true;
+}
+
 void vtkHapticRenderer::SetProxyStart(double x, double y, double z)
 {
   m_proxyStart = {x, y, z};
@@ -76,7 +96,9 @@ bool vtkHapticRenderer::Publish(std::shared_ptr<const proxima::CollisionScene> s
   parameters.maxIterations = this->MaxIterations;
   parameters.skin = this->Skin;
   parameters.stiffness = this->Stiffness;
-  parameters.timeStep = 1.0 / (this->ProxyRate > 0.0 ? this->ProxyRate : this->ServoRate);
+  // The proxy loop's rate as the running runtime has it: ServoRate and ProxyRate may have been
+  // set again since Start.
+  parameters.timeStep = 1.0 / m_proxyLoopRate;
   m_publishedVersion = m_runtime->publishScene(std::move(scene), parameters, m_proxyStart);
   return true;
 }
@@ -113,8 +135,18 @@ bool vtkHapticRenderer::Start()
   settings.duration = this->Duration;
   settings.tickBudget =
     proxima::TickWorkBudget{this->TickBudgetSeconds, this->TickBudgetIterations};
+  m_proxyLoopRate = settings.proxyRate > 0.0 ? settings.proxyRate : settings.servoRate;
   m_runtime.reset();
-  m_runtime = std::make_unique<proxima::ThreadedRuntime>(*m_device, servo, settings);
+  try
+  {
+    m_runtime = std::make_unique<proxima::ThreadedRuntime>(*m_device, servo, settings);
+  }
+  catch (const std::invalid_argument& error)
+  {
+    // SetServoRate keeps the rate valid; this is the runtime's own check, should that change.
+    m_startMessage = error.what();
+    return false;
+  }
   // A restart publishes the newest snapshot again: a new runtime starts without a scene.
   this->Publish(m_current);
   return m_runtime->start(m_startMessage);

@@ -83,9 +83,16 @@ public:
   ///@}
 
   ///@{
-  /// Servo rate in Hz (default 4000, 1 to 10000) and proxy-update rate (default 0: the servo's).
-  vtkSetClampMacro(ServoRate, double, 1.0, 10000.0);
+  /// Servo rate in Hz (default 4000), from 1000 to 10000 (Runtime/ServoRate.h, the runtime's one
+  /// rule). Unlike VTK's clamped properties, a rate outside is refused: SetServoRate reports an
+  /// error, keeps the rate it had and returns false, so that the loops and the proxy's time step
+  /// (derived from the rate at each published scene) never disagree.
+  bool SetServoRate(double rate);
   vtkGetMacro(ServoRate, double);
+  ///@}
+
+  ///@{
+  /// Proxy-update rate in Hz (default 0: the servo's).
   vtkSetClampMacro(ProxyRate, double, 0.0, 10000.0);
   vtkGetMacro(ProxyRate, double);
   ///@}
@@ -159,6 +166,9 @@ private:
   std::unique_ptr<proxima::ThreadedRuntime> m_runtime;
   /// The newest snapshot (published, or waiting for Start).
   std::shared_ptr<const proxima::CollisionScene> m_current;
+  /// The rate of the running proxy loop (ProxyRate, or ServoRate when 0) as of Start: the time
+  /// step of every scene published to this runtime.
+  double m_proxyLoopRate = 4000.0;
   std::uint64_t m_sceneVersionSeen = 0;
   std::uint64_t m_publishedVersion = 0;
   bool m_proxyStartSet = false;

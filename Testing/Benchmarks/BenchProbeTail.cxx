@@ -265,7 +265,7 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius,
   BudgetResidualProbe residualProbe(scene, parameters);
   RunSummary summary;
   Vec3 tickStart = solver.proxy();
-  runLockstep(settings, solver, device, ServoParameters{}, [&](const TickRecord& record) {
+  runLockstep(settings, solver, device, ServoParameters{}, [&](const HapticState& record) {
     summary.add(record);
     if (record.budgetLimited)
     {
@@ -274,7 +274,7 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius,
     tickStart = record.proxy;
     const auto ns = static_cast<double>(record.solveNanoseconds);
     ticks.solveAll.push_back(ns);
-    if (record.contacts > 0)
+    if (record.numContacts > 0)
     {
       ticks.solveContact.push_back(ns);
     }

@@ -114,8 +114,8 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
 
   oracle::InvariantStats& stats = checker.stats();
   Vec3 previousForce;
-  runLockstep(lockstep, solver, device, c.servo, [&](const TickRecord& record) {
-    checker.check(record.tick, record.finger, record.proxy, record.iterations, record.contacts,
+  runLockstep(lockstep, solver, device, c.servo, [&](const HapticState& record) {
+    checker.check(record.tick, record.finger, record.proxy, record.iterations, record.numContacts,
                   record.fingerRefused, record.hitIterationCap, record.contactOverflow,
                   record.budgetLimited);
     // (e) Force: kp (proxy - finger) clamped to the device limit, or the last force held.
@@ -204,19 +204,19 @@ void expectInvariants(const std::string& name, const ScriptedOutcome& outcome)
   EXPECT_EQ(s.overflowTicks, 0u) << name << ": contact buffers overflowed";
 }
 
-std::string goldenCsv(const std::vector<TickRecord>& trace)
+std::string goldenCsv(const std::vector<HapticState>& trace)
 {
   std::string text =
     "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
     "contacts,iterations\n";
   char line[512];
-  for (const TickRecord& r : trace)
+  for (const HapticState& r : trace)
   {
     std::snprintf(line, sizeof line,
                   "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n",
                   static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y,
                   r.finger.z, r.proxy.x, r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z,
-                  r.contacts, r.iterations);
+                  r.numContacts, r.iterations);
     text += line;
   }
   return text;
@@ -224,7 +224,7 @@ std::string goldenCsv(const std::vector<TickRecord>& trace)
 
 // Regenerate with: PROXIMA_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden (then review the
 // diff of Testing/ScriptedPaths/Golden/ before committing: a golden trace changes only on purpose).
-void expectMatchesGolden(const std::string& name, const std::vector<TickRecord>& trace)
+void expectMatchesGolden(const std::string& name, const std::vector<HapticState>& trace)
 {
   const std::string path = goldenPath(name);
   const std::string actual = goldenCsv(trace);

@@ -4,8 +4,9 @@
 
 #include "ProxyOracle.h"
 #include "Runtime/FingerPath.h"
+#include "Runtime/HapticState.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/ServoTick.h"
+#include "Runtime/ServoParameters.h"
 
 #include <cstdint>
 #include <map>
@@ -42,7 +43,7 @@ struct ScriptedCase
 struct ScriptedOutcome
 {
   oracle::InvariantStats stats;
-  std::vector<TickRecord> trace;
+  std::vector<HapticState> trace;
   Vec3 start;
   double skin = 0.0;
   double seconds = 0.0;
@@ -57,10 +58,10 @@ void expectInvariants(const std::string& name, const ScriptedOutcome& outcome);
 
 /// The golden trace format: tick,t,finger xyz,proxy xyz,force xyz,contacts,iterations (solve_ns
 /// left out: it is the one field that is not deterministic).
-std::string goldenCsv(const std::vector<TickRecord>& trace);
+std::string goldenCsv(const std::vector<HapticState>& trace);
 
 /// Compares `trace` with Golden/<name>.csv in the source tree within 1e-12 relative, or rewrites
 /// that file when the environment variable PROXIMA_UPDATE_GOLDEN is 1.
-void expectMatchesGolden(const std::string& name, const std::vector<TickRecord>& trace);
+void expectMatchesGolden(const std::string& name, const std::vector<HapticState>& trace);
 
 } // namespace proxima::scripted

@@ -47,7 +47,7 @@ public:
   }
 
   /// Runs the press-stroke ticks through `device` in lockstep and returns the records.
-  std::vector<TickRecord> run(HapticDevice& device, const FingerPath& path)
+  std::vector<HapticState> run(HapticDevice& device, const FingerPath& path)
   {
     ProxyParameters parameters;
     parameters.radius = kTestRadius;
@@ -63,9 +63,9 @@ public:
     ServoParameters servo;
     servo.stiffness = kTestStiffness;
     servo.maxForce = 5.0;
-    std::vector<TickRecord> records;
+    std::vector<HapticState> records;
     runLockstep(settings, solver, device, servo,
-                [&](const TickRecord& record) { records.push_back(record); });
+                [&](const HapticState& record) { records.push_back(record); });
     return records;
   }
 
@@ -94,12 +94,12 @@ private:
   std::function<void(double)> m_before;
 };
 
-inline std::size_t contactTicks(const std::vector<TickRecord>& records)
+inline std::size_t contactTicks(const std::vector<HapticState>& records)
 {
   std::size_t count = 0;
-  for (const TickRecord& record : records)
+  for (const HapticState& record : records)
   {
-    count += record.contacts > 0 ? 1 : 0;
+    count += record.numContacts > 0 ? 1 : 0;
   }
   return count;
 }
@@ -111,8 +111,8 @@ constexpr std::size_t kUnplugTick = 150;
 /// was to zero over the servo's fade time without ever growing, and nothing is NaN.
 /// A SpaceMouse run against the same path through the simulated device: the same ticks, with
 /// the finger within half a count (1e-5 m scale) on each axis and the force within kp times that.
-inline void expectFollowsReference(const std::vector<TickRecord>& trace,
-                                   const std::vector<TickRecord>& reference)
+inline void expectFollowsReference(const std::vector<HapticState>& trace,
+                                   const std::vector<HapticState>& reference)
 {
   ASSERT_EQ(trace.size(), reference.size());
   EXPECT_GT(contactTicks(trace), 100u);
@@ -123,17 +123,17 @@ inline void expectFollowsReference(const std::vector<TickRecord>& trace,
   }
 }
 
-inline void expectFadeOut(const std::vector<TickRecord>& records, std::size_t lostTick)
+inline void expectFadeOut(const std::vector<HapticState>& records, std::size_t lostTick)
 {
   ASSERT_GT(records.size(), lostTick + 80);
-  ASSERT_GT(records[lostTick - 1].contacts, 0) << "the unplug should come in contact";
+  ASSERT_GT(records[lostTick - 1].numContacts, 0) << "the unplug should come in contact";
   const double before = norm(records[lostTick - 1].force);
   ASSERT_GT(before, 0.1);
   const double fadeTicks = ServoParameters{}.fadeTime * kTestRate;
   double previous = before;
   for (std::size_t i = lostTick; i < records.size(); ++i)
   {
-    const TickRecord& record = records[i];
+    const HapticState& record = records[i];
     EXPECT_TRUE(record.deviceLost) << i;
     EXPECT_TRUE(isFinite(record.force)) << i;
     const double magnitude = norm(record.force);

@@ -26,7 +26,7 @@ std::string scratchFile(const std::string& name)
     .string();
 }
 
-void expectSameTrace(const std::vector<TickRecord>& a, const std::vector<TickRecord>& b)
+void expectSameTrace(const std::vector<HapticState>& a, const std::vector<HapticState>& b)
 {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -35,7 +35,7 @@ void expectSameTrace(const std::vector<TickRecord>& a, const std::vector<TickRec
     EXPECT_EQ(a[i].finger, b[i].finger) << i;
     EXPECT_EQ(a[i].proxy, b[i].proxy) << i;
     EXPECT_EQ(a[i].force, b[i].force) << i;
-    EXPECT_EQ(a[i].contacts, b[i].contacts) << i;
+    EXPECT_EQ(a[i].numContacts, b[i].numContacts) << i;
     EXPECT_EQ(a[i].iterations, b[i].iterations) << i;
     EXPECT_EQ(a[i].fingerRefused, b[i].fingerRefused) << i;
   }
@@ -47,7 +47,7 @@ TEST(ReplayDevice, ReplayedRunHasTheRecordedTrace)
   const FingerPath path = pressStrokePath();
   SimulatedDevice simulated(path);
   RecordingDevice recording(simulated, 400);
-  const std::vector<TickRecord> recorded = scene.run(recording, path);
+  const std::vector<HapticState> recorded = scene.run(recording, path);
   ASSERT_GT(contactTicks(recorded), 50u);
 
   const std::string file = scratchFile("replay.csv");

@@ -18,7 +18,7 @@ namespace
 {
 struct LockstepRun
 {
-  std::vector<TickRecord> records;
+  std::vector<HapticState> records;
   Vec3 lastForce;
 };
 
@@ -39,7 +39,7 @@ LockstepRun runOnce(const CollisionScene& scene, const FingerPath& path, double 
   settings.numTicks = ticksCovering(path.startTime(), path.endTime(), rate);
   LockstepRun run;
   runLockstep(settings, *solver, device, servo,
-              [&](const TickRecord& record) { run.records.push_back(record); });
+              [&](const HapticState& record) { run.records.push_back(record); });
   run.lastForce = device.lastForce();
   return run;
 }
@@ -79,15 +79,15 @@ TEST_F(LockstepTest, SameInputSameTraceBitForBit)
     std::size_t contacts = 0;
     for (std::size_t i = 0; i < a.records.size(); ++i)
     {
-      const TickRecord& x = a.records[i];
-      const TickRecord& y = b.records[i];
-      contacts += x.contacts > 0 ? 1 : 0;
+      const HapticState& x = a.records[i];
+      const HapticState& y = b.records[i];
+      contacts += x.numContacts > 0 ? 1 : 0;
       ASSERT_EQ(x.tick, y.tick) << kind << " tick " << i;
       ASSERT_TRUE(sameBits(x.time, y.time)) << kind << " tick " << i;
       ASSERT_TRUE(sameBits(x.finger, y.finger)) << kind << " tick " << i;
       ASSERT_TRUE(sameBits(x.proxy, y.proxy)) << kind << " tick " << i;
       ASSERT_TRUE(sameBits(x.force, y.force)) << kind << " tick " << i;
-      ASSERT_EQ(x.contacts, y.contacts) << kind << " tick " << i;
+      ASSERT_EQ(x.numContacts, y.numContacts) << kind << " tick " << i;
       ASSERT_EQ(x.iterations, y.iterations) << kind << " tick " << i;
       ASSERT_EQ(x.fingerRefused, y.fingerRefused) << kind << " tick " << i;
       ASSERT_EQ(x.hitIterationCap, y.hitIterationCap) << kind << " tick " << i;
@@ -115,9 +115,9 @@ TEST_F(LockstepTest, VirtualClockAndTickOrder)
     solver->setScene(&scene, parameters);
     solver->resetProxy({-0.1, 0, 0.1});
     SimulatedDevice device(path);
-    std::vector<TickRecord> records;
+    std::vector<HapticState> records;
     runLockstep(settings, *solver, device, ServoParameters{},
-                [&](const TickRecord& r) { records.push_back(r); });
+                [&](const HapticState& r) { records.push_back(r); });
     ASSERT_EQ(records.size(), 777u);
     for (std::size_t k = 0; k < records.size(); ++k)
     {
@@ -136,7 +136,7 @@ TEST_F(LockstepTest, ZeroTicksCallsNothing)
   solver->setScene(&scene, ProxyParameters{});
   SimulatedDevice device(makeSlidePath({0, 0, 1}, {0, 0, 2}, 1.0, 1000.0));
   int calls = 0;
-  runLockstep(settings, *solver, device, ServoParameters{}, [&](const TickRecord&) { ++calls; });
+  runLockstep(settings, *solver, device, ServoParameters{}, [&](const HapticState&) { ++calls; });
   EXPECT_EQ(calls, 0);
 }
 

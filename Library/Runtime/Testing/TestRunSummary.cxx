@@ -17,7 +17,7 @@ RunSummary summaryOf(std::initializer_list<bool> limited)
   std::uint64_t tick = 0;
   for (const bool budgetLimited : limited)
   {
-    TickRecord record;
+    HapticState record;
     record.tick = tick++;
     record.budgetLimited = budgetLimited;
     summary.add(record);

@@ -26,15 +26,31 @@ ServoParameters testParameters()
   return parameters;
 }
 
-// A finger 2 mm under a proxy at the origin: a spring force of 2 N up.
-ServoForceInput pressing(std::uint64_t tick)
+// What the force stage is given at one tick: the tick's input, and the proxy half of the state.
+struct ForceTick
 {
-  ServoForceInput input;
-  input.sample.position = {0.0, 0.0, -0.002};
-  input.proxy = {0.0, 0.0, 0.0};
-  input.time = static_cast<double>(tick) * kPeriod;
-  input.sceneVersion = 1;
-  return input;
+  TickInput input;
+  HapticState proxy;
+};
+
+// A finger 2 mm under a proxy at the origin: a spring force of 2 N up.
+ForceTick pressing(std::uint64_t tick)
+{
+  ForceTick given;
+  given.input.tick = tick;
+  given.input.time = static_cast<double>(tick) * kPeriod;
+  given.input.sample.position = {0.0, 0.0, -0.002};
+  given.proxy.proxy = {0.0, 0.0, 0.0};
+  given.proxy.sceneVersion = 1;
+  return given;
+}
+
+// The state the stage leaves.
+HapticState step(ServoForce& stage, const ForceTick& given)
+{
+  HapticState state = given.proxy;
+  stage.step(given.input, state);
+  return state;
 }
 
 TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
@@ -43,16 +59,16 @@ TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
   limits.maxForce = 1.5;
   ServoForce stage(testParameters(), limits);
   EXPECT_EQ(stage.maxForce(), 1.5);
-  const ServoForceOutput output = stage.step(pressing(0));
-  EXPECT_TRUE(output.clamped);
+  const HapticState output = step(stage, pressing(0));
+  EXPECT_TRUE(output.forceClamped);
   EXPECT_NEAR(output.force.z, 1.5, 1e-15);
   EXPECT_EQ(output.force.x, 0.0);
 
   ServoForce unclamped(testParameters());
-  ServoForceInput input = pressing(0);
-  input.stiffnessScale = 0.5;
-  const ServoForceOutput spring = unclamped.step(input);
-  EXPECT_FALSE(spring.clamped);
+  ForceTick input = pressing(0);
+  input.proxy.stiffnessScale = 0.5;
+  const HapticState spring = step(unclamped, input);
+  EXPECT_FALSE(spring.forceClamped);
   EXPECT_NEAR(spring.force.z, 1000.0 * 0.5 * 0.002, 1e-15);
 }
 
@@ -62,7 +78,7 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
   std::uint64_t tick = 0;
   for (; tick < 5; ++tick)
   {
-    const ServoForceOutput output = stage.step(pressing(tick));
+    const HapticState output = step(stage, pressing(tick));
     EXPECT_NEAR(output.force.z, 2.0, 1e-15);
     EXPECT_FALSE(output.fading);
   }
@@ -71,11 +87,11 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
   int fadingTicks = 0;
   for (int stalled = 0; stalled < 30; ++stalled, ++tick)
   {
-    ServoForceInput input = pressing(tick);
-    input.proxyAge = 0.006 + stalled * kPeriod;
+    ForceTick input = pressing(tick);
+    input.proxy.proxyAge = 0.006 + stalled * kPeriod;
     // The finger moves on while the proxy is stuck: the fade must not follow the stale spring.
-    input.sample.position.z = -0.002 - 0.001 * stalled;
-    const ServoForceOutput output = stage.step(input);
+    input.input.sample.position.z = -0.002 - 0.001 * stalled;
+    const HapticState output = step(stage, input);
     EXPECT_TRUE(output.proxyStale);
     EXPECT_TRUE(output.fading);
     // Ten ticks of 1 ms over a 10 ms fade: 2 N less 0.2 N a tick, from the force at the fault.
@@ -90,7 +106,7 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
   // Fresh states again: the spring comes back over the fade time, not at once.
   for (int fresh = 0; fresh < 12; ++fresh, ++tick)
   {
-    const ServoForceOutput output = stage.step(pressing(tick));
+    const HapticState output = step(stage, pressing(tick));
     const double gain = std::min(1.0, (fresh + 1) * 0.1);
     EXPECT_NEAR(output.force.z, 2.0 * gain, 1e-12) << "fresh tick " << fresh;
     EXPECT_EQ(output.fading, gain < 1.0 - 1e-12) << "fresh tick " << fresh;
@@ -100,19 +116,19 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
 TEST(ServoForce, LostDeviceFadesAndIsReported)
 {
   ServoForce stage(testParameters());
-  stage.step(pressing(0));
-  ServoForceInput input = pressing(1);
-  input.sample.connected = false;
-  input.sample.valid = false;
-  input.proxyRefused = true;
-  const ServoForceOutput output = stage.step(input);
+  step(stage, pressing(0));
+  ForceTick input = pressing(1);
+  input.input.sample.connected = false;
+  input.input.sample.valid = false;
+  input.proxy.fingerRefused = true;
+  const HapticState output = step(stage, input);
   EXPECT_TRUE(output.deviceLost);
   EXPECT_TRUE(output.fading);
   EXPECT_NEAR(output.force.z, 1.8, 1e-12);
   for (std::uint64_t tick = 2; tick < 20; ++tick)
   {
-    input.time = static_cast<double>(tick) * kPeriod;
-    EXPECT_TRUE(std::isfinite(stage.step(input).force.z));
+    input.input.time = static_cast<double>(tick) * kPeriod;
+    EXPECT_TRUE(std::isfinite(step(stage, input).force.z));
   }
   EXPECT_EQ(stage.lastForce(), Vec3{});
 }
@@ -120,11 +136,11 @@ TEST(ServoForce, LostDeviceFadesAndIsReported)
 TEST(ServoForce, UnusableSampleHoldsTheLastForce)
 {
   ServoForce stage(testParameters());
-  stage.step(pressing(0));
-  ServoForceInput input = pressing(1);
-  input.sample.valid = false;
-  input.sample.position = {std::nan(""), 0.0, 0.0};
-  const ServoForceOutput output = stage.step(input);
+  step(stage, pressing(0));
+  ForceTick input = pressing(1);
+  input.input.sample.valid = false;
+  input.input.sample.position = {std::nan(""), 0.0, 0.0};
+  const HapticState output = step(stage, input);
   EXPECT_FALSE(output.fading);
   EXPECT_NEAR(output.force.z, 2.0, 1e-15);
 }
@@ -134,16 +150,16 @@ TEST(ServoForce, AHeldClampedForceIsTheSameToTheLastBit)
   // This finger's clamped force has the magnitude 10.000000000000002 N: clamping it again while
   // it is held moved it in its last bit (found by the stress suite's NaN fingers).
   ServoForce stage(testParameters());
-  ServoForceInput input = pressing(0);
-  input.sample.position = {0.010392003859619449, 0.012572030410805402, -0.04344711407601869};
-  const ServoForceOutput clamped = stage.step(input);
-  EXPECT_TRUE(clamped.clamped);
+  ForceTick input = pressing(0);
+  input.input.sample.position = {0.010392003859619449, 0.012572030410805402, -0.04344711407601869};
+  const HapticState clamped = step(stage, input);
+  EXPECT_TRUE(clamped.forceClamped);
   for (std::uint64_t tick = 1; tick <= 20; ++tick)
   {
-    ServoForceInput refused = pressing(tick);
-    refused.sample.valid = false;
-    refused.sample.position = {std::nan(""), 0.0, 0.0};
-    const ServoForceOutput held = stage.step(refused);
+    ForceTick refused = pressing(tick);
+    refused.input.sample.valid = false;
+    refused.input.sample.position = {std::nan(""), 0.0, 0.0};
+    const HapticState held = step(stage, refused);
     EXPECT_EQ(held.force, clamped.force) << "tick " << tick;
   }
 }
@@ -151,23 +167,23 @@ TEST(ServoForce, AHeldClampedForceIsTheSameToTheLastBit)
 TEST(ServoForce, SceneChangeLimitsTheForceRateForTheWindow)
 {
   ServoForce stage(testParameters());
-  ServoForceInput input = pressing(0);
-  input.sample.position.z = 0.0; // no force yet
-  EXPECT_EQ(stage.step(input).force, Vec3{});
+  ForceTick input = pressing(0);
+  input.input.sample.position.z = 0.0; // no force yet
+  EXPECT_EQ(step(stage, input).force, Vec3{});
   // The first scene version is not a change; a jump to 2 N on the same scene goes through.
-  EXPECT_NEAR(stage.step(pressing(1)).force.z, 2.0, 1e-15);
+  EXPECT_NEAR(step(stage, pressing(1)).force.z, 2.0, 1e-15);
   // A new scene puts the proxy elsewhere: the spring asks for 8 N at once, the stage allows
   // 100 N/s, 0.1 N a tick, for 20 ms.
   std::uint64_t tick = 2;
   double expected = 2.0;
   for (; tick < 40; ++tick)
   {
-    ServoForceInput changed = pressing(tick);
-    changed.sceneVersion = 2;
-    changed.proxy = {0.0, 0.0, 0.006};
-    const ServoForceOutput output = stage.step(changed);
+    ForceTick changed = pressing(tick);
+    changed.proxy.sceneVersion = 2;
+    changed.proxy.proxy = {0.0, 0.0, 0.006};
+    const HapticState output = step(stage, changed);
     // The window runs from the change (t = 2 ms) for 20 ms: ticks 2..21 are limited.
-    if (changed.time < 0.002 + 0.02)
+    if (changed.input.time < 0.002 + 0.02)
     {
       expected = std::min(8.0, expected + 0.1);
       EXPECT_TRUE(output.rateLimited) << "tick " << tick;

@@ -12,9 +12,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 namespace proxima
@@ -95,7 +97,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   ASSERT_GT(ticks, 500u);
 
   // Lockstep on a virtual clock.
-  std::vector<TickRecord> lockstep;
+  std::vector<HapticState> lockstep;
   {
     ProxySolver solver;
     solver.setScene(scene.get(), proxyParameters());
@@ -105,7 +107,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
     settings.rate = kRate;
     settings.numTicks = ticks;
     runLockstep(settings, solver, device, servoParameters(),
-                [&](const TickRecord& record) { lockstep.push_back(record); });
+                [&](const HapticState& record) { lockstep.push_back(record); });
   }
 
   // The same path played in real time through both threads.
@@ -122,7 +124,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   ASSERT_TRUE(runtime.start(message)) << message;
   ASSERT_TRUE(waitFor([&] { return runtime.finished(); }, 60s));
   runtime.stop();
-  const std::vector<TickRecord> threaded = runtime.records();
+  const std::vector<HapticState> threaded = runtime.records();
   ASSERT_FALSE(threaded.empty());
 
   // Each proxy update took the servo's newest sample; the records name the sample's tick. Until
@@ -136,9 +138,9 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   std::uint64_t contactTicks = 0;
   for (std::size_t i = 0; i < threaded.size(); ++i)
   {
-    const TickRecord& a = threaded[i];
+    const HapticState& a = threaded[i];
     ASSERT_LT(a.tick, lockstep.size());
-    const TickRecord& b = lockstep[a.tick];
+    const HapticState& b = lockstep[a.tick];
     if (i > 0)
     {
       ASSERT_GT(a.tick, threaded[i - 1].tick);
@@ -146,7 +148,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
     }
     ASSERT_EQ(a.time, b.time) << "tick " << a.tick;
     ASSERT_TRUE(sameBits(a.finger, b.finger)) << "tick " << a.tick;
-    ASSERT_EQ(a.contacts > 0, b.contacts > 0) << "tick " << a.tick;
+    ASSERT_EQ(a.numContacts > 0, b.numContacts > 0) << "tick " << a.tick;
     if (!skipped)
     {
       ASSERT_TRUE(sameBits(a.proxy, b.proxy)) << "tick " << a.tick;
@@ -159,7 +161,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
       ASSERT_LT(distance(a.proxy, b.proxy), 1e-9) << "tick " << a.tick;
       ASSERT_LT(distance(a.force, b.force), 800.0 * 1e-9) << "tick " << a.tick;
     }
-    contactTicks += a.contacts > 0 ? 1 : 0;
+    contactTicks += a.numContacts > 0 ? 1 : 0;
   }
   RecordProperty("ticks", static_cast<int>(ticks));
   RecordProperty("ticks_compared", static_cast<int>(threaded.size()));
@@ -320,13 +322,32 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   RecordProperty("skull", haveSkull ? 1 : 0);
 }
 
+TEST(ThreadedRuntime, RefusesAServoRateOutsideTheRuleAtConstruction)
+{
+  // Refused, not clamped: a clamped rate ran the loops at one rate while the proxy's time step
+  // came from another.
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 0.0});
+  SimulatedDevice device(path);
+  for (const double rate : {20000.0, 999.0, 0.0, -4000.0, std::nan("")})
+  {
+    RuntimeSettings settings;
+    settings.servoRate = rate;
+    EXPECT_THROW(ThreadedRuntime(device, ServoParameters{}, settings), std::invalid_argument)
+      << rate;
+  }
+  RuntimeSettings floor;
+  floor.servoRate = 1000.0;
+  EXPECT_NO_THROW(ThreadedRuntime(device, ServoParameters{}, floor));
+}
+
 TEST(ThreadedRuntime, StartMessageNamesTheRatesAndTheSchedulingOutcome)
 {
   FingerPath path;
   path.append(0.0, {0.0, 0.0, 0.0});
   SimulatedDevice device(path);
   RuntimeSettings settings;
-  settings.servoRate = 20000.0; // above the 10 kHz ceiling: clamped
+  settings.servoRate = 10000.0; // the ceiling (ServoRate.h): a rate above it is refused
   settings.realtimeScheduling = true;
   settings.duration = 0.02;
   ThreadedRuntime runtime(device, ServoParameters{}, settings);

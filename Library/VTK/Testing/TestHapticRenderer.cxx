@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <sstream>
 #include <thread>
@@ -93,6 +94,24 @@ TEST(HapticRenderer, RefusesToStartWithoutADeviceOrAScene)
 
 namespace
 {
+TEST(HapticRenderer, AServoRateOutsideTheRuleIsRefusedNotClamped)
+{
+  // Runtime/ServoRate.h: 1 to 10 kHz. A refused rate leaves the one before it, so the loops and
+  // the proxy's time step never disagree.
+  vtkNew<vtkHapticRenderer> renderer;
+  renderer->GlobalWarningDisplayOff();
+  for (const double rate : {500.0, 1.0, 0.0, 20000.0, std::nan("")})
+  {
+    EXPECT_FALSE(renderer->SetServoRate(rate)) << rate;
+    EXPECT_EQ(renderer->GetServoRate(), 4000.0) << rate;
+  }
+  renderer->GlobalWarningDisplayOn();
+  EXPECT_TRUE(renderer->SetServoRate(1000.0));
+  EXPECT_EQ(renderer->GetServoRate(), 1000.0);
+  EXPECT_TRUE(renderer->SetServoRate(10000.0));
+  EXPECT_EQ(renderer->GetServoRate(), 10000.0);
+}
+
 TEST(HapticRenderer, PrintSelfStatesTheDocumentedDefaults)
 {
   vtkNew<vtkHapticRenderer> renderer;

@@ -1,7 +1,7 @@
-// runServoTick: force on the finger = kp (proxy - finger), clamped to the device limit; a finger
+// hapticStep: force on the finger = kp (proxy - finger), clamped to the device limit; a finger
 // sample that is invalid or not finite is refused, the proxy held and the last force held
 // (DESIGN.md section 6: never NaN into a force).
-#include "Runtime/ServoTick.h"
+#include "Runtime/HapticStep.h"
 
 #include "Runtime/ServoForce.h"
 
@@ -39,10 +39,10 @@ public:
   }
 };
 
-class ServoTickTest : public testing::Test
+class HapticStepTest : public testing::Test
 {
 protected:
-  ServoTickTest()
+  HapticStepTest()
   {
     TriangleMesh mesh;
     MeshError error;
@@ -59,7 +59,7 @@ protected:
   FakeDevice device;
 };
 
-TEST(ServoTickStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
+TEST(HapticStepStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
 {
   // A grid with texture coordinates u = x / 0.2 + 1/2 and a stiffness map of 1 left of u = 1/2,
   // 0.5 right of it: pressing 3 mm under the proxy's plane gives kp * 3 mm on the left, half that
@@ -98,24 +98,24 @@ TEST(ServoTickStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
     FakeDevice device;
     ServoForce stage(servo);
     device.next = DeviceSample{{x, 0.0, 0.005}, true};
-    const TickRecord free = runServoTick(0, 0.0, solver, device, stage);
+    const HapticState free = hapticStep(0, 0.0, solver, device, stage);
     EXPECT_EQ(norm(free.force), 0.0);
     device.next = DeviceSample{{x, 0.0, -0.002}, true};
-    const TickRecord pressed = runServoTick(1, 0.001, solver, device, stage);
+    const HapticState pressed = hapticStep(1, 0.001, solver, device, stage);
     const double scale = x < 0.0 ? 1.0 : 0.5;
     EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x; // the skin: 1e-12 m
     EXPECT_NEAR(pressed.force.x, 0.0, 1e-12);
   }
 }
 
-TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
+TEST_F(HapticStepTest, ForceIsStiffnessTimesProxyMinusFinger)
 {
   ServoParameters servo;
   servo.stiffness = 750.0;
   servo.maxForce = 100.0;
   ServoForce stage(servo);
   device.next = DeviceSample{{0.002, -0.001, -0.004}, true};
-  const TickRecord r = runServoTick(7, 0.25, *solver, device, stage);
+  const HapticState r = hapticStep(7, 0.25, *solver, device, stage);
   EXPECT_EQ(r.tick, 7u);
   EXPECT_EQ(r.time, 0.25);
   EXPECT_EQ(r.finger, device.next.position);
@@ -128,7 +128,7 @@ TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
   EXPECT_GT(r.force.z, 0.0); // pushes the finger out of the floor
   EXPECT_FALSE(r.forceClamped);
   EXPECT_FALSE(r.fingerRefused);
-  EXPECT_EQ(r.contacts, 1);
+  EXPECT_EQ(r.numContacts, 1);
   EXPECT_GE(r.iterations, 1);
   EXPECT_GE(r.solveNanoseconds, 0);
   // The device got that force at that time, and the stage keeps it as its last force.
@@ -139,26 +139,26 @@ TEST_F(ServoTickTest, ForceIsStiffnessTimesProxyMinusFinger)
   EXPECT_EQ(stage.lastForce(), r.force);
 }
 
-TEST_F(ServoTickTest, FreeFingerGivesZeroForce)
+TEST_F(HapticStepTest, FreeFingerGivesZeroForce)
 {
   ServoParameters servo;
   ServoForce stage(servo);
   device.next = DeviceSample{{0.01, 0.02, 0.03}, true};
-  const TickRecord r = runServoTick(0, 0.0, *solver, device, stage);
+  const HapticState r = hapticStep(0, 0.0, *solver, device, stage);
   EXPECT_EQ(r.proxy, r.finger);
   EXPECT_EQ(r.force, Vec3{});
-  EXPECT_EQ(r.contacts, 0);
+  EXPECT_EQ(r.numContacts, 0);
   EXPECT_EQ(stage.lastForce(), Vec3{});
 }
 
-TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
+TEST_F(HapticStepTest, ClampedToTheDeviceLimitKeepingDirection)
 {
   ServoParameters servo;
   servo.stiffness = 5000.0;
   servo.maxForce = 3.0;
   ServoForce stage(servo);
   device.next = DeviceSample{{0.003, 0.0, -0.02}, true};
-  const TickRecord r = runServoTick(0, 0.0, *solver, device, stage);
+  const HapticState r = hapticStep(0, 0.0, *solver, device, stage);
   const Vec3 spring = (r.proxy - r.finger) * servo.stiffness;
   ASSERT_GT(norm(spring), servo.maxForce);
   EXPECT_TRUE(r.forceClamped);
@@ -167,12 +167,12 @@ TEST_F(ServoTickTest, ClampedToTheDeviceLimitKeepingDirection)
   EXPECT_EQ(device.forces.back(), r.force);
 }
 
-TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
+TEST_F(HapticStepTest, NonFiniteFingerIsRefusedAndTheForceHeld)
 {
   ServoParameters servo;
   ServoForce stage(servo);
   device.next = DeviceSample{{0.0, 0.0, -0.003}, true};
-  const TickRecord pressed = runServoTick(0, 0.0, *solver, device, stage);
+  const HapticState pressed = hapticStep(0, 0.0, *solver, device, stage);
   const Vec3 proxy = solver->proxy();
   ASSERT_NE(pressed.force, Vec3{});
   const double inf = std::numeric_limits<double>::infinity();
@@ -181,7 +181,7 @@ TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
   for (const Vec3& bad : {Vec3{nan, 0, 0}, Vec3{0, inf, 0}, Vec3{0, 0, -inf}, Vec3{nan, nan, nan}})
   {
     device.next = DeviceSample{bad, true};
-    const TickRecord r = runServoTick(tick, tick * 0.001, *solver, device, stage);
+    const HapticState r = hapticStep(tick, tick * 0.001, *solver, device, stage);
     ++tick;
     EXPECT_TRUE(r.fingerRefused);
     EXPECT_EQ(r.force, pressed.force);
@@ -193,13 +193,13 @@ TEST_F(ServoTickTest, NonFiniteFingerIsRefusedAndTheForceHeld)
   }
   // An invalid sample (device read error) is refused the same way, whatever it holds.
   device.next = DeviceSample{{0.0, 0.0, -0.5}, false};
-  const TickRecord invalid = runServoTick(tick, tick * 0.001, *solver, device, stage);
+  const HapticState invalid = hapticStep(tick, tick * 0.001, *solver, device, stage);
   EXPECT_TRUE(invalid.fingerRefused);
   EXPECT_EQ(invalid.force, pressed.force);
   EXPECT_EQ(solver->proxy(), proxy);
   // A good sample again: the spring law resumes.
   device.next = DeviceSample{{0.001, 0.0, -0.003}, true};
-  const TickRecord again = runServoTick(tick + 1, 0.01, *solver, device, stage);
+  const HapticState again = hapticStep(tick + 1, 0.01, *solver, device, stage);
   EXPECT_FALSE(again.fingerRefused);
   const Vec3 expected = (again.proxy - again.finger) * servo.stiffness;
   EXPECT_NEAR(distance(again.force, expected), 0.0, 1e-15 * norm(expected));

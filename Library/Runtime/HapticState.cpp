@@ -1,0 +1,23 @@
+#include "Runtime/HapticState.h"
+
+namespace proxima
+{
+
+std::uint32_t tickFlags(const HapticState& state)
+{
+  std::uint32_t flags = 0;
+  const auto set = [&flags](bool condition, TickFlag flag) { flags |= condition ? flag : 0u; };
+  set(state.budgetLimited, kTickBudgetLimited);
+  set(state.hitIterationCap, kTickIterationCap);
+  set(state.forceClamped, kTickForceClamped);
+  set(state.fading, kTickForceFading);
+  set(state.deviceLost, kTickDeviceLost);
+  set(state.fingerRefused, kTickFingerRefused);
+  set(state.stuck, kTickStuck);
+  set(state.frictionLimited, kTickFrictionLimited);
+  set(state.contactOverflow, kTickContactOverflow);
+  set(state.rateLimited, kTickForceRateLimited);
+  return flags;
+}
+
+} // namespace proxima

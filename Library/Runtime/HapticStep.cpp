@@ -1,0 +1,64 @@
+#include "Runtime/HapticStep.h"
+
+#include <chrono>
+
+namespace proxima
+{
+
+void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
+{
+  state.tick = input.tick;
+  state.time = input.time;
+  state.finger = input.sample.position;
+  const bool usable = input.sample.valid && input.sample.connected;
+  ProxyTickResult result;
+  const auto begin = std::chrono::steady_clock::now();
+  if (usable)
+  {
+    result = solver.update(input.sample.position);
+  }
+  const auto end = std::chrono::steady_clock::now();
+  state.solveNanoseconds =
+    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+  state.proxy = solver.proxy();
+  state.proxyRadius = solver.radius();
+  state.fingerRefused = !usable || result.refusedFinger;
+
+  state.numContacts = result.numContacts < 3 ? result.numContacts : 3;
+  for (int i = 0; i < state.numContacts; ++i)
+  {
+    const ContactPlane& plane = result.contacts[i];
+    ContactSnapshot& contact = state.contacts[i];
+    contact.point = plane.closest.point;
+    contact.normal = plane.normal;
+    contact.object = plane.object;
+    contact.triangle = plane.triangle;
+    contact.staticFriction = plane.staticFriction;
+    contact.dynamicFriction = plane.dynamicFriction;
+  }
+  state.contactObject = result.numContacts > 0 ? static_cast<int>(result.contacts[0].object) : -1;
+  state.iterations = result.iterations;
+  state.trianglesTested = result.queries.trianglesTested;
+  state.stiffnessScale = result.stiffnessScale;
+  state.hitIterationCap = result.hitIterationCap;
+  state.contactOverflow = result.contactOverflow;
+  state.stuck = result.stuck;
+  state.frictionLimited = result.frictionLimited;
+  state.budgetLimited = result.budgetLimited;
+}
+
+HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
+                       ServoForce& servo, std::uint64_t sceneVersion)
+{
+  const TickInput input{tick, time, device.read(time)};
+  HapticState state;
+  stepProxy(solver, input, state);
+  state.sceneVersion = sceneVersion;
+  state.proxyAge = 0.0;
+  stepDynamics(input, state);
+  servo.step(input, state);
+  device.writeForce(state.force, time);
+  return state;
+}
+
+} // namespace proxima

@@ -1,0 +1,38 @@
+// One haptic tick, the step every runner runs: device -> finger -> proxy -> (dynamics) -> force ->
+// device (paper section 8; Documentation/Threading.md). Its input is a TickInput (tick, time,
+// device sample) and its output a HapticState (proxy, contacts, force, flags, timings), both in
+// HapticState.h. The lockstep runner (LockstepRuntime.h) and the VTK layer's lockstep pictures run
+// hapticStep in one thread; the threaded runtime runs its halves on two threads, stepProxy on the
+// proxy thread and ServoForce::step on the servo thread, and hands the HapticState between them.
+// Same steps, so a threaded run and a lockstep run of a path agree.
+#pragma once
+
+#include "Proxy/ProxySolver.h"
+#include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/ServoForce.h"
+
+#include <cstdint>
+
+namespace proxima
+{
+
+/// The proxy half: the solver's update toward the input's finger (paper sections 2-4), timed, or
+/// the proxy held when the sample has no usable finger. Sets the state's tick, time, finger and
+/// proxy fields (not sceneVersion or proxyAge: the caller knows those).
+void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state);
+
+/// The slot of the dynamics step (paper section 6): a scene with bodies will, here, apply the
+/// contact force kp (proxy - finger) to the touched body (J^T f_c, eqs. 23-24) and move the
+/// scene's objects to the bodies' new poses. No scene has bodies yet, and a scene without bodies
+/// runs no dynamics step, so it is empty.
+inline void stepDynamics(const TickInput& /*input*/, HapticState& /*state*/) {}
+
+/// One whole tick in one thread: reads `device` at `time`, runs the proxy step on that sample
+/// (on the scene of version `sceneVersion`), the dynamics step and the force stage on the fresh
+/// proxy (age 0), and writes the force. `servo` keeps the force stage's state (last force, fade)
+/// across ticks.
+HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
+                       ServoForce& servo, std::uint64_t sceneVersion = 0);
+
+} // namespace proxima
