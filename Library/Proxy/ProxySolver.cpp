@@ -1,9 +1,9 @@
 #include "Proxy/ProxySolver.h"
 
+#include "Proxy/ProxyTickState.h"
 #include "Proxy/SurfaceTexture.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -27,57 +27,12 @@ constexpr double kSameNormalCosine = 1.0 - 1e-14;
 // the goal solver's feasibility tolerance and the sweep's touching slope (both 1e-12).
 constexpr double kSameFaceNormalSine = 1e-13;
 
-// The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
-// axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
-constexpr double kMaxCurvatureStretch = 64.0;
-
 // How far a crease's stretched slide may reach, as a fraction of the curved surface's radius.
 constexpr double kCreaseStretchReach = 0.25;
 
 // A stretched slide may cross a plane by this fraction of the finger distance (the goal
 // solver's feasibility tolerance): rounding, not a heading into the plane.
 constexpr double kStretchFeasibility = 1e-12;
-
-// Iterations in a row that bring the proxy no nearer the finger before the tick ends: the paper's
-// loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
-// trading rounding errors between two planes, as 1 km from the origin).
-constexpr int kMaxStalledIterations = 3;
-
-// The work budget of one tick: iterations, and wall time on the steady clock (read only when a
-// time budget is set: a scene without one pays nothing for it).
-class TickBudget
-{
-public:
-  explicit TickBudget(const ProxyParameters& parameters)
-    : m_iterations(parameters.tickBudgetIterations)
-    , m_timed(parameters.tickBudgetSeconds > 0.0)
-  {
-    if (m_timed)
-    {
-      m_deadline = std::chrono::steady_clock::now() +
-                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                     std::chrono::duration<double>(parameters.tickBudgetSeconds));
-    }
-  }
-
-  /// True once `iterations` move stages have used the budget up.
-  bool spent(int iterations) const
-  {
-    if (m_iterations > 0 && iterations >= m_iterations)
-    {
-      return true;
-    }
-    return m_timed && iterations > 0 && std::chrono::steady_clock::now() >= m_deadline;
-  }
-
-private:
-  int m_iterations = 0;
-  bool m_timed = false;
-  std::chrono::steady_clock::time_point m_deadline;
-};
-
-// Update stages in a tick that re-shade the target (see update()).
-constexpr int kMaxShadedIterations = 8;
 
 // Whether the proxy, touching `corners` at `closest` with contact normal `normal`, sits on a curved
 // part of the triangle's configuration-space obstacle: an edge or corner contact off the face's
@@ -842,161 +797,175 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     result.refusedFinger = true;
     return result;
   }
-  const TickBudget budget(m_parameters);
-  const Vec3 finger = withinReach(requestedFinger);
-  // Steps shorter than this are rounding noise of the goal solve, not motion: 1% of the skin.
-  const double stepTolerance = 0.01 * m_skin;
+  ProxyTickState tick(m_parameters, withinReach(requestedFinger), m_proxy, m_skin);
   refreshCache(result.queries);
-  const Vec3 tickStart = m_proxy;
-  GoalSolution solution;
-  Vec3 target = finger; // the shaded subgoal instead, on a shaded surface
-  bool shadingSettled = false;
-  Vec3 previousGoal = m_proxy;
-  bool blockedAtOnce = false;
-  int stalled = 0;
-  // A stretched slide is a Newton step: it must pay off with the move after it, or the tick goes
-  // on with plain slides (a trust region shrunk to the paper's planar steps). A crease's stretch
-  // is capped by a trust region that shrinks eightfold at each stretch that did not pay off:
-  // where the curvature along a crease vanishes the cap is the step, and one bad guess should
-  // not leave the rest of the tick to creep.
-  bool mayStretch = true;
-  double creaseStretchLimit = kMaxCurvatureStretch;
-  bool lastStretchOnCrease = false;
-  double beforeStretch = -1.0;
-  double viscousBudget = -1.0; // set by the tick's first viscous contact
   for (;;)
   {
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
     // head straight for the finger, or every tick would push it a little deeper into the skin.
-    result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    if (m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations)
+    updateStage(tick, result);
+    if (atLocalMinimum(tick))
     {
-      // Shading (and bump texture): each update stage's first pass picks the target that the
-      // second pass, the plain loop with the true planes, seeks. The target is frozen once it
-      // moves by less than the accuracy scale between update stages, or after a few moves:
-      // re-shading after every move can chase a shaded normal that turns as the proxy slides
-      // (near a sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap), while the
-      // plain loop toward a fixed target always settles.
-      const Vec3 shaded = m_proxy + shadedSubgoal(finger - m_proxy);
-      shadingSettled = result.usedShading && distance(shaded, target) <= m_shadingTolerance;
-      target = shaded;
-      result.usedShading = true;
+      break;
     }
-    solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
-    result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
-    if (m_anyFriction)
-    {
-      // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
-      if (insideStaticCone(finger - m_proxy))
-      {
-        result.stuck = result.stuck || result.iterations == 0; // held where the tick began
-        solution.displacement = Vec3{};
-      }
-      else
-      {
-        const double travel = norm(solution.displacement);
-        const double allowed = frictionLimitedTravel(solution, travel, viscousBudget);
-        if (allowed < travel)
-        {
-          result.frictionLimited = true;
-          solution.displacement = solution.displacement * (allowed / travel);
-        }
-      }
-    }
-    if (squaredNorm(solution.displacement) <= stepTolerance * stepTolerance)
-    {
-      break; // a local minimum: no feasible step brings the proxy nearer the finger
-    }
-    // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
-    // surface sends it elsewhere on purpose.
-    const Vec3 step = mayStretch && !result.usedShading && !m_anyFriction
-                        ? curvatureCorrectedStep(solution, target - m_proxy, creaseStretchLimit)
-                        : solution.displacement;
-    const bool stretched = step != solution.displacement;
-    if (stretched)
-    {
-      lastStretchOnCrease = solution.numActive == 2;
-    }
+    const Vec3 step = nextStep(tick);
+    const bool stretched = step != tick.solution.displacement;
     const Vec3 goal = m_proxy + step;
-    if (blockedAtOnce && goal == previousGoal)
+    if (tick.blocked.repeats(goal) || outOfWork(tick, result))
     {
-      break; // the last move was blocked at once and nothing changed: repeating cannot help
-    }
-    if (result.iterations == m_parameters.maxIterations)
-    {
-      result.hitIterationCap = true;
       break;
     }
-    if (budget.spent(result.iterations))
+    const double distanceBefore = moveStage(tick, goal, result);
+    if (reachedTarget(tick, result))
     {
-      result.budgetLimited = true;
       break;
     }
-    // Move stage (2.1): sweep toward the goal and stop at the first contact.
-    ++result.iterations;
-    const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
-    const Vec3 before = m_proxy;
-    const double distanceBefore = norm(target - before);
-    m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
-    if (contact.hit)
-    {
-      followInCache(result.queries);
-    }
-    blockedAtOnce = m_proxy == before;
-    previousGoal = goal;
-    if (viscousBudget > 0.0)
-    {
-      viscousBudget = std::max(0.0, viscousBudget - distance(m_proxy, before));
-    }
-    // Progress is measured toward a fixed target: not while shading still moves it.
-    const bool targetMoving =
-      m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations;
-    if (m_proxy == target && !targetMoving)
-    {
-      solution = GoalSolution{};
-      break;
-    }
-    const double toFinger = norm(target - m_proxy);
     if (stretched)
     {
-      beforeStretch = distanceBefore;
+      tick.stretch.awaitPayoff(tick.solution.numActive, distanceBefore);
       continue;
     }
-    if (beforeStretch >= 0.0 && !(toFinger < beforeStretch - stepTolerance))
+    const double toTarget = norm(tick.shading.target() - m_proxy);
+    tick.stretch.judgePayoff(toTarget, tick.stepTolerance);
+    if (stopsWithoutProgress(tick, toTarget, distanceBefore, result))
     {
-      // The stretched slide and its fall ended no nearer: stop stretching (a crease: stretch less).
-      if (lastStretchOnCrease)
-      {
-        creaseStretchLimit /= 8.0;
-      }
-      else
-      {
-        mayStretch = false;
-      }
-    }
-    beforeStretch = -1.0;
-    if (toFinger < distanceBefore - stepTolerance || targetMoving)
-    {
-      stalled = 0;
-    }
-    else if (++stalled == kMaxStalledIterations)
-    {
-      // No nearer after several moves: rounding traded between planes, not progress. The last
-      // update stage's planes stand for the contact.
-      result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-      solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
       break;
     }
   }
+  finishTick(tick, result);
+  return result;
+}
+
+void ProxySolver::gatherPlanesInto(const Vec3& position, ProxyTickResult& result)
+{
+  result.contactOverflow = !gatherPlanes(position, result.queries) || result.contactOverflow;
+}
+
+void ProxySolver::updateStage(ProxyTickState& tick, ProxyTickResult& result)
+{
+  gatherPlanesInto(m_proxy, result);
+  if (tick.shading.moving(m_anyShaded, result.iterations))
+  {
+    // Shading (and bump texture): the first pass picks the target that the second pass, the
+    // plain loop with the true planes, seeks.
+    tick.shading.reshade(m_proxy + shadedSubgoal(tick.finger - m_proxy), m_shadingTolerance);
+  }
+  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  result.usedExactFallback = result.usedExactFallback || tick.solution.usedExactFallback;
+  if (m_anyFriction)
+  {
+    applyFriction(tick, result);
+  }
+}
+
+void ProxySolver::applyFriction(ProxyTickState& tick, ProxyTickResult& result) const
+{
+  GoalSolution& solution = tick.solution;
+  // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
+  if (insideStaticCone(tick.finger - m_proxy))
+  {
+    result.stuck = result.stuck || result.iterations == 0; // held where the tick began
+    solution.displacement = Vec3{};
+    return;
+  }
+  const double travel = norm(solution.displacement);
+  const double allowed = frictionLimitedTravel(solution, travel, tick.viscous.budget);
+  if (allowed < travel)
+  {
+    result.frictionLimited = true;
+    solution.displacement = solution.displacement * (allowed / travel);
+  }
+}
+
+bool ProxySolver::atLocalMinimum(const ProxyTickState& tick) const
+{
+  // No feasible step brings the proxy nearer the finger.
+  const Vec3& displacement = tick.solution.displacement;
+  return squaredNorm(displacement) <= tick.stepTolerance * tick.stepTolerance;
+}
+
+Vec3 ProxySolver::nextStep(const ProxyTickState& tick) const
+{
+  // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
+  // surface sends it elsewhere on purpose.
+  if (!tick.stretch.allowed() || tick.shading.used() || m_anyFriction)
+  {
+    return tick.solution.displacement;
+  }
+  return curvatureCorrectedStep(tick.solution, tick.shading.target() - m_proxy,
+                                tick.stretch.creaseLimit());
+}
+
+bool ProxySolver::outOfWork(const ProxyTickState& tick, ProxyTickResult& result) const
+{
+  if (result.iterations == m_parameters.maxIterations)
+  {
+    result.hitIterationCap = true;
+    return true;
+  }
+  if (tick.budget.spent(result.iterations))
+  {
+    result.budgetLimited = true;
+    return true;
+  }
+  return false;
+}
+
+double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result)
+{
+  // Move stage (2.1): sweep toward the goal and stop at the first contact.
+  ++result.iterations;
+  const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
+  const Vec3 before = m_proxy;
+  m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
+  if (contact.hit)
+  {
+    followInCache(result.queries);
+  }
+  tick.blocked.moved(goal, before, m_proxy);
+  tick.viscous.spend(before, m_proxy);
+  return norm(tick.shading.target() - before);
+}
+
+bool ProxySolver::reachedTarget(ProxyTickState& tick, const ProxyTickResult& result) const
+{
+  // Progress is measured toward a fixed target: not while shading still moves it.
+  if (m_proxy == tick.shading.target() && !tick.shading.moving(m_anyShaded, result.iterations))
+  {
+    tick.solution = GoalSolution{};
+    return true;
+  }
+  return false;
+}
+
+bool ProxySolver::stopsWithoutProgress(ProxyTickState& tick, double toTarget,
+                                       double distanceBefore, ProxyTickResult& result)
+{
+  const bool progressed = toTarget < distanceBefore - tick.stepTolerance ||
+                          tick.shading.moving(m_anyShaded, result.iterations);
+  if (!tick.progress.stalls(progressed))
+  {
+    return false;
+  }
+  // The last update stage's planes stand for the contact.
+  gatherPlanesInto(m_proxy, result);
+  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  return true;
+}
+
+void ProxySolver::finishTick(ProxyTickState& tick, ProxyTickResult& result)
+{
   result.proxy = m_proxy;
-  m_lastTravel = norm(m_proxy - tickStart);
+  result.usedShading = tick.shading.used();
+  m_lastTravel = norm(m_proxy - tick.start);
   if (result.usedShading || m_anyFriction)
   {
     // The contacts are the planes the finger pushes on, with the depths of eq. 19: where the loop
     // sought a shaded subgoal, or friction cut its slide, its last solve says less than that.
-    result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+    gatherPlanesInto(m_proxy, result);
+    tick.solution = solveGoal(tick.finger - m_proxy, m_normals, m_numPlanes);
   }
+  const GoalSolution& solution = tick.solution;
   double depthSum = 0.0;
   double scaledSum = 0.0;
   for (int k = 0; k < solution.numActive; ++k)
@@ -1011,7 +980,6 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   {
     result.stiffnessScale = scaledSum / depthSum;
   }
-  return result;
 }
 
 } // namespace proxima
