@@ -411,7 +411,7 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
   const double covered = m_cache.coveredFraction(from, to, sweepReach);
   if (covered > 0.0)
   {
-    const SweepContact contact = m_cache.firstContact(*m_scene, query, covered, stats);
+    const SceneContact contact = m_cache.firstContact(*m_scene, query, covered, stats);
     if (contact.hit || covered >= 1.0)
     {
       outcome.hit = contact.hit;
