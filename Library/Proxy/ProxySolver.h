@@ -174,7 +174,7 @@ private:
   double frictionLimitedTravel(const GoalSolution& solution, double travel,
                                double& viscousBudget) const;
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
-  /// its configuration-space surface (a Newton step; see the .cpp).
+  /// its configuration-space surface (a Newton step; CurvatureStretch.cpp).
   /// The stretched step is kept only if it stays above every plane, as the planar one does.
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger,
                               double creaseStretchLimit) const;

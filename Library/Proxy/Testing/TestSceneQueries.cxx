@@ -122,10 +122,8 @@ const std::vector<NamedScene>& scenes()
         std::printf("[ skipped  ] %s: %s\n", file, loaded.error.c_str());
         continue;
       }
-      std::vector<TriangleSoup> soups;
-      soups.push_back(scaled(std::move(loaded.soup), scale));
       auto scene = std::make_unique<CollisionScene>();
-      if (!addSoup(*scene, std::move(soups[0])))
+      if (!addSoup(*scene, scaled(std::move(loaded.soup), scale)))
       {
         ADD_FAILURE() << file << ": mesh refused";
         continue;
