@@ -1,8 +1,7 @@
 #include "Geometry/SphereTree.h"
 
-#include "Geometry/SweptSphere.h"
-
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -209,7 +208,7 @@ public:
   std::uint32_t depth() const { return m_depth; }
 
 private:
-  static constexpr std::uint32_t kMedianSplitDepth = 48;
+  static constexpr std::uint32_t kMedianSplitDepth = kSphereTreeMedianSplitDepth;
 
   Sphere enclosingLeaves(const Vec3& center, std::uint32_t begin, std::uint32_t end) const
   {
@@ -267,55 +266,6 @@ private:
   std::uint32_t m_depth = 0;
 };
 
-Vec3 nodeCenter(const SphereTreeNode& node)
-{
-  return {static_cast<double>(node.center[0]), static_cast<double>(node.center[1]),
-          static_cast<double>(node.center[2])};
-}
-
-Vec3 leafCenter(const LeafSphere& leaf)
-{
-  return {static_cast<double>(leaf.center[0]), static_cast<double>(leaf.center[1]),
-          static_cast<double>(leaf.center[2])};
-}
-
-// Squared distance from c to the segment start + [0, 1] * motion.
-double segmentDistanceSquared(const Vec3& start, const Vec3& motion, double motionSquared,
-                              const Vec3& c)
-{
-  const Vec3 toCenter = c - start;
-  double s = motionSquared > 0.0 ? dot(toCenter, motion) / motionSquared : 0.0;
-  s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
-  return squaredDistance(toCenter, motion * s);
-}
-
-void addStats(const QueryStats& counts, QueryStats* stats)
-{
-  if (stats != nullptr)
-  {
-    stats->nodesVisited += counts.nodesVisited;
-    stats->leafSpheresTested += counts.leafSpheresTested;
-    stats->trianglesTested += counts.trianglesTested;
-  }
-}
-
-// Once the per-query cache is full a triangle reached through a second leaf sphere is tested
-// again; a gather then looks through what it already stored so that no triangle is listed twice.
-bool isStored(const NearbyTriangle* out, std::uint32_t count, std::uint32_t triangle)
-{
-  for (std::uint32_t i = 0; i < count; ++i)
-  {
-    if (out[i].triangle == triangle)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-// Pruning compares in double against float spheres that were rounded up by at least one float
-// ulp; this slack keeps exact tangencies of zero-radius spheres from being pruned by rounding.
-constexpr double kPruneSlack = 1.0 + 1e-9;
 } // namespace
 
 void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& options)
@@ -380,6 +330,7 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
   TreeBuilder builder(leaves, options.maxLeafSpheresPerNode, m_nodes);
   builder.build(0, static_cast<std::uint32_t>(leaves.size()), 0);
   m_depth = builder.depth();
+  assert(m_depth <= kSphereTreeMaxDepth); // the queries' stack is sized for this
 
   m_leaves.resize(leaves.size());
   for (std::size_t i = 0; i < leaves.size(); ++i)
@@ -392,277 +343,6 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
     leaf.triangle = leaves[i].triangle;
   }
   m_nodes.shrink_to_fit();
-}
-
-SweepContact SphereTree::firstContact(const TriangleMesh& mesh, const SweepQuery& query,
-                                      SphereTreeScratch& scratch, QueryStats* stats) const
-{
-  SweepContact best;
-  if (m_nodes.empty())
-  {
-    return best;
-  }
-  scratch.tested.clear();
-  QueryStats counts;
-  const Vec3 start = query.start - m_origin;
-  const Vec3 motion = query.end - query.start;
-  const double reachBeyondSphere = query.radius + query.skin;
-  std::uint32_t* stack = scratch.stack;
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0)
-  {
-    const SphereTreeNode& node = m_nodes[stack[--size]];
-    ++counts.nodesVisited;
-    // Only the part of the path before the best contact so far can hold an earlier one.
-    const Vec3 reachable = motion * best.t;
-    const double reachableSquared = dot(reachable, reachable);
-    const double reach = (static_cast<double>(node.radius) + reachBeyondSphere) * kPruneSlack;
-    if (segmentDistanceSquared(start, reachable, reachableSquared, nodeCenter(node)) >
-        reach * reach)
-    {
-      continue;
-    }
-    if (node.numLeafSpheres == 0)
-    {
-      const auto nodeIndex = static_cast<std::uint32_t>(&node - m_nodes.data());
-      const std::uint32_t left = nodeIndex + 1;
-      const std::uint32_t right = node.rightOrFirst;
-      // Visit first the child met earlier along the path, so contacts shrink the path sooner.
-      const double leftAlong = dot(nodeCenter(m_nodes[left]) - start, motion);
-      const double rightAlong = dot(nodeCenter(m_nodes[right]) - start, motion);
-      if (size + 2 > SphereTreeScratch::kMaxStackDepth)
-      {
-        continue; // unreachable: build() bounds the depth well below the stack size
-      }
-      if (leftAlong <= rightAlong)
-      {
-        stack[size++] = right;
-        stack[size++] = left;
-      }
-      else
-      {
-        stack[size++] = left;
-        stack[size++] = right;
-      }
-      continue;
-    }
-    for (std::uint32_t i = 0; i < node.numLeafSpheres; ++i)
-    {
-      const LeafSphere& leaf = m_leaves[node.rightOrFirst + i];
-      ++counts.leafSpheresTested;
-      const double leafReach = (static_cast<double>(leaf.radius) + reachBeyondSphere) * kPruneSlack;
-      if (segmentDistanceSquared(start, reachable, reachableSquared, leafCenter(leaf)) >
-          leafReach * leafReach)
-      {
-        continue;
-      }
-      if (!scratch.tested.insert(leaf.triangle))
-      {
-        continue;
-      }
-      ++counts.trianglesTested;
-      const SweepResult hit = sweepSphereTriangleWithSkin(query.start, motion, query.radius,
-                                                          query.skin, mesh.corners(leaf.triangle));
-      if (hit.hit && (!best.hit || hit.t < best.t ||
-                      (hit.t == best.t && leaf.triangle < best.triangle)))
-      {
-        best.hit = true;
-        best.t = hit.t;
-        best.triangle = leaf.triangle;
-      }
-    }
-  }
-  addStats(counts, stats);
-  return best;
-}
-
-// Visits each triangle (once, through the per-query cache, or again once the cache is full)
-// with a leaf sphere within `maxDistance` of `point`, which is in the tree's frame.
-template <typename Visit>
-void SphereTree::forEachTriangleNear(const Vec3& point, double maxDistance,
-                                     SphereTreeScratch& scratch, QueryStats& counts,
-                                     Visit&& visit) const
-{
-  scratch.tested.clear();
-  std::uint32_t* stack = scratch.stack;
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0)
-  {
-    const std::uint32_t nodeIndex = stack[--size];
-    const SphereTreeNode& node = m_nodes[nodeIndex];
-    ++counts.nodesVisited;
-    const double reach = (static_cast<double>(node.radius) + maxDistance) * kPruneSlack;
-    if (squaredDistance(nodeCenter(node), point) > reach * reach)
-    {
-      continue;
-    }
-    if (node.numLeafSpheres == 0)
-    {
-      if (size + 2 <= SphereTreeScratch::kMaxStackDepth)
-      {
-        stack[size++] = node.rightOrFirst;
-        stack[size++] = nodeIndex + 1;
-      }
-      continue;
-    }
-    for (std::uint32_t i = 0; i < node.numLeafSpheres; ++i)
-    {
-      const LeafSphere& leaf = m_leaves[node.rightOrFirst + i];
-      ++counts.leafSpheresTested;
-      const double leafReach = (static_cast<double>(leaf.radius) + maxDistance) * kPruneSlack;
-      if (squaredDistance(leafCenter(leaf), point) > leafReach * leafReach ||
-          !scratch.tested.insert(leaf.triangle))
-      {
-        continue;
-      }
-      visit(leaf.triangle);
-    }
-  }
-}
-
-std::uint32_t SphereTree::gatherWithin(const TriangleMesh& mesh, const Vec3& point,
-                                       double maxDistance, NearbyTriangle* out,
-                                       std::uint32_t capacity, SphereTreeScratch& scratch,
-                                       QueryStats* stats) const
-{
-  std::uint32_t found = 0;
-  if (m_nodes.empty() || !(maxDistance >= 0.0))
-  {
-    return 0;
-  }
-  QueryStats counts;
-  const double maxDistanceSquared = maxDistance * maxDistance;
-  forEachTriangleNear(point - m_origin, maxDistance, scratch, counts, [&](std::uint32_t triangle) {
-    ++counts.trianglesTested;
-    const TriangleCorners& c = mesh.corners(triangle);
-    const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
-    if (closest.squaredDistance <= maxDistanceSquared &&
-        !(scratch.tested.full() && isStored(out, found < capacity ? found : capacity, triangle)))
-    {
-      if (found < capacity)
-      {
-        out[found] = NearbyTriangle{triangle, closest};
-      }
-      ++found;
-    }
-  });
-  addStats(counts, stats);
-  return found;
-}
-
-std::uint32_t SphereTree::candidatesWithin(const Vec3& point, double maxDistance,
-                                           std::uint32_t* out, std::uint32_t capacity,
-                                           SphereTreeScratch& scratch, QueryStats* stats) const
-{
-  std::uint32_t found = 0;
-  if (m_nodes.empty() || !(maxDistance >= 0.0))
-  {
-    return 0;
-  }
-  QueryStats counts;
-  forEachTriangleNear(point - m_origin, maxDistance, scratch, counts, [&](std::uint32_t triangle) {
-    if (scratch.tested.full())
-    {
-      const std::uint32_t stored = found < capacity ? found : capacity;
-      for (std::uint32_t i = 0; i < stored; ++i)
-      {
-        if (out[i] == triangle)
-        {
-          return;
-        }
-      }
-    }
-    if (found < capacity)
-    {
-      out[found] = triangle;
-    }
-    ++found;
-  });
-  addStats(counts, stats);
-  return found;
-}
-
-NearestTriangle SphereTree::nearest(const TriangleMesh& mesh, const Vec3& point,
-                                    double maxDistance, SphereTreeScratch& scratch,
-                                    QueryStats* stats) const
-{
-  NearestTriangle best;
-  if (m_nodes.empty() || !(maxDistance >= 0.0))
-  {
-    return best;
-  }
-  scratch.tested.clear();
-  QueryStats counts;
-  const Vec3 p = point - m_origin;
-  double bestDistance = maxDistance;
-  double bestSquared = maxDistance * maxDistance;
-  std::uint32_t* stack = scratch.stack;
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0)
-  {
-    const std::uint32_t nodeIndex = stack[--size];
-    const SphereTreeNode& node = m_nodes[nodeIndex];
-    ++counts.nodesVisited;
-    const double gap = distance(nodeCenter(node), p) - static_cast<double>(node.radius);
-    if (gap > bestDistance * kPruneSlack)
-    {
-      continue;
-    }
-    if (node.numLeafSpheres == 0)
-    {
-      if (size + 2 > SphereTreeScratch::kMaxStackDepth)
-      {
-        continue;
-      }
-      // Nearer child first: a good early answer prunes the rest.
-      const std::uint32_t left = nodeIndex + 1;
-      const std::uint32_t right = node.rightOrFirst;
-      const double leftGap = distance(nodeCenter(m_nodes[left]), p) - m_nodes[left].radius;
-      const double rightGap = distance(nodeCenter(m_nodes[right]), p) - m_nodes[right].radius;
-      if (leftGap <= rightGap)
-      {
-        stack[size++] = right;
-        stack[size++] = left;
-      }
-      else
-      {
-        stack[size++] = left;
-        stack[size++] = right;
-      }
-      continue;
-    }
-    for (std::uint32_t i = 0; i < node.numLeafSpheres; ++i)
-    {
-      const LeafSphere& leaf = m_leaves[node.rightOrFirst + i];
-      ++counts.leafSpheresTested;
-      if (distance(leafCenter(leaf), p) - static_cast<double>(leaf.radius) >
-            bestDistance * kPruneSlack ||
-          !scratch.tested.insert(leaf.triangle))
-      {
-        continue;
-      }
-      ++counts.trianglesTested;
-      const TriangleCorners& c = mesh.corners(leaf.triangle);
-      const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
-      // Compare squared distances, as computed: square roots would merge values that differ in
-      // the last bit, and the answer must be the same triangle a brute-force scan picks.
-      const double d2 = closest.squaredDistance;
-      if ((!best.found && d2 <= bestSquared) || d2 < bestSquared ||
-          (d2 == bestSquared && leaf.triangle < best.triangle))
-      {
-        best.found = true;
-        best.triangle = leaf.triangle;
-        best.closest = closest;
-        bestSquared = d2;
-        bestDistance = std::sqrt(d2);
-      }
-    }
-  }
-  addStats(counts, stats);
-  return best;
 }
 
 std::size_t SphereTree::memoryBytes() const
@@ -685,7 +365,7 @@ std::vector<Sphere> SphereTree::spheresAtLevel(std::uint32_t level) const
     const SphereTreeNode& node = m_nodes[index];
     if (nodeLevel == level || node.numLeafSpheres > 0)
     {
-      spheres.push_back(Sphere{nodeCenter(node) + m_origin, static_cast<double>(node.radius)});
+      spheres.push_back(Sphere{centerOf(node) + m_origin, static_cast<double>(node.radius)});
       continue;
     }
     stack.emplace_back(node.rightOrFirst, nodeLevel + 1);
@@ -700,7 +380,7 @@ std::vector<Sphere> SphereTree::leafSpheresInWorld() const
   spheres.reserve(m_leaves.size());
   for (const LeafSphere& leaf : m_leaves)
   {
-    spheres.push_back(Sphere{leafCenter(leaf) + m_origin, static_cast<double>(leaf.radius)});
+    spheres.push_back(Sphere{centerOf(leaf) + m_origin, static_cast<double>(leaf.radius)});
   }
   return spheres;
 }

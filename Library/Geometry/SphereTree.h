@@ -27,6 +27,13 @@ struct SphereTreeOptions
   std::uint32_t maxLeafSpheresPerNode = 4;
 };
 
+/// Down to this depth the build splits at the midpoint of the longest axis (or at the median when
+/// that leaves a side empty); deeper, always at the median, which halves the leaf spheres.
+inline constexpr std::uint32_t kSphereTreeMedianSplitDepth = 48;
+/// The deepest node a build can make: below kSphereTreeMedianSplitDepth the median splits leave
+/// one of at most 2^32 leaf spheres after 32 more levels. The queries' stack is sized from this.
+inline constexpr std::uint32_t kSphereTreeMaxDepth = kSphereTreeMedianSplitDepth + 1 + 32;
+
 /// A node in depth-first order: the left child is the next node; an internal node stores its
 /// right child, a leaf node the range of its leaf spheres. Centres are relative to the tree's
 /// origin; radii are rounded up so that a float sphere always holds what the exact one held.
@@ -47,6 +54,18 @@ struct LeafSphere
   std::uint32_t triangle;
 };
 
+/// A node's or a leaf sphere's centre in double, relative to the tree's origin.
+inline Vec3 centerOf(const SphereTreeNode& node)
+{
+  return {static_cast<double>(node.center[0]), static_cast<double>(node.center[1]),
+          static_cast<double>(node.center[2])};
+}
+inline Vec3 centerOf(const LeafSphere& leaf)
+{
+  return {static_cast<double>(leaf.center[0]), static_cast<double>(leaf.center[1]),
+          static_cast<double>(leaf.center[2])};
+}
+
 struct Sphere
 {
   Vec3 center;
@@ -65,7 +84,9 @@ struct QueryStats
 /// per querying thread, once; queries then never allocate.
 struct SphereTreeScratch
 {
-  static constexpr int kMaxStackDepth = 128;
+  /// A depth-first walk of a tree of depth D holds at most D + 1 nodes (SphereTreeQueries.cpp),
+  /// and no build is deeper than kSphereTreeMaxDepth: the stack cannot overflow.
+  static constexpr int kMaxStackDepth = static_cast<int>(kSphereTreeMaxDepth) + 1;
   std::uint32_t stack[kMaxStackDepth];
   TriangleTestCache tested;
 };
@@ -150,9 +171,11 @@ public:
   std::vector<Sphere> leafSpheresInWorld() const;
 
 private:
-  template <typename Visit>
-  void forEachTriangleNear(const Vec3& point, double maxDistance, SphereTreeScratch& scratch,
-                           QueryStats& counts, Visit&& visit) const;
+  /// The one depth-first walk behind every query (SphereTreeQueries.cpp). The visitor says
+  /// whether a node's or a leaf's sphere can still matter (reachesNode, reachesLeaf), which child
+  /// to enter first (leftFirst), and takes each reached triangle once (visitTriangle).
+  template <typename Visitor>
+  void walk(SphereTreeScratch& scratch, QueryStats& counts, Visitor& visitor) const;
 
   std::vector<SphereTreeNode> m_nodes;
   std::vector<LeafSphere> m_leaves;

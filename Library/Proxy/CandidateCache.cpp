@@ -190,10 +190,10 @@ double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end,
   return std::clamp(exit * (1.0 - 1e-12), 0.0, 1.0);
 }
 
-SweepContact CandidateCache::firstContact(const CollisionScene& scene, const SweepQuery& query,
+SceneContact CandidateCache::firstContact(const CollisionScene& scene, const SweepQuery& query,
                                           double covered, QueryStats& stats) const
 {
-  SweepContact best;
+  SceneContact best;
   const Vec3 motion = query.end - query.start;
   const double motionSquared = dot(motion, motion);
   const double beyond = query.radius + query.skin;
@@ -210,10 +210,15 @@ SweepContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
     const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
     const SweepResult hit =
       sweepSphereTriangleWithSkin(query.start, motion, query.radius, query.skin, c);
-    if (hit.hit && hit.t <= covered && (!best.hit || hit.t < best.t))
+    const bool earlier =
+      !best.hit || hit.t < best.t ||
+      (hit.t == best.t && (m_object[i] < best.object ||
+                           (m_object[i] == best.object && m_triangle[i] < best.triangle)));
+    if (hit.hit && hit.t <= covered && earlier)
     {
       best.hit = true;
       best.t = hit.t;
+      best.object = m_object[i];
       best.triangle = m_triangle[i];
       blocker = i;
     }

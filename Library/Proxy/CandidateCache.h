@@ -1,7 +1,8 @@
 // Temporal coherence for the proxy: the triangles within radius + margin of a centre, gathered
 // from the sphere trees once and reused while the proxy stays near that centre. A query whose
 // reach lies inside the cached ball is answered from this short list exactly as the trees would
-// answer it (same triangles, same first contact); any other query goes to the trees.
+// answer it (same triangles, same first contact, ties broken by the same rule); any other query
+// goes to the trees.
 //
 // A proxy resting on a surface is within reach of every triangle's bounding sphere for a
 // proxy radius around it, so the sphere test alone let hundreds of triangles through to the exact
@@ -19,6 +20,18 @@
 
 namespace proxima
 {
+
+/// The first contact of a sweep among the objects of a scene. Ties in t go to the lowest object
+/// index, then the lowest triangle index: the trees' rule (SphereTree::firstContact within an
+/// object, ProxySolver's loop over the objects in order), whatever order the triangles are tested.
+struct SceneContact
+{
+  bool hit = false;
+  /// Fraction of the sweep travelled at first contact (1 without a hit).
+  double t = 1.0;
+  std::uint32_t object = 0;
+  std::uint32_t triangle = 0;
+};
 
 class CandidateCache
 {
@@ -59,8 +72,9 @@ public:
   /// trees would find this contact too, and no earlier one. No hit means none up to `covered`.
   /// The triangle that stopped the last sweep is tested first: a proxy creeping along a surface
   /// is stopped by the same triangle sweep after sweep, and once its contact bounds the sweep,
-  /// the filters reject the triangles beyond it without their exact test.
-  SweepContact firstContact(const CollisionScene& scene, const SweepQuery& query, double covered,
+  /// the filters reject the triangles beyond it without their exact test; the order changes no
+  /// answer, as ties follow SceneContact's rule.
+  SceneContact firstContact(const CollisionScene& scene, const SweepQuery& query, double covered,
                             QueryStats& stats) const;
 
 private:

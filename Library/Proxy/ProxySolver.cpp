@@ -1,11 +1,10 @@
 #include "Proxy/ProxySolver.h"
 
+#include "Proxy/ProxyTickState.h"
 #include "Proxy/SurfaceTexture.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <limits>
 
 namespace proxima
 {
@@ -26,58 +25,6 @@ constexpr double kSameNormalCosine = 1.0 - 1e-14;
 // 4009, 8.2e-11 rad). A merge at this angle hides a crossing of at most 1e-13 of a slide: below
 // the goal solver's feasibility tolerance and the sweep's touching slope (both 1e-12).
 constexpr double kSameFaceNormalSine = 1e-13;
-
-// The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
-// axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
-constexpr double kMaxCurvatureStretch = 64.0;
-
-// How far a crease's stretched slide may reach, as a fraction of the curved surface's radius.
-constexpr double kCreaseStretchReach = 0.25;
-
-// A stretched slide may cross a plane by this fraction of the finger distance (the goal
-// solver's feasibility tolerance): rounding, not a heading into the plane.
-constexpr double kStretchFeasibility = 1e-12;
-
-// Iterations in a row that bring the proxy no nearer the finger before the tick ends: the paper's
-// loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
-// trading rounding errors between two planes, as 1 km from the origin).
-constexpr int kMaxStalledIterations = 3;
-
-// The work budget of one tick: iterations, and wall time on the steady clock (read only when a
-// time budget is set: a scene without one pays nothing for it).
-class TickBudget
-{
-public:
-  explicit TickBudget(const ProxyParameters& parameters)
-    : m_iterations(parameters.tickBudgetIterations)
-    , m_timed(parameters.tickBudgetSeconds > 0.0)
-  {
-    if (m_timed)
-    {
-      m_deadline = std::chrono::steady_clock::now() +
-                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                     std::chrono::duration<double>(parameters.tickBudgetSeconds));
-    }
-  }
-
-  /// True once `iterations` move stages have used the budget up.
-  bool spent(int iterations) const
-  {
-    if (m_iterations > 0 && iterations >= m_iterations)
-    {
-      return true;
-    }
-    return m_timed && iterations > 0 && std::chrono::steady_clock::now() >= m_deadline;
-  }
-
-private:
-  int m_iterations = 0;
-  bool m_timed = false;
-  std::chrono::steady_clock::time_point m_deadline;
-};
-
-// Update stages in a tick that re-shade the target (see update()).
-constexpr int kMaxShadedIterations = 8;
 
 // Whether the proxy, touching `corners` at `closest` with contact normal `normal`, sits on a curved
 // part of the triangle's configuration-space obstacle: an edge or corner contact off the face's
@@ -131,18 +78,6 @@ Vec3 rotateLike(const Vec3& from, const Vec3& to, const Vec3& v)
   const Vec3 k = axis / sine;
   return v * cosine + cross(k, v) * sine + k * (dot(k, v) * (1.0 - cosine));
 }
-
-// The edge of `feature` as its two corners, or false for a vertex or the face.
-bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from, Vec3& to)
-{
-  switch (feature)
-  {
-    case TriangleFeature::EdgeAB: from = corners.a; to = corners.b; return true;
-    case TriangleFeature::EdgeBC: from = corners.b; to = corners.c; return true;
-    case TriangleFeature::EdgeCA: from = corners.c; to = corners.a; return true;
-    default: return false;
-  }
-}
 } // namespace
 
 Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& plane) const
@@ -173,181 +108,6 @@ Vec3 ProxySolver::tiltedRimNormal(const TriangleMesh& mesh, const ContactPlane& 
     face = -face; // the face's normal on the side the point normals are given for
   }
   return rotateLike(face, interpolated, plane.normal);
-}
-
-Vec3 ProxySolver::curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger,
-                                         double creaseStretchLimit) const
-{
-  // The stretch is worked out for the active plane alone, but the slide it stretches stays above
-  // the other planes only by the goal solve: stretched, it may head into one it merely touches.
-  // The sweep then blocks it at once (the proxy touches that triangle), and the next update stage,
-  // at the same point, stretches the same slide again. The liver corner (ProxySolverFound.
-  // StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide) ended so, 1.6e-7 m short of its
-  // minimum. A stretched step that crosses any plane gives way to the feasible planar slide.
-  const Vec3 stretched = stretchedSlide(solution, toFinger, creaseStretchLimit);
-  if (stretched == solution.displacement)
-  {
-    return stretched;
-  }
-  const double tolerance = kStretchFeasibility * norm(toFinger);
-  for (int k = 0; k < m_numPlanes; ++k)
-  {
-    if (dot(m_normals[k], stretched) < -tolerance)
-    {
-      return solution.displacement;
-    }
-  }
-  return stretched;
-}
-
-namespace
-{
-// The radius of a plane's curved configuration-space surface (the distance from the proxy to the
-// touched edge or corner), or infinity on a face.
-double curvedRadius(const ContactPlane& plane)
-{
-  return plane.curved ? std::sqrt(plane.closest.squaredDistance)
-                      : std::numeric_limits<double>::infinity();
-}
-} // namespace
-
-double ProxySolver::curvatureAlong(const ContactPlane& plane, const Vec3& direction) const
-{
-  if (!plane.curved)
-  {
-    return 0.0; // a face: its configuration-space surface is its plane
-  }
-  const double rho = std::sqrt(plane.closest.squaredDistance);
-  if (!(rho > 0.0))
-  {
-    return 0.0;
-  }
-  Vec3 from;
-  Vec3 to;
-  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
-  if (!edgeOf(corners, plane.closest.feature, from, to) || !(squaredNorm(to - from) > 0.0))
-  {
-    return 1.0 / rho; // a corner's sphere bends the same way in every tangent direction
-  }
-  // An edge's cylinder is straight along its axis and bends by 1 / rho across it.
-  const double along = dot(direction, to - from);
-  return (1.0 - along * along / squaredNorm(to - from)) / rho;
-}
-
-Vec3 ProxySolver::stretchedCreaseSlide(const GoalSolution& solution, double stretchLimit) const
-{
-  // Two active planes: the planar slide runs along their crease line, the tangent of the curve
-  // where the two configuration-space surfaces meet. Where one of them is an edge's cylinder or
-  // a corner's sphere that curve bends, and tangent slides followed by the fall back onto it
-  // creep along it: with the finger near the curve's centre of curvature (deep under an edge,
-  // the bunny and liver probe paths) each cycle of two iterations advanced a few micrometres,
-  // and ticks ran to 170-216 iterations. The Newton step along the crease divides the slide by
-  // the Lagrangian's curvature there, 1 - sum mu_k kappa_k (mu_k: the depths, kappa_k: each
-  // surface's curvature along the crease), capped at `stretchLimit` where that curvature
-  // vanishes or turns.
-  const Vec3 planar = solution.displacement;
-  const ContactPlane& first = m_planes[solution.active[0]];
-  const ContactPlane& second = m_planes[solution.active[1]];
-  if (!first.curved && !second.curved)
-  {
-    return planar; // two faces meet in a straight line: the slide is exact
-  }
-  const double length = norm(planar);
-  if (!(length > 0.0))
-  {
-    return planar;
-  }
-  const Vec3 crease = planar / length;
-  const double hessian = 1.0 - solution.depth[0] * curvatureAlong(first, crease) -
-                         solution.depth[1] * curvatureAlong(second, crease);
-  if (!(stretchLimit > 1.0))
-  {
-    return planar;
-  }
-  double stretch = hessian > 1.0 / stretchLimit ? 1.0 / hessian : stretchLimit;
-  // The tangent model holds near the proxy only: a stretched slide may go at most a quarter of
-  // the smaller curved surface's radius (it then leaves that surface by a 32nd of the radius).
-  // Unbounded, a 64-fold slide of 5 mm left the edge's neighbourhood for another local minimum,
-  // and the tick ended farther from the finger than it began (shared bunny, wander path).
-  const double reach = kCreaseStretchReach * std::min(curvedRadius(first), curvedRadius(second));
-  if (length * stretch > reach)
-  {
-    stretch = std::max(1.0, reach / length);
-  }
-  return planar * stretch;
-}
-
-Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFinger,
-                                 double creaseStretchLimit) const
-{
-  const Vec3 planar = solution.displacement;
-  if (solution.numActive == 2)
-  {
-    return stretchedCreaseSlide(solution, creaseStretchLimit);
-  }
-  if (solution.numActive != 1)
-  {
-    return planar;
-  }
-  const ContactPlane& plane = m_planes[solution.active[0]];
-  if (!plane.curved)
-  {
-    return planar; // a face's configuration-space surface is its plane: the slide is exact
-  }
-  // An edge or a corner: the configuration-space surface is a cylinder or a sphere of radius rho
-  // about it, and the tangent plane's goal undershoots. The Lagrangian's Hessian along the curved
-  // directions is 1 - h / rho (h: the finger's depth below the plane, the multiplier), so the
-  // Newton step stretches the slide by 1 / (1 - h / rho): the slide then ends on the ray from the
-  // edge (or corner) through the finger, and the next move falls onto the minimum.
-  const double rho = std::sqrt(plane.closest.squaredDistance);
-  const double depth = -dot(toFinger, plane.normal);
-  if (!(rho > 0.0) || !(depth > 0.0))
-  {
-    return planar;
-  }
-  Vec3 from;
-  Vec3 to;
-  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
-  Vec3 along;
-  if (edgeOf(corners, plane.closest.feature, from, to))
-  {
-    along = to - from;
-  }
-  const double alongSquared = squaredNorm(along);
-  // Along an edge the cylinder is straight: only the part across it is stretched (a corner, or
-  // an edge of zero length, is curved in every tangent direction).
-  const Vec3 straight =
-    alongSquared > 0.0 ? along * (dot(planar, along) / alongSquared) : Vec3{};
-  const double hessian = 1.0 - depth / rho;
-  if (hessian > 1.0 / kMaxCurvatureStretch)
-  {
-    return straight + (planar - straight) * (1.0 / hessian);
-  }
-  // The finger is near the edge's axis (the corner itself), where the Hessian vanishes and the
-  // quadratic model says nothing. Inside the cylinder (ball) the minimum is still where the ray
-  // from the axis through the finger meets it: slide to that ray's crossing of the tangent plane
-  // (where the stretched slide would end), so that the next move falls onto it. Without this
-  // the plain slides creep: a finger 5 um from the apex of a narrow concave corner, the proxy
-  // touching only the apex, took 2752 iterations (stress seed 6010).
-  Vec3 across = toFinger + plane.normal * rho; // the finger seen from the touched feature
-  if (alongSquared > 0.0)
-  {
-    across = across - along * (dot(across, along) / alongSquared);
-  }
-  const double offAxis = norm(across);
-  if (!(offAxis < rho) || !(offAxis > 0.0))
-  {
-    // Past the axis no minimum lies on this arc, and on it every point is one: the plain slide
-    // rolls the proxy over.
-    return planar;
-  }
-  const Vec3 ray = across / offAxis;
-  const double cosine = dot(ray, plane.normal);
-  if (!(cosine > 1.0 / kMaxCurvatureStretch))
-  {
-    return planar; // the ray leaves on the far side of the axis, or nearly along the plane
-  }
-  return straight + ray * (rho / cosine) - plane.normal * rho;
 }
 
 void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& parameters)
@@ -456,7 +216,7 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
   const double covered = m_cache.coveredFraction(from, to, sweepReach);
   if (covered > 0.0)
   {
-    const SweepContact contact = m_cache.firstContact(*m_scene, query, covered, stats);
+    const SceneContact contact = m_cache.firstContact(*m_scene, query, covered, stats);
     if (contact.hit || covered >= 1.0)
     {
       outcome.hit = contact.hit;
@@ -842,161 +602,175 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     result.refusedFinger = true;
     return result;
   }
-  const TickBudget budget(m_parameters);
-  const Vec3 finger = withinReach(requestedFinger);
-  // Steps shorter than this are rounding noise of the goal solve, not motion: 1% of the skin.
-  const double stepTolerance = 0.01 * m_skin;
+  ProxyTickState tick(m_parameters, withinReach(requestedFinger), m_proxy, m_skin);
   refreshCache(result.queries);
-  const Vec3 tickStart = m_proxy;
-  GoalSolution solution;
-  Vec3 target = finger; // the shaded subgoal instead, on a shaded surface
-  bool shadingSettled = false;
-  Vec3 previousGoal = m_proxy;
-  bool blockedAtOnce = false;
-  int stalled = 0;
-  // A stretched slide is a Newton step: it must pay off with the move after it, or the tick goes
-  // on with plain slides (a trust region shrunk to the paper's planar steps). A crease's stretch
-  // is capped by a trust region that shrinks eightfold at each stretch that did not pay off:
-  // where the curvature along a crease vanishes the cap is the step, and one bad guess should
-  // not leave the rest of the tick to creep.
-  bool mayStretch = true;
-  double creaseStretchLimit = kMaxCurvatureStretch;
-  bool lastStretchOnCrease = false;
-  double beforeStretch = -1.0;
-  double viscousBudget = -1.0; // set by the tick's first viscous contact
   for (;;)
   {
     // Update stage (2.2) first, also at the start of a tick: a proxy already in contact must not
     // head straight for the finger, or every tick would push it a little deeper into the skin.
-    result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    if (m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations)
+    updateStage(tick, result);
+    if (atLocalMinimum(tick))
     {
-      // Shading (and bump texture): each update stage's first pass picks the target that the
-      // second pass, the plain loop with the true planes, seeks. The target is frozen once it
-      // moves by less than the accuracy scale between update stages, or after a few moves:
-      // re-shading after every move can chase a shaded normal that turns as the proxy slides
-      // (near a sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap), while the
-      // plain loop toward a fixed target always settles.
-      const Vec3 shaded = m_proxy + shadedSubgoal(finger - m_proxy);
-      shadingSettled = result.usedShading && distance(shaded, target) <= m_shadingTolerance;
-      target = shaded;
-      result.usedShading = true;
+      break;
     }
-    solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
-    result.usedExactFallback = result.usedExactFallback || solution.usedExactFallback;
-    if (m_anyFriction)
-    {
-      // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
-      if (insideStaticCone(finger - m_proxy))
-      {
-        result.stuck = result.stuck || result.iterations == 0; // held where the tick began
-        solution.displacement = Vec3{};
-      }
-      else
-      {
-        const double travel = norm(solution.displacement);
-        const double allowed = frictionLimitedTravel(solution, travel, viscousBudget);
-        if (allowed < travel)
-        {
-          result.frictionLimited = true;
-          solution.displacement = solution.displacement * (allowed / travel);
-        }
-      }
-    }
-    if (squaredNorm(solution.displacement) <= stepTolerance * stepTolerance)
-    {
-      break; // a local minimum: no feasible step brings the proxy nearer the finger
-    }
-    // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
-    // surface sends it elsewhere on purpose.
-    const Vec3 step = mayStretch && !result.usedShading && !m_anyFriction
-                        ? curvatureCorrectedStep(solution, target - m_proxy, creaseStretchLimit)
-                        : solution.displacement;
-    const bool stretched = step != solution.displacement;
-    if (stretched)
-    {
-      lastStretchOnCrease = solution.numActive == 2;
-    }
+    const Vec3 step = nextStep(tick);
+    const bool stretched = step != tick.solution.displacement;
     const Vec3 goal = m_proxy + step;
-    if (blockedAtOnce && goal == previousGoal)
+    if (tick.blocked.repeats(goal) || outOfWork(tick, result))
     {
-      break; // the last move was blocked at once and nothing changed: repeating cannot help
-    }
-    if (result.iterations == m_parameters.maxIterations)
-    {
-      result.hitIterationCap = true;
       break;
     }
-    if (budget.spent(result.iterations))
+    const double distanceBefore = moveStage(tick, goal, result);
+    if (reachedTarget(tick, result))
     {
-      result.budgetLimited = true;
       break;
     }
-    // Move stage (2.1): sweep toward the goal and stop at the first contact.
-    ++result.iterations;
-    const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
-    const Vec3 before = m_proxy;
-    const double distanceBefore = norm(target - before);
-    m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
-    if (contact.hit)
-    {
-      followInCache(result.queries);
-    }
-    blockedAtOnce = m_proxy == before;
-    previousGoal = goal;
-    if (viscousBudget > 0.0)
-    {
-      viscousBudget = std::max(0.0, viscousBudget - distance(m_proxy, before));
-    }
-    // Progress is measured toward a fixed target: not while shading still moves it.
-    const bool targetMoving =
-      m_anyShaded && !shadingSettled && result.iterations < kMaxShadedIterations;
-    if (m_proxy == target && !targetMoving)
-    {
-      solution = GoalSolution{};
-      break;
-    }
-    const double toFinger = norm(target - m_proxy);
     if (stretched)
     {
-      beforeStretch = distanceBefore;
+      tick.stretch.awaitPayoff(tick.solution.numActive, distanceBefore);
       continue;
     }
-    if (beforeStretch >= 0.0 && !(toFinger < beforeStretch - stepTolerance))
+    const double toTarget = norm(tick.shading.target() - m_proxy);
+    tick.stretch.judgePayoff(toTarget, tick.stepTolerance);
+    if (stopsWithoutProgress(tick, toTarget, distanceBefore, result))
     {
-      // The stretched slide and its fall ended no nearer: stop stretching (a crease: stretch less).
-      if (lastStretchOnCrease)
-      {
-        creaseStretchLimit /= 8.0;
-      }
-      else
-      {
-        mayStretch = false;
-      }
-    }
-    beforeStretch = -1.0;
-    if (toFinger < distanceBefore - stepTolerance || targetMoving)
-    {
-      stalled = 0;
-    }
-    else if (++stalled == kMaxStalledIterations)
-    {
-      // No nearer after several moves: rounding traded between planes, not progress. The last
-      // update stage's planes stand for the contact.
-      result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-      solution = solveGoal(target - m_proxy, m_normals, m_numPlanes);
       break;
     }
   }
+  finishTick(tick, result);
+  return result;
+}
+
+void ProxySolver::gatherPlanesInto(const Vec3& position, ProxyTickResult& result)
+{
+  result.contactOverflow = !gatherPlanes(position, result.queries) || result.contactOverflow;
+}
+
+void ProxySolver::updateStage(ProxyTickState& tick, ProxyTickResult& result)
+{
+  gatherPlanesInto(m_proxy, result);
+  if (tick.shading.moving(m_anyShaded, result.iterations))
+  {
+    // Shading (and bump texture): the first pass picks the target that the second pass, the
+    // plain loop with the true planes, seeks.
+    tick.shading.reshade(m_proxy + shadedSubgoal(tick.finger - m_proxy), m_shadingTolerance);
+  }
+  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  result.usedExactFallback = result.usedExactFallback || tick.solution.usedExactFallback;
+  if (m_anyFriction)
+  {
+    applyFriction(tick, result);
+  }
+}
+
+void ProxySolver::applyFriction(ProxyTickState& tick, ProxyTickResult& result) const
+{
+  GoalSolution& solution = tick.solution;
+  // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
+  if (insideStaticCone(tick.finger - m_proxy))
+  {
+    result.stuck = result.stuck || result.iterations == 0; // held where the tick began
+    solution.displacement = Vec3{};
+    return;
+  }
+  const double travel = norm(solution.displacement);
+  const double allowed = frictionLimitedTravel(solution, travel, tick.viscous.budget);
+  if (allowed < travel)
+  {
+    result.frictionLimited = true;
+    solution.displacement = solution.displacement * (allowed / travel);
+  }
+}
+
+bool ProxySolver::atLocalMinimum(const ProxyTickState& tick) const
+{
+  // No feasible step brings the proxy nearer the finger.
+  const Vec3& displacement = tick.solution.displacement;
+  return squaredNorm(displacement) <= tick.stepTolerance * tick.stepTolerance;
+}
+
+Vec3 ProxySolver::nextStep(const ProxyTickState& tick) const
+{
+  // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
+  // surface sends it elsewhere on purpose.
+  if (!tick.stretch.allowed() || tick.shading.used() || m_anyFriction)
+  {
+    return tick.solution.displacement;
+  }
+  return curvatureCorrectedStep(tick.solution, tick.shading.target() - m_proxy,
+                                tick.stretch.creaseLimit());
+}
+
+bool ProxySolver::outOfWork(const ProxyTickState& tick, ProxyTickResult& result) const
+{
+  if (result.iterations == m_parameters.maxIterations)
+  {
+    result.hitIterationCap = true;
+    return true;
+  }
+  if (tick.budget.spent(result.iterations))
+  {
+    result.budgetLimited = true;
+    return true;
+  }
+  return false;
+}
+
+double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result)
+{
+  // Move stage (2.1): sweep toward the goal and stop at the first contact.
+  ++result.iterations;
+  const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
+  const Vec3 before = m_proxy;
+  m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
+  if (contact.hit)
+  {
+    followInCache(result.queries);
+  }
+  tick.blocked.moved(goal, before, m_proxy);
+  tick.viscous.spend(before, m_proxy);
+  return norm(tick.shading.target() - before);
+}
+
+bool ProxySolver::reachedTarget(ProxyTickState& tick, const ProxyTickResult& result) const
+{
+  // Progress is measured toward a fixed target: not while shading still moves it.
+  if (m_proxy == tick.shading.target() && !tick.shading.moving(m_anyShaded, result.iterations))
+  {
+    tick.solution = GoalSolution{};
+    return true;
+  }
+  return false;
+}
+
+bool ProxySolver::stopsWithoutProgress(ProxyTickState& tick, double toTarget,
+                                       double distanceBefore, ProxyTickResult& result)
+{
+  const bool progressed = toTarget < distanceBefore - tick.stepTolerance ||
+                          tick.shading.moving(m_anyShaded, result.iterations);
+  if (!tick.progress.stalls(progressed))
+  {
+    return false;
+  }
+  // The last update stage's planes stand for the contact.
+  gatherPlanesInto(m_proxy, result);
+  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  return true;
+}
+
+void ProxySolver::finishTick(ProxyTickState& tick, ProxyTickResult& result)
+{
   result.proxy = m_proxy;
-  m_lastTravel = norm(m_proxy - tickStart);
+  result.usedShading = tick.shading.used();
+  m_lastTravel = norm(m_proxy - tick.start);
   if (result.usedShading || m_anyFriction)
   {
     // The contacts are the planes the finger pushes on, with the depths of eq. 19: where the loop
     // sought a shaded subgoal, or friction cut its slide, its last solve says less than that.
-    result.contactOverflow = !gatherPlanes(m_proxy, result.queries) || result.contactOverflow;
-    solution = solveGoal(finger - m_proxy, m_normals, m_numPlanes);
+    gatherPlanesInto(m_proxy, result);
+    tick.solution = solveGoal(tick.finger - m_proxy, m_normals, m_numPlanes);
   }
+  const GoalSolution& solution = tick.solution;
   double depthSum = 0.0;
   double scaledSum = 0.0;
   for (int k = 0; k < solution.numActive; ++k)
@@ -1011,7 +785,6 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   {
     result.stiffnessScale = scaledSum / depthSum;
   }
-  return result;
 }
 
 } // namespace proxima

@@ -16,6 +16,8 @@
 namespace proxima
 {
 
+struct ProxyTickState;
+
 /// One constraint plane at the proxy: its normal (into free space), the primitive that made it
 /// and the contact weights of the nearest point on that primitive.
 struct ContactPlane
@@ -115,6 +117,33 @@ public:
   double contactEpsilon() const { return 2.0 * m_skin; }
 
 private:
+  // The steps of one tick (update()), in the order the loop takes them; the state they share
+  // is in ProxyTickState.h.
+  /// Update stage (2.2): the planes at the proxy, the (shaded) target, the goal, friction's cut.
+  void updateStage(ProxyTickState& tick, ProxyTickResult& result);
+  /// Static friction holds the goal at the proxy; dynamic and viscous friction shorten it.
+  void applyFriction(ProxyTickState& tick, ProxyTickResult& result) const;
+  /// Stop rule: the goal is within the step tolerance of the proxy.
+  bool atLocalMinimum(const ProxyTickState& tick) const;
+  /// The goal's displacement, stretched by the curvature correction while its trust region
+  /// allows.
+  Vec3 nextStep(const ProxyTickState& tick) const;
+  /// Stop rules on work: the iteration cap, then the tick's budget (flagged in `result`).
+  bool outOfWork(const ProxyTickState& tick, ProxyTickResult& result) const;
+  /// Move stage (2.1): sweeps toward `goal` and stops at the first contact. Returns how far the
+  /// proxy was from the target before the move.
+  double moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result);
+  /// Stop rule: the proxy reached a target that no longer moves.
+  bool reachedTarget(ProxyTickState& tick, const ProxyTickResult& result) const;
+  /// Stop rule: NoProgress, counted for a move that ended `toTarget` from the target after
+  /// starting `distanceBefore` from it; on stopping, solves the goal at the proxy once more.
+  bool stopsWithoutProgress(ProxyTickState& tick, double toTarget, double distanceBefore,
+                            ProxyTickResult& result);
+  /// Reports the proxy and the contacts the finger pushes on.
+  void finishTick(ProxyTickState& tick, ProxyTickResult& result);
+  /// gatherPlanes at `position`, an overflow flagged in `result`.
+  void gatherPlanesInto(const Vec3& position, ProxyTickResult& result);
+
   struct SweepOutcome
   {
     bool hit = false;
@@ -145,7 +174,7 @@ private:
   double frictionLimitedTravel(const GoalSolution& solution, double travel,
                                double& viscousBudget) const;
   /// The update stage's step, with the slide over an edge or corner stretched by the curvature of
-  /// its configuration-space surface (a Newton step; see the .cpp).
+  /// its configuration-space surface (a Newton step; CurvatureStretch.cpp).
   /// The stretched step is kept only if it stays above every plane, as the planar one does.
   Vec3 curvatureCorrectedStep(const GoalSolution& solution, const Vec3& toFinger,
                               double creaseStretchLimit) const;

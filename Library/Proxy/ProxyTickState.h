@@ -1,0 +1,228 @@
+// The state of one ProxySolver::update, each part owned by the rule that needs it: the tick's
+// work budget, force shading's target, friction's viscous travel, the curvature stretch's trust
+// region, and the stop rules of the move/update loop. Used only inside ProxySolver.cpp; fixed
+// size, no allocation.
+#pragma once
+
+#include "Core/Vec3.h"
+#include "Proxy/GoalSolver.h"
+#include "Proxy/ProxyParameters.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace proxima
+{
+
+/// Update stages in a tick that re-shade the target (ShadedTarget).
+inline constexpr int kMaxShadedIterations = 8;
+
+/// The largest factor the curvature correction stretches a slide by. Beyond it (a finger at the
+/// axis of an edge's cylinder, where the potential is flat around the edge) it does not stretch.
+inline constexpr double kMaxCurvatureStretch = 64.0;
+
+/// Moves in a row that bring the proxy no nearer the target before the tick ends: the paper's
+/// loop only ever decreases that distance, so a proxy that stops getting nearer is done (or is
+/// trading rounding errors between two planes, as 1 km from the origin).
+inline constexpr int kMaxStalledIterations = 3;
+
+/// Stop rule: the work budget of one tick, iterations and wall time on the steady clock (read
+/// only when a time budget is set: a scene without one pays nothing for it).
+class TickBudget
+{
+public:
+  explicit TickBudget(const ProxyParameters& parameters)
+    : m_iterations(parameters.tickBudgetIterations)
+    , m_timed(parameters.tickBudgetSeconds > 0.0)
+  {
+    if (m_timed)
+    {
+      m_deadline = std::chrono::steady_clock::now() +
+                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(parameters.tickBudgetSeconds));
+    }
+  }
+
+  /// True once `iterations` move stages have used the budget up.
+  bool spent(int iterations) const
+  {
+    if (m_iterations > 0 && iterations >= m_iterations)
+    {
+      return true;
+    }
+    return m_timed && iterations > 0 && std::chrono::steady_clock::now() >= m_deadline;
+  }
+
+private:
+  int m_iterations = 0;
+  bool m_timed = false;
+  std::chrono::steady_clock::time_point m_deadline;
+};
+
+/// Force shading (paper section 3) in one tick: the target the plain loop seeks, the finger on a
+/// plain surface and the shaded subgoal on a shaded one. Each update stage's first pass moves it
+/// until it moves by less than the accuracy scale, or for kMaxShadedIterations stages:
+/// re-shading after every move can chase a shaded normal that turns as the proxy slides (near a
+/// sharp edge of a CAD part, 229 of 5002 ticks on fandisk ran to the cap), while the plain loop
+/// toward a fixed target always settles.
+class ShadedTarget
+{
+public:
+  explicit ShadedTarget(const Vec3& finger) : m_target(finger) {}
+
+  const Vec3& target() const { return m_target; }
+  /// A shaded plane took part in an update stage this tick.
+  bool used() const { return m_used; }
+  /// Whether the target may still move after `iterations` move stages, with shaded planes at
+  /// the proxy (`anyShaded`).
+  bool moving(bool anyShaded, int iterations) const
+  {
+    return anyShaded && !m_settled && iterations < kMaxShadedIterations;
+  }
+  /// Takes this update stage's shaded subgoal; settled once it moved by at most `tolerance`.
+  void reshade(const Vec3& subgoal, double tolerance)
+  {
+    m_settled = m_used && distance(subgoal, m_target) <= tolerance;
+    m_target = subgoal;
+    m_used = true;
+  }
+
+private:
+  Vec3 m_target;
+  bool m_settled = false;
+  bool m_used = false;
+};
+
+/// Viscous friction (paper 4.2, eq. 21) in one tick: the travel the proxy has left, set by the
+/// tick's first viscous contact (ProxySolver::frictionLimitedTravel) and spent by every move.
+struct ViscousTravel
+{
+  /// Negative until set.
+  double budget = -1.0;
+
+  void spend(const Vec3& from, const Vec3& to)
+  {
+    if (budget > 0.0)
+    {
+      budget = std::max(0.0, budget - distance(to, from));
+    }
+  }
+};
+
+/// The curvature stretch's trust region in one tick (ProxySolver::curvatureCorrectedStep). A
+/// stretched slide is a Newton step: it must pay off with the move after it, or the tick goes on
+/// with plain slides (a trust region shrunk to the paper's planar steps). A crease's stretch is
+/// capped by a limit that shrinks eightfold at each stretch that did not pay off: where the
+/// curvature along a crease vanishes the cap is the step, and one bad guess should not leave the
+/// rest of the tick to creep.
+class StretchTrustRegion
+{
+public:
+  /// Whether slides may still be stretched this tick.
+  bool allowed() const { return m_allowed; }
+  /// The cap on a crease's stretch (stretchedCreaseSlide).
+  double creaseLimit() const { return m_creaseLimit; }
+
+  /// A stretched slide with `numActive` active planes was just moved along, from
+  /// `distanceBefore` from the target: the next unstretched move judges it.
+  void awaitPayoff(int numActive, double distanceBefore)
+  {
+    m_onCrease = numActive == 2;
+    m_distanceBefore = distanceBefore;
+  }
+
+  /// After an unstretched move that ended `toTarget` from the target: a stretch that ended no
+  /// nearer than it began (by `stepTolerance`) stops stretching, or on a crease stretches less.
+  void judgePayoff(double toTarget, double stepTolerance)
+  {
+    if (m_distanceBefore >= 0.0 && !(toTarget < m_distanceBefore - stepTolerance))
+    {
+      if (m_onCrease)
+      {
+        m_creaseLimit /= 8.0;
+      }
+      else
+      {
+        m_allowed = false;
+      }
+    }
+    m_distanceBefore = -1.0;
+  }
+
+private:
+  bool m_allowed = true;
+  double m_creaseLimit = kMaxCurvatureStretch;
+  bool m_onCrease = false;
+  double m_distanceBefore = -1.0; // negative: no stretch awaits its payoff
+};
+
+/// Stop rule: the last move was blocked at once (the proxy did not move) and the next goal is
+/// the same: repeating it cannot help.
+class RepeatedBlockedMove
+{
+public:
+  explicit RepeatedBlockedMove(const Vec3& proxy) : m_previousGoal(proxy) {}
+
+  bool repeats(const Vec3& goal) const { return m_blockedAtOnce && goal == m_previousGoal; }
+  void moved(const Vec3& goal, const Vec3& before, const Vec3& after)
+  {
+    m_blockedAtOnce = after == before;
+    m_previousGoal = goal;
+  }
+
+private:
+  Vec3 m_previousGoal;
+  bool m_blockedAtOnce = false;
+};
+
+/// Stop rule: kMaxStalledIterations unstretched moves in a row that bring the proxy no nearer
+/// the target: rounding traded between planes, not progress.
+class NoProgress
+{
+public:
+  /// Counts one move; true when it is the kMaxStalledIterations-th in a row without progress.
+  bool stalls(bool progressed)
+  {
+    if (progressed)
+    {
+      m_stalled = 0;
+      return false;
+    }
+    return ++m_stalled == kMaxStalledIterations;
+  }
+
+private:
+  int m_stalled = 0;
+};
+
+/// Everything one tick carries from one iteration of the move/update loop to the next.
+struct ProxyTickState
+{
+  ProxyTickState(const ProxyParameters& parameters, const Vec3& fingerInReach, const Vec3& proxy,
+                 double skin)
+    : budget(parameters)
+    , finger(fingerInReach)
+    , start(proxy)
+    , stepTolerance(0.01 * skin)
+    , shading(fingerInReach)
+    , blocked(proxy)
+  {
+  }
+
+  const TickBudget budget;
+  /// The finger, brought within ProxySolver::reachRadius().
+  const Vec3 finger;
+  /// The proxy where the tick began.
+  const Vec3 start;
+  /// Steps shorter than this are rounding noise of the goal solve, not motion: 1% of the skin.
+  const double stepTolerance;
+  /// The last update stage's goal (what the tick reports its contacts from).
+  GoalSolution solution;
+  ShadedTarget shading;
+  ViscousTravel viscous;
+  StretchTrustRegion stretch;
+  RepeatedBlockedMove blocked;
+  NoProgress progress;
+};
+
+} // namespace proxima
