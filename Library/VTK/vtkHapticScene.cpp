@@ -284,13 +284,12 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
   const bool sameObjects = m_scene && m_scene->objects.size() == objects.size();
   if (m_numRebuilt > 0 || !sameObjects)
   {
-    // The kernel's scene holds its objects by value: unchanged ones are copied, which costs far
-    // less than rebuilding their trees.
+    // The new scene shares every unchanged object with the old one: a pointer each.
     auto scene = std::make_shared<proxima::CollisionScene>();
     scene->objects.reserve(objects.size());
     for (const auto& object : objects)
     {
-      scene->objects.push_back(*object);
+      scene->addObject(object);
     }
     m_scene = std::move(scene);
     ++m_sceneVersion;
