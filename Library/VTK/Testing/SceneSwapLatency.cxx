@@ -1,11 +1,12 @@
 // Measures the time from a vtkPolyData modification to the new sphere tree being live in the
 // haptic thread, through vtkHapticScene and vtkHapticRenderer with the loops running at 4 kHz:
-//   scene-swap-latency MESH [SCALE] [REPEATS] [COPIES] [serial]
+//   scene-swap-latency MESH [SCALE] [REPEATS] [COPIES] [serial|parallel] [EDITED]
 // COPIES (default 1) objects of the mesh stand side by side. Each repeat moves every point of
-// every copy by 0.1 mm, calls Modified(), then UpdateScene (the
+// the first EDITED copies (default all) by 0.1 mm, calls Modified(), then UpdateScene (the
 // rebuild and publish, on this thread) and waits for the proxy loop to report the new version
-// live. Prints one JSON object with each repeat's times in milliseconds. A measurement program,
-// not a test: run it by hand (Documentation/VtkPipeline.md has the numbers).
+// live. Prints one JSON object with each repeat's times in milliseconds and the process's
+// resident memory after it (and its peak). A measurement program, not a test: run it by hand
+// (Documentation/VtkPipeline.md has the numbers).
 #include "VtkTestSupport.h"
 
 #include "IO/MeshReader.h"
@@ -24,9 +25,28 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <thread>
+
+namespace
+{
+// A field of /proc/self/status (VmRSS, VmHWM) in MiB, or -1 where there is none.
+double statusMiB(const std::string& field)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind(field + ":", 0) == 0)
+    {
+      return std::atof(line.c_str() + field.size() + 1) / 1024.0;
+    }
+  }
+  return -1.0;
+}
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -39,6 +59,7 @@ int main(int argc, char** argv)
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
   const int copies = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
+  const int edited = argc > 6 ? std::clamp(std::atoi(argv[6]), 1, copies) : copies;
   const proxima::TriangleSoup soup = proxima::readMeshFile(argv[1], scale);
   auto data = proxima::vtk::testing::polyDataOf(soup);
 
@@ -92,13 +113,14 @@ int main(int argc, char** argv)
     std::chrono::duration<double, std::milli>(Clock::now() - firstStart).count();
 
   std::cout << "{\n  \"mesh\": \"" << argv[1] << "\",\n  \"triangles\": " << soup.triangles.size()
-            << ",\n  \"copies\": " << copies << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
+            << ",\n  \"copies\": " << copies << ",\n  \"edited\": " << edited << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
             << ",\n  \"start_to_first_live_ms\": " << firstMs << ",\n  \"repeats\": [\n";
   for (int r = 0; r < repeats; ++r)
   {
     const auto start = Clock::now();
-    for (vtkPolyData* object : objects)
+    for (int e = 0; e < edited; ++e)
     {
+      vtkPolyData* object = objects[static_cast<std::size_t>(e)];
       vtkPoints* points = object->GetPoints();
       for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
       {
@@ -123,7 +145,9 @@ int main(int argc, char** argv)
               << ", \"modified_to_published_ms\": " << ms(modified, published)
               << ", \"scene_build_ms\": " << scene->GetLastBuildMilliseconds()
               << ", \"published_to_live_ms\": " << ms(published, live)
-              << ", \"modified_to_live_ms\": " << ms(modified, live) << "}"
+              << ", \"modified_to_live_ms\": " << ms(modified, live)
+              << ", \"rss_mib\": " << statusMiB("VmRSS") << ", \"peak_rss_mib\": "
+              << statusMiB("VmHWM") << "}"
               << (r + 1 < repeats ? "," : "") << "\n";
   }
   const proxima::LoopStatistics servo = renderer->GetServoStatistics();
