@@ -1,10 +1,13 @@
 // Measures the time from a vtkPolyData modification to the new sphere tree being live in the
 // haptic thread, through vtkHapticScene and vtkHapticRenderer with the loops running at 4 kHz:
-//   scene-swap-latency MESH [SCALE] [REPEATS] [COPIES] [serial|parallel] [EDITED]
+//   scene-swap-latency MESH [SCALE] [REPEATS] [COPIES] [serial|parallel|background] [EDITED]
 // COPIES (default 1) objects of the mesh stand side by side. Each repeat moves every point of
 // the first EDITED copies (default all) by 0.1 mm, calls Modified(), then UpdateScene (the
-// rebuild and publish, on this thread) and waits for the proxy loop to report the new version
-// live. Prints one JSON object with each repeat's times in milliseconds and the process's
+// render thread's part of the rebuild) and waits for the proxy loop to report the new version
+// live. serial builds each tree on one thread, parallel (the default) on every core, both on
+// this thread; background builds on every core on the scene's worker thread, and this thread
+// calls UpdateScene every 0.1 ms, as a render loop would each frame, until the new scene is
+// published. Prints one JSON object with each repeat's times in milliseconds and the process's
 // resident memory after it (and its peak). A measurement program, not a test: run it by hand
 // (Documentation/VtkPipeline.md has the numbers).
 #include "VtkTestSupport.h"
@@ -67,6 +70,7 @@ int main(int argc, char** argv)
   vtkNew<vtkHapticSphereTreeFilter> filter;
   filter->SetInputData(data);
   filter->SetLevel(0);
+  filter->SetParallelTreeBuild(argc <= 5 || std::string(argv[5]) != "serial");
   const auto filterStart = Clock::now();
   filter->Update();
   const double filterMs =
@@ -88,7 +92,9 @@ int main(int argc, char** argv)
     objects.push_back(copy);
   }
   scene->GenerateSurfaceOff();
-  scene->SetParallelTreeBuild(!(argc > 5 && std::string(argv[5]) == "serial"));
+  const std::string mode = argc > 5 ? argv[5] : "parallel";
+  scene->SetParallelTreeBuild(mode != "serial");
+  scene->SetBackgroundBuild(mode == "background");
   vtkNew<vtkHapticRenderer> renderer;
   renderer->SetScene(scene);
   renderer->SetServoRate(4000.0);
@@ -100,6 +106,12 @@ int main(int argc, char** argv)
                     bounds[5] + 0.01});
   renderer->SetFingerPath(path);
   const auto firstStart = Clock::now();
+  if (mode == "background")
+  {
+    // Start needs a scene: the first one is built before the loops start.
+    scene->Update();
+    scene->WaitForBuild();
+  }
   if (!renderer->Start())
   {
     std::cerr << "cannot start: " << renderer->GetStartMessage() << "\n";
@@ -112,9 +124,16 @@ int main(int argc, char** argv)
   const double firstMs =
     std::chrono::duration<double, std::milli>(Clock::now() - firstStart).count();
 
+  // What one object of the scene holds (mesh and tree): what a copy of it would cost.
+  const proxima::CollisionObject& firstObject = scene->GetCollisionScene()->objects[0];
+  const double objectMiB =
+    static_cast<double>(firstObject.mesh.memoryBytes() + firstObject.tree.memoryBytes()) /
+    (1024.0 * 1024.0);
+
   std::cout << "{\n  \"mesh\": \"" << argv[1] << "\",\n  \"triangles\": " << soup.triangles.size()
-            << ",\n  \"copies\": " << copies << ",\n  \"edited\": " << edited << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
-            << ",\n  \"start_to_first_live_ms\": " << firstMs << ",\n  \"repeats\": [\n";
+            << ",\n  \"mode\": \"" << mode << "\",\n  \"copies\": " << copies << ",\n  \"edited\": " << edited << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
+            << ",\n  \"start_to_first_live_ms\": " << firstMs
+            << ",\n  \"object_mib\": " << objectMiB << ",\n  \"repeats\": [\n";
   for (int r = 0; r < repeats; ++r)
   {
     const auto start = Clock::now();
@@ -131,7 +150,14 @@ int main(int argc, char** argv)
       points->Modified();
     }
     const auto modified = Clock::now();
-    const std::uint64_t version = renderer->UpdateScene();
+    const std::uint64_t lastPublished = renderer->GetLiveSceneVersion();
+    std::uint64_t version = renderer->UpdateScene();
+    const auto renderThreadFree = Clock::now();
+    while (version <= lastPublished)
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+      version = renderer->UpdateScene();
+    }
     const auto published = Clock::now();
     while (renderer->GetLiveSceneVersion() < version)
     {
@@ -142,6 +168,7 @@ int main(int argc, char** argv)
       return std::chrono::duration<double, std::milli>(b - a).count();
     };
     std::cout << "    {\"edit_ms\": " << ms(start, modified)
+              << ", \"render_thread_busy_ms\": " << ms(modified, renderThreadFree)
               << ", \"modified_to_published_ms\": " << ms(modified, published)
               << ", \"scene_build_ms\": " << scene->GetLastBuildMilliseconds()
               << ", \"published_to_live_ms\": " << ms(published, live)
