@@ -24,6 +24,7 @@
 #include <exception>
 #include <string>
 #include <system_error>
+#include <utility>
 
 vtkStandardNewMacro(vtkHapticScene);
 
@@ -261,11 +262,16 @@ void vtkHapticScene::RunBuild(Build& build)
     {
       scene->addObject(object);
     }
-    const std::lock_guard<std::mutex> lock(m_sceneMutex);
-    m_scene = std::move(scene);
-    ++m_sceneVersion;
-    m_lastBuildMilliseconds =
-      std::chrono::duration<double, std::milli>(Clock::now() - build.start).count();
+    std::shared_ptr<const proxima::CollisionScene> replaced;
+    {
+      const std::lock_guard<std::mutex> lock(m_sceneMutex);
+      replaced = std::exchange(m_scene, std::move(scene));
+      ++m_sceneVersion;
+      m_lastBuildMilliseconds =
+        std::chrono::duration<double, std::milli>(Clock::now() - build.start).count();
+    }
+    // If that was the last hold on the old scene, its objects are freed here, outside the lock
+    // the render thread reads the scene through.
   }
   catch (...)
   {
