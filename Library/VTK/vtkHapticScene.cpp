@@ -455,7 +455,9 @@ void vtkHapticScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxLeafSpheresPerNode: " << this->MaxLeafSpheresPerNode << "\n";
   os << indent << "GenerateSurface: " << (this->GenerateSurface ? "On" : "Off") << "\n";
   os << indent << "ParallelTreeBuild: " << (this->ParallelTreeBuild ? "On" : "Off") << "\n";
-  os << indent << "SceneVersion: " << m_sceneVersion << "\n";
+  os << indent << "BackgroundBuild: " << (this->BackgroundBuild ? "On" : "Off")
+     << (this->IsBuilding() ? " (building)" : "") << "\n";
+  os << indent << "SceneVersion: " << this->GetSceneVersion() << "\n";
   for (std::size_t i = 0; i < m_objects.size(); ++i)
   {
     const ObjectEntry& entry = m_objects[i];
