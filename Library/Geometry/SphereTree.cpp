@@ -1,5 +1,7 @@
 #include "Geometry/SphereTree.h"
 
+#include "Geometry/Private/ParallelFor.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -145,6 +147,105 @@ void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t tr
   }
 }
 
+// The box around leaves [begin, end) of `leaves`, each with its radius.
+Aabb boundsOf(const std::vector<BuildLeaf>& leaves, std::uint32_t begin, std::uint32_t end)
+{
+  Aabb box;
+  for (std::uint32_t i = begin; i < end; ++i)
+  {
+    box.expand(leaves[i].center, leaves[i].radius);
+  }
+  return box;
+}
+
+// Paper section 5: splits leaves [begin, end) (more than one) at the midpoint of the longest axis
+// of their box and returns where the right half starts. A split that leaves one side empty (or a
+// tree grown deep on clustered data) falls back to the median, which keeps the depth logarithmic
+// and the traversal stack bounded.
+std::uint32_t splitLeaves(std::vector<BuildLeaf>& leaves, std::uint32_t begin, std::uint32_t end,
+                          std::uint32_t depth, const Aabb& box)
+{
+  constexpr std::uint32_t kMedianSplitDepth = kSphereTreeMedianSplitDepth;
+  const int axis = box.longestAxis();
+  const double middle = box.center()[axis];
+  auto first = leaves.begin() + begin;
+  auto last = leaves.begin() + end;
+  auto split = std::partition(first, last,
+                              [&](const BuildLeaf& leaf) { return leaf.center[axis] < middle; });
+  if (split == first || split == last || depth > kMedianSplitDepth)
+  {
+    split = first + (end - begin) / 2;
+    std::nth_element(first, split, last, [&](const BuildLeaf& x, const BuildLeaf& y) {
+      return x.center[axis] < y.center[axis];
+    });
+  }
+  return static_cast<std::uint32_t>(split - leaves.begin());
+}
+
+// The sphere at `center` reaching every leaf sphere of [begin, end).
+Sphere enclosingLeaves(const std::vector<BuildLeaf>& leaves, const Vec3& center,
+                       std::uint32_t begin, std::uint32_t end)
+{
+  double radius = 0.0;
+  for (std::uint32_t i = begin; i < end; ++i)
+  {
+    radius = std::max(radius, distance(center, leaves[i].center) + leaves[i].radius);
+  }
+  return Sphere{center, radius};
+}
+
+Sphere enclosingTwo(const Sphere& s1, const Sphere& s2)
+{
+  const double d = distance(s1.center, s2.center);
+  if (d + s2.radius <= s1.radius)
+  {
+    return s1;
+  }
+  if (d + s1.radius <= s2.radius)
+  {
+    return s2;
+  }
+  const double radius = 0.5 * (d + s1.radius + s2.radius);
+  const Vec3 center = s1.center + (s2.center - s1.center) * ((radius - s1.radius) / d);
+  return Sphere{center, radius};
+}
+
+// An internal node's sphere: the smaller of the paper's two heuristics, the sphere around both
+// children or the box centre with a radius reaching every descendant leaf.
+Sphere parentSphere(const Sphere& left, const Sphere& right, const Sphere& aroundLeaves)
+{
+  const Sphere aroundChildren = enclosingTwo(left, right);
+  return aroundChildren.radius <= aroundLeaves.radius ? aroundChildren : aroundLeaves;
+}
+
+// The node stored in float: the centre's rounding is added to the radius, and the radius is
+// rounded up, so the stored sphere still holds every descendant leaf sphere.
+SphereTreeNode storedNode(const std::vector<BuildLeaf>& leaves, const Sphere& sphere,
+                          std::uint32_t rightOrFirst, std::uint32_t numLeafSpheres,
+                          std::uint32_t begin, std::uint32_t end)
+{
+  const Vec3 center = roundToFloatPrecision(sphere.center);
+  double radius = 0.0;
+  for (std::uint32_t i = begin; i < end && numLeafSpheres > 0; ++i)
+  {
+    radius = std::max(radius, distance(center, leaves[i].center) + leaves[i].radius);
+  }
+  if (numLeafSpheres == 0)
+  {
+    radius = sphere.radius + distance(center, sphere.center);
+  }
+  SphereTreeNode node;
+  node.center[0] = static_cast<float>(center.x);
+  node.center[1] = static_cast<float>(center.y);
+  node.center[2] = static_cast<float>(center.z);
+  node.radius = roundUpToFloat(radius);
+  node.rightOrFirst = rightOrFirst;
+  node.numLeafSpheres = numLeafSpheres;
+  return node;
+}
+
+// The serial build: one subtree, depth first, appending its nodes to `nodes` with indices
+// relative to the first.
 class TreeBuilder
 {
 public:
@@ -154,116 +255,287 @@ public:
   {
   }
 
-  // Builds the subtree over leaves [begin, end) and returns its exact (double) sphere.
+  // Builds the subtree over leaves [begin, end), whose root is at `depth`, and returns its exact
+  // (double) sphere.
   Sphere build(std::uint32_t begin, std::uint32_t end, std::uint32_t depth)
   {
     m_depth = std::max(m_depth, depth);
-    Aabb box;
-    for (std::uint32_t i = begin; i < end; ++i)
-    {
-      box.expand(m_leaves[i].center, m_leaves[i].radius);
-    }
+    const Aabb box = boundsOf(m_leaves, begin, end);
     const auto nodeIndex = static_cast<std::uint32_t>(m_nodes.size());
     m_nodes.push_back(SphereTreeNode{});
     const std::uint32_t count = end - begin;
     if (count <= m_maxPerNode)
     {
       Sphere sphere = count == 1 ? Sphere{m_leaves[begin].center, m_leaves[begin].radius}
-                                 : enclosingLeaves(box.center(), begin, end);
-      store(nodeIndex, sphere, begin, count, begin, end);
+                                 : enclosingLeaves(m_leaves, box.center(), begin, end);
+      m_nodes[nodeIndex] = storedNode(m_leaves, sphere, begin, count, begin, end);
       return sphere;
     }
-
-    // Paper section 5: split at the midpoint of the longest axis of the box. A split that leaves
-    // one side empty (or a tree grown deep on clustered data) falls back to the median, which
-    // keeps the depth logarithmic and the traversal stack bounded.
-    const int axis = box.longestAxis();
-    const double middle = box.center()[axis];
-    auto first = m_leaves.begin() + begin;
-    auto last = m_leaves.begin() + end;
-    auto split = std::partition(first, last,
-                                [&](const BuildLeaf& leaf) { return leaf.center[axis] < middle; });
-    if (split == first || split == last || depth > kMedianSplitDepth)
-    {
-      split = first + count / 2;
-      std::nth_element(first, split, last, [&](const BuildLeaf& x, const BuildLeaf& y) {
-        return x.center[axis] < y.center[axis];
-      });
-    }
-    const auto mid = static_cast<std::uint32_t>(split - m_leaves.begin());
+    const std::uint32_t mid = splitLeaves(m_leaves, begin, end, depth, box);
     const Sphere left = build(begin, mid, depth + 1);
     const auto rightIndex = static_cast<std::uint32_t>(m_nodes.size());
     const Sphere right = build(mid, end, depth + 1);
-
-    // The smaller of the paper's two heuristics: the sphere around both children, or the box
-    // centre with a radius reaching every descendant leaf.
-    const Sphere aroundChildren = enclosingTwo(left, right);
-    const Sphere aroundLeaves = enclosingLeaves(box.center(), begin, end);
-    const Sphere& sphere = aroundChildren.radius <= aroundLeaves.radius ? aroundChildren
-                                                                         : aroundLeaves;
-    store(nodeIndex, sphere, rightIndex, 0, begin, end);
+    const Sphere sphere =
+      parentSphere(left, right, enclosingLeaves(m_leaves, box.center(), begin, end));
+    m_nodes[nodeIndex] = storedNode(m_leaves, sphere, rightIndex, 0, begin, end);
     return sphere;
   }
 
   std::uint32_t depth() const { return m_depth; }
 
 private:
-  static constexpr std::uint32_t kMedianSplitDepth = kSphereTreeMedianSplitDepth;
-
-  Sphere enclosingLeaves(const Vec3& center, std::uint32_t begin, std::uint32_t end) const
-  {
-    double radius = 0.0;
-    for (std::uint32_t i = begin; i < end; ++i)
-    {
-      radius = std::max(radius, distance(center, m_leaves[i].center) + m_leaves[i].radius);
-    }
-    return Sphere{center, radius};
-  }
-
-  static Sphere enclosingTwo(const Sphere& s1, const Sphere& s2)
-  {
-    const double d = distance(s1.center, s2.center);
-    if (d + s2.radius <= s1.radius)
-    {
-      return s1;
-    }
-    if (d + s1.radius <= s2.radius)
-    {
-      return s2;
-    }
-    const double radius = 0.5 * (d + s1.radius + s2.radius);
-    const Vec3 center = s1.center + (s2.center - s1.center) * ((radius - s1.radius) / d);
-    return Sphere{center, radius};
-  }
-
-  // Stores the node in float: the centre's rounding is added to the radius, and the radius is
-  // rounded up, so the stored sphere still holds every descendant leaf sphere.
-  void store(std::uint32_t nodeIndex, const Sphere& sphere, std::uint32_t rightOrFirst,
-             std::uint32_t numLeafSpheres, std::uint32_t begin, std::uint32_t end)
-  {
-    const Vec3 center = roundToFloatPrecision(sphere.center);
-    double radius = 0.0;
-    for (std::uint32_t i = begin; i < end && numLeafSpheres > 0; ++i)
-    {
-      radius = std::max(radius, distance(center, m_leaves[i].center) + m_leaves[i].radius);
-    }
-    if (numLeafSpheres == 0)
-    {
-      radius = sphere.radius + distance(center, sphere.center);
-    }
-    SphereTreeNode& node = m_nodes[nodeIndex];
-    node.center[0] = static_cast<float>(center.x);
-    node.center[1] = static_cast<float>(center.y);
-    node.center[2] = static_cast<float>(center.z);
-    node.radius = roundUpToFloat(radius);
-    node.rightOrFirst = rightOrFirst;
-    node.numLeafSpheres = numLeafSpheres;
-  }
-
   std::vector<BuildLeaf>& m_leaves;
   std::uint32_t m_maxPerNode;
   std::vector<SphereTreeNode>& m_nodes;
   std::uint32_t m_depth = 0;
+};
+
+// Triangles per chunk of the parallel passes over a mesh: enough work to be worth a thread's turn.
+constexpr std::size_t kTrianglesPerChunk = 16384;
+// Subtrees of at most this many leaf spheres are built whole by one thread (TreeBuilder).
+constexpr std::uint32_t kLeavesPerSubtree = 8192;
+
+// The parallel build, made to give the serial build's tree bit for bit. The top of the tree is
+// split level by level, the nodes of a level in parallel, with the serial build's own split
+// (splitLeaves) on the same leaf ranges, so the leaves end up in the same order; below
+// kLeavesPerSubtree each subtree is one serial TreeBuilder run, the subtrees in parallel, each
+// into its own node array; then the arrays are laid out depth first as the serial build lays
+// them (internal nodes' right-child indices shifted by where their subtree lands) and the top
+// nodes' spheres computed from their children's exactly as TreeBuilder does. Every sphere is a
+// maximum over a leaf range, which does not depend on the order of the range.
+class ParallelTreeBuilder
+{
+public:
+  ParallelTreeBuilder(std::vector<BuildLeaf>& leaves, std::uint32_t maxPerNode,
+                      unsigned numThreads)
+    : m_leaves(leaves), m_maxPerNode(std::max<std::uint32_t>(1, maxPerNode)),
+      m_numThreads(numThreads)
+  {
+  }
+
+  // Appends the whole tree to `nodes` and returns its depth.
+  std::uint32_t build(std::vector<SphereTreeNode>& nodes)
+  {
+    splitTop();
+    buildSubtrees();
+    // The top nodes' "around the leaves" spheres, each a pass over its range.
+    FunctorOver finishTop{[this](std::size_t t) {
+      TopNode& node = m_top[t];
+      if (node.left >= 0)
+      {
+        node.aroundLeaves = enclosingLeaves(m_leaves, node.box.center(), node.begin, node.end);
+      }
+    }};
+    detail::parallelFor(0, m_top.size(), 1, finishTop, m_numThreads);
+    emit(0, nodes);
+    std::uint32_t depth = 0;
+    for (const Subtree& subtree : m_subtrees)
+    {
+      depth = std::max(depth, subtree.depth);
+    }
+    return depth;
+  }
+
+private:
+  struct TopNode
+  {
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+    std::uint32_t depth = 0;
+    Aabb box;
+    std::uint32_t mid = 0;
+    // Children in m_top, or -1 when this node is the root of subtree `subtree`.
+    std::int32_t left = -1;
+    std::int32_t right = -1;
+    std::uint32_t subtree = 0;
+    Sphere aroundLeaves;
+  };
+
+  struct Subtree
+  {
+    std::uint32_t top = 0;
+    std::vector<SphereTreeNode> nodes;
+    Sphere sphere;
+    std::uint32_t depth = 0;
+  };
+
+  // parallelFor over single indices, for passes whose items are few and large.
+  template <typename Body>
+  struct FunctorOver
+  {
+    Body body;
+    void operator()(std::size_t begin, std::size_t end)
+    {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        body(i);
+      }
+    }
+  };
+  template <typename Body>
+  FunctorOver(Body) -> FunctorOver<Body>;
+
+  bool isSubtreeRoot(const TopNode& node) const
+  {
+    return node.end - node.begin <= std::max(kLeavesPerSubtree, m_maxPerNode);
+  }
+
+  void splitTop()
+  {
+    m_top.clear();
+    m_top.push_back(TopNode{});
+    m_top[0].end = static_cast<std::uint32_t>(m_leaves.size());
+    std::vector<std::uint32_t> level{0};
+    while (!level.empty())
+    {
+      // The nodes of one level own disjoint leaf ranges: they split in parallel.
+      FunctorOver splitLevel{[&](std::size_t k) {
+        TopNode& node = m_top[level[k]];
+        if (!isSubtreeRoot(node))
+        {
+          node.box = boundsOf(m_leaves, node.begin, node.end);
+          node.mid = splitLeaves(m_leaves, node.begin, node.end, node.depth, node.box);
+        }
+      }};
+      detail::parallelFor(0, level.size(), 1, splitLevel, m_numThreads);
+      std::vector<std::uint32_t> next;
+      for (const std::uint32_t t : level)
+      {
+        if (isSubtreeRoot(m_top[t]))
+        {
+          m_top[t].subtree = static_cast<std::uint32_t>(m_subtrees.size());
+          m_subtrees.push_back(Subtree{t, {}, {}, 0});
+          continue;
+        }
+        const TopNode parent = m_top[t];
+        TopNode left;
+        left.begin = parent.begin;
+        left.end = parent.mid;
+        left.depth = parent.depth + 1;
+        TopNode right;
+        right.begin = parent.mid;
+        right.end = parent.end;
+        right.depth = parent.depth + 1;
+        m_top[t].left = static_cast<std::int32_t>(m_top.size());
+        m_top.push_back(left);
+        m_top[t].right = static_cast<std::int32_t>(m_top.size());
+        m_top.push_back(right);
+        next.push_back(static_cast<std::uint32_t>(m_top[t].left));
+        next.push_back(static_cast<std::uint32_t>(m_top[t].right));
+      }
+      level = std::move(next);
+    }
+  }
+
+  void buildSubtrees()
+  {
+    FunctorOver buildOne{[this](std::size_t s) {
+      Subtree& subtree = m_subtrees[s];
+      const TopNode& root = m_top[subtree.top];
+      subtree.nodes.reserve(2 * (root.end - root.begin) / m_maxPerNode + 2);
+      TreeBuilder builder(m_leaves, m_maxPerNode, subtree.nodes);
+      subtree.sphere = builder.build(root.begin, root.end, root.depth);
+      subtree.depth = builder.depth();
+    }};
+    detail::parallelFor(0, m_subtrees.size(), 1, buildOne, m_numThreads);
+  }
+
+  // Lays out top node t and everything under it depth first; returns its exact sphere.
+  Sphere emit(std::uint32_t t, std::vector<SphereTreeNode>& nodes)
+  {
+    const TopNode& node = m_top[t];
+    if (node.left < 0)
+    {
+      const Subtree& subtree = m_subtrees[node.subtree];
+      const auto offset = static_cast<std::uint32_t>(nodes.size());
+      for (SphereTreeNode stored : subtree.nodes)
+      {
+        if (stored.numLeafSpheres == 0)
+        {
+          stored.rightOrFirst += offset;
+        }
+        nodes.push_back(stored);
+      }
+      return subtree.sphere;
+    }
+    const auto nodeIndex = static_cast<std::uint32_t>(nodes.size());
+    nodes.push_back(SphereTreeNode{});
+    const Sphere left = emit(static_cast<std::uint32_t>(node.left), nodes);
+    const auto rightIndex = static_cast<std::uint32_t>(nodes.size());
+    const Sphere right = emit(static_cast<std::uint32_t>(node.right), nodes);
+    const Sphere sphere = parentSphere(left, right, node.aroundLeaves);
+    nodes[nodeIndex] = storedNode(m_leaves, sphere, rightIndex, 0, node.begin, node.end);
+    return sphere;
+  }
+
+  std::vector<BuildLeaf>& m_leaves;
+  std::uint32_t m_maxPerNode;
+  unsigned m_numThreads;
+  std::vector<TopNode> m_top;
+  std::vector<Subtree> m_subtrees;
+};
+
+// Appends the leaf spheres of triangle `triangle` (corners relative to the tree's origin).
+void addLeavesOf(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t triangle,
+                 double targetEdgeSquared, int maxDepth, std::vector<BuildLeaf>& leaves)
+{
+  if (longestEdgeSquared(a, b, c) <= targetEdgeSquared)
+  {
+    leaves.push_back(makeLeaf(a, b, c, triangle));
+  }
+  else
+  {
+    coverTriangle(a, b, c, triangle, targetEdgeSquared, maxDepth, leaves);
+  }
+}
+
+// The leaf spheres of a mesh's triangles, in triangle order: chunks of triangles in parallel,
+// each into its own list, joined in chunk order by Reduce (so in the order of the serial loop).
+class CoverTriangles
+{
+public:
+  CoverTriangles(const TriangleMesh& mesh, const Vec3& origin, double targetEdgeSquared,
+                 int maxDepth, std::vector<BuildLeaf>& leaves)
+    : m_mesh(mesh), m_origin(origin), m_targetEdgeSquared(targetEdgeSquared),
+      m_maxDepth(maxDepth), m_leaves(leaves),
+      m_chunks((mesh.numTriangles() + kTrianglesPerChunk - 1) / kTrianglesPerChunk)
+  {
+  }
+
+  void operator()(std::size_t begin, std::size_t end)
+  {
+    std::vector<BuildLeaf>& out = m_chunks[begin / kTrianglesPerChunk];
+    out.reserve((end - begin) + (end - begin) / 8);
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      const TriangleCorners& c = m_mesh.corners(static_cast<std::uint32_t>(t));
+      addLeavesOf(c.a - m_origin, c.b - m_origin, c.c - m_origin, static_cast<std::uint32_t>(t),
+                  m_targetEdgeSquared, m_maxDepth, out);
+    }
+  }
+
+  void Reduce()
+  {
+    std::size_t total = 0;
+    for (const std::vector<BuildLeaf>& chunk : m_chunks)
+    {
+      total += chunk.size();
+    }
+    m_leaves.reserve(total);
+    for (std::vector<BuildLeaf>& chunk : m_chunks)
+    {
+      m_leaves.insert(m_leaves.end(), chunk.begin(), chunk.end());
+      std::vector<BuildLeaf>().swap(chunk);
+    }
+  }
+
+private:
+  const TriangleMesh& m_mesh;
+  Vec3 m_origin;
+  double m_targetEdgeSquared;
+  int m_maxDepth;
+  std::vector<BuildLeaf>& m_leaves;
+  std::vector<std::vector<BuildLeaf>> m_chunks;
 };
 
 } // namespace
@@ -279,19 +551,22 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
   {
     return;
   }
+  const unsigned threads = detail::resolveThreadCount(options.numBuildThreads);
 
   double targetEdgeSquared = std::numeric_limits<double>::infinity();
   if (options.leafSizeFactor > 0.0)
   {
-    std::vector<double> edges;
-    edges.reserve(std::size_t{m_numTriangles} * 3);
-    for (std::uint32_t t = 0; t < m_numTriangles; ++t)
-    {
-      const TriangleCorners& c = mesh.corners(t);
-      edges.push_back(squaredDistance(c.a, c.b));
-      edges.push_back(squaredDistance(c.b, c.c));
-      edges.push_back(squaredDistance(c.c, c.a));
-    }
+    std::vector<double> edges(std::size_t{m_numTriangles} * 3);
+    auto squaredEdges = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+      {
+        const TriangleCorners& c = mesh.corners(static_cast<std::uint32_t>(t));
+        edges[3 * t] = squaredDistance(c.a, c.b);
+        edges[3 * t + 1] = squaredDistance(c.b, c.c);
+        edges[3 * t + 2] = squaredDistance(c.c, c.a);
+      }
+    };
+    detail::parallelFor(0, m_numTriangles, kTrianglesPerChunk, squaredEdges, threads);
     auto median = edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2);
     std::nth_element(edges.begin(), median, edges.end());
     const double target = options.leafSizeFactor * std::sqrt(*median);
@@ -308,40 +583,50 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
   }
 
   std::vector<BuildLeaf> leaves;
-  leaves.reserve(std::size_t{m_numTriangles} + m_numTriangles / 8);
-  for (std::uint32_t t = 0; t < m_numTriangles; ++t)
+  if (threads == 1)
   {
-    const TriangleCorners& c = mesh.corners(t);
-    const Vec3 a = c.a - m_origin;
-    const Vec3 b = c.b - m_origin;
-    const Vec3 cc = c.c - m_origin;
-    if (longestEdgeSquared(a, b, cc) <= targetEdgeSquared)
+    leaves.reserve(std::size_t{m_numTriangles} + m_numTriangles / 8);
+    for (std::uint32_t t = 0; t < m_numTriangles; ++t)
     {
-      leaves.push_back(makeLeaf(a, b, cc, t));
+      const TriangleCorners& c = mesh.corners(t);
+      addLeavesOf(c.a - m_origin, c.b - m_origin, c.c - m_origin, t, targetEdgeSquared,
+                  maxDepth, leaves);
     }
-    else
-    {
-      coverTriangle(a, b, cc, t, targetEdgeSquared, maxDepth, leaves);
-    }
+  }
+  else
+  {
+    CoverTriangles cover(mesh, m_origin, targetEdgeSquared, maxDepth, leaves);
+    detail::parallelFor(0, m_numTriangles, kTrianglesPerChunk, cover, threads);
   }
 
   m_nodes.reserve(2 * leaves.size() / std::max<std::uint32_t>(1, options.maxLeafSpheresPerNode) +
                   2);
-  TreeBuilder builder(leaves, options.maxLeafSpheresPerNode, m_nodes);
-  builder.build(0, static_cast<std::uint32_t>(leaves.size()), 0);
-  m_depth = builder.depth();
+  if (threads == 1)
+  {
+    TreeBuilder builder(leaves, options.maxLeafSpheresPerNode, m_nodes);
+    builder.build(0, static_cast<std::uint32_t>(leaves.size()), 0);
+    m_depth = builder.depth();
+  }
+  else
+  {
+    ParallelTreeBuilder builder(leaves, options.maxLeafSpheresPerNode, threads);
+    m_depth = builder.build(m_nodes);
+  }
   assert(m_depth <= kSphereTreeMaxDepth); // the queries' stack is sized for this
 
   m_leaves.resize(leaves.size());
-  for (std::size_t i = 0; i < leaves.size(); ++i)
-  {
-    LeafSphere& leaf = m_leaves[i];
-    leaf.center[0] = static_cast<float>(leaves[i].center.x);
-    leaf.center[1] = static_cast<float>(leaves[i].center.y);
-    leaf.center[2] = static_cast<float>(leaves[i].center.z);
-    leaf.radius = static_cast<float>(leaves[i].radius);
-    leaf.triangle = leaves[i].triangle;
-  }
+  auto storeLeaves = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      LeafSphere& leaf = m_leaves[i];
+      leaf.center[0] = static_cast<float>(leaves[i].center.x);
+      leaf.center[1] = static_cast<float>(leaves[i].center.y);
+      leaf.center[2] = static_cast<float>(leaves[i].center.z);
+      leaf.radius = static_cast<float>(leaves[i].radius);
+      leaf.triangle = leaves[i].triangle;
+    }
+  };
+  detail::parallelFor(0, leaves.size(), kTrianglesPerChunk, storeLeaves, threads);
   m_nodes.shrink_to_fit();
 }
 

@@ -25,6 +25,9 @@ struct SphereTreeOptions
   std::uint32_t maxPiecesPerTriangle = 256;
   /// Leaf spheres grouped under one leaf node (1 is the paper's tree exactly).
   std::uint32_t maxLeafSpheresPerNode = 4;
+  /// Threads that build the tree (0: one per hardware thread). The tree is the same bit for bit
+  /// whatever the number; 1 builds it on the calling thread alone.
+  unsigned numBuildThreads = 1;
 };
 
 /// Down to this depth the build splits at the midpoint of the longest axis (or at the median when
@@ -126,8 +129,8 @@ class SphereTree
 public:
   SphereTree() = default;
 
-  /// Builds the tree over `mesh` in O(n log n). The mesh must outlive nothing: queries take it
-  /// again, and must be given the same mesh.
+  /// Builds the tree over `mesh` in O(n log n), on options.numBuildThreads threads. The mesh
+  /// must outlive nothing: queries take it again, and must be given the same mesh.
   void build(const TriangleMesh& mesh, const SphereTreeOptions& options = SphereTreeOptions{});
 
   /// (a) First contact of a sphere swept from query.start to query.end with any triangle.

@@ -1,37 +1,30 @@
-// What the proxy collides with: one or more triangle meshes, each with its sphere tree. Built off
-// the haptic thread, then only read.
+// What the proxy collides with: one or more collision objects (CollisionObject.h), each a mesh
+// with its sphere tree. The scene holds them as shared immutable objects (CollisionObjectList.h):
+// a new scene after an edit reuses every object that did not change. Built off the haptic
+// thread, then only read.
 #pragma once
 
-#include "Geometry/SphereTree.h"
-#include "Geometry/TriangleMesh.h"
-#include "Proxy/SurfaceMaterial.h"
+#include "Proxy/CollisionObject.h"
+#include "Proxy/CollisionObjectList.h"
 
-#include <vector>
+#include <algorithm>
 
 namespace proxima
 {
 
-struct CollisionObject
-{
-  TriangleMesh mesh;
-  SphereTree tree;
-  SurfaceMaterial material;
-};
-
 struct CollisionScene
 {
-  std::vector<CollisionObject> objects;
+  CollisionObjectList objects;
 
   /// Adds a mesh and builds its tree. Not for the haptic thread.
   void addObject(TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{},
                  const SurfaceMaterial& material = SurfaceMaterial{})
   {
-    CollisionObject object;
-    object.mesh = std::move(mesh);
-    object.tree.build(object.mesh, options);
-    object.material = material;
-    objects.push_back(std::move(object));
+    objects.push_back(makeCollisionObject(std::move(mesh), options, material));
   }
+
+  /// Adds an object built elsewhere, shared with whatever else holds it.
+  void addObject(CollisionObjectList::Pointer object) { objects.push_back(std::move(object)); }
 
   /// Bounding-box diagonal over all objects: the scene's length scale.
   double diagonal() const

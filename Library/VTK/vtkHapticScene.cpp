@@ -1,7 +1,6 @@
 #include "VTK/vtkHapticScene.h"
 
 #include "VTK/PolyDataCollisionObject.h"
-#include "VTK/Private/ParallelFor.h"
 #include "VTK/ScenePolyData.h"
 
 #include <vtkAlgorithmOutput.h>
@@ -21,10 +20,42 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <string>
+#include <system_error>
+#include <utility>
 
 vtkStandardNewMacro(vtkHapticScene);
+
+using Clock = std::chrono::steady_clock;
+
+// One execution's work for the tree builder: the changed objects (mesh and material made on the
+// render thread, tree still empty) and the whole snapshot they belong to. The worker writes only
+// the staged objects' trees, then `failed` or the published scene; the render thread reads the
+// rest of it after joining.
+struct vtkHapticScene::Build
+{
+  struct Staged
+  {
+    int index = 0;
+    vtkDataObject* input = nullptr;
+    vtkMTimeType inputTime = 0;
+    vtkMTimeType poseTime = 0;
+    std::uint64_t settingsVersion = 0;
+    std::shared_ptr<proxima::CollisionObject> object;
+  };
+  std::vector<Staged> staged;
+  /// Every object of the new snapshot, staged or shared with the last one.
+  std::vector<std::shared_ptr<const proxima::CollisionObject>> objects;
+  proxima::SphereTreeOptions treeOptions;
+  double leafSizeFactor = 0.0;
+  int maxLeafSpheres = 0;
+  Clock::time_point start;
+  std::atomic<bool> done{false};
+  bool failed = false;
+  int failedObject = -1;
+};
 
 vtkHapticScene::vtkHapticScene()
 {
@@ -32,7 +63,14 @@ vtkHapticScene::vtkHapticScene()
   this->SetNumberOfOutputPorts(1);
 }
 
-vtkHapticScene::~vtkHapticScene() = default;
+vtkHapticScene::~vtkHapticScene()
+{
+  // A build in flight finishes first: it writes into this object.
+  if (m_worker.joinable())
+  {
+    m_worker.join();
+  }
+}
 
 int vtkHapticScene::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -45,7 +83,10 @@ int vtkHapticScene::AddObject(vtkAlgorithmOutput* polyData)
 {
   this->AddInputConnection(0, polyData);
   const int index = this->GetNumberOfInputConnections(0) - 1;
-  this->Entry(index);
+  if (m_objects.size() <= static_cast<std::size_t>(index))
+  {
+    m_objects.resize(static_cast<std::size_t>(index) + 1);
+  }
   return index;
 }
 
@@ -61,14 +102,20 @@ int vtkHapticScene::GetNumberOfObjects()
   return this->GetNumberOfInputConnections(0);
 }
 
-vtkHapticScene::ObjectEntry& vtkHapticScene::Entry(int object)
+vtkHapticScene::ObjectEntry* vtkHapticScene::Entry(int object, const char* setter)
 {
-  const auto index = static_cast<std::size_t>(std::max(object, 0));
-  if (index >= m_objects.size())
+  const int numObjects = this->GetNumberOfInputConnections(0);
+  if (object < 0 || object >= numObjects)
   {
-    m_objects.resize(index + 1);
+    vtkErrorMacro(<< setter << "(" << object << ", ...): there is no object " << object
+                  << " (the scene has " << numObjects << "); nothing changed");
+    return nullptr;
   }
-  return m_objects[index];
+  if (m_objects.size() < static_cast<std::size_t>(numObjects))
+  {
+    m_objects.resize(static_cast<std::size_t>(numObjects));
+  }
+  return &m_objects[static_cast<std::size_t>(object)];
 }
 
 const vtkHapticScene::ObjectEntry* vtkHapticScene::FindEntry(int object) const
@@ -86,11 +133,11 @@ void vtkHapticScene::SetObjectScale(int object, double scale)
                             << scale);
     return;
   }
-  ObjectEntry& entry = this->Entry(object);
-  if (entry.scale != scale)
+  ObjectEntry* entry = this->Entry(object, "SetObjectScale");
+  if (entry && entry->scale != scale)
   {
-    entry.scale = scale;
-    ++entry.settingsVersion;
+    entry->scale = scale;
+    ++entry->settingsVersion;
     this->Modified();
   }
 }
@@ -103,11 +150,11 @@ double vtkHapticScene::GetObjectScale(int object) const
 
 void vtkHapticScene::SetObjectPose(int object, vtkLinearTransform* pose)
 {
-  ObjectEntry& entry = this->Entry(object);
-  if (entry.pose != pose)
+  ObjectEntry* entry = this->Entry(object, "SetObjectPose");
+  if (entry && entry->pose != pose)
   {
-    entry.pose = pose;
-    ++entry.settingsVersion;
+    entry->pose = pose;
+    ++entry->settingsVersion;
     this->Modified();
   }
 }
@@ -128,21 +175,25 @@ void vtkHapticScene::SetObjectFriction(int object, double staticFriction, double
                             << "and 0 or more");
     return;
   }
-  ObjectEntry& entry = this->Entry(object);
-  entry.staticFriction = staticFriction;
-  entry.dynamicFriction = dynamicFriction;
-  entry.viscosity = viscosity;
-  ++entry.settingsVersion;
+  ObjectEntry* entry = this->Entry(object, "SetObjectFriction");
+  if (!entry)
+  {
+    return;
+  }
+  entry->staticFriction = staticFriction;
+  entry->dynamicFriction = dynamicFriction;
+  entry->viscosity = viscosity;
+  ++entry->settingsVersion;
   this->Modified();
 }
 
 void vtkHapticScene::SetObjectShading(int object, bool shading)
 {
-  ObjectEntry& entry = this->Entry(object);
-  if (entry.shading != shading)
+  ObjectEntry* entry = this->Entry(object, "SetObjectShading");
+  if (entry && entry->shading != shading)
   {
-    entry.shading = shading;
-    ++entry.settingsVersion;
+    entry->shading = shading;
+    ++entry->settingsVersion;
     this->Modified();
   }
 }
@@ -160,35 +211,144 @@ vtkMTimeType vtkHapticScene::GetMTime()
   return time;
 }
 
+std::shared_ptr<const proxima::CollisionScene> vtkHapticScene::GetCollisionScene() const
+{
+  const std::lock_guard<std::mutex> lock(m_sceneMutex);
+  return m_scene;
+}
+
+std::uint64_t vtkHapticScene::GetSceneVersion() const
+{
+  const std::lock_guard<std::mutex> lock(m_sceneMutex);
+  return m_sceneVersion;
+}
+
+double vtkHapticScene::GetLastBuildMilliseconds() const
+{
+  const std::lock_guard<std::mutex> lock(m_sceneMutex);
+  return m_lastBuildMilliseconds;
+}
+
+bool vtkHapticScene::IsBuilding() const
+{
+  return m_build && !m_build->done.load(std::memory_order_acquire);
+}
+
+bool vtkHapticScene::WaitForBuild()
+{
+  const bool built = this->FinishBuild();
+  if (!built)
+  {
+    // The failed objects are still stale: the next Update must execute to build them again.
+    this->Modified();
+  }
+  return built;
+}
+
+void vtkHapticScene::RunBuild(Build& build)
+{
+  try
+  {
+    for (Build::Staged& staged : build.staged)
+    {
+      build.failedObject = staged.index;
+      staged.object->tree.build(staged.object->mesh, build.treeOptions);
+    }
+    build.failedObject = -1;
+    // The new snapshot is a vector of pointers: unchanged objects are shared, not copied.
+    auto scene = std::make_shared<proxima::CollisionScene>();
+    scene->objects.reserve(build.objects.size());
+    for (const auto& object : build.objects)
+    {
+      scene->addObject(object);
+    }
+    std::shared_ptr<const proxima::CollisionScene> replaced;
+    {
+      const std::lock_guard<std::mutex> lock(m_sceneMutex);
+      replaced = std::exchange(m_scene, std::move(scene));
+      ++m_sceneVersion;
+      m_lastBuildMilliseconds =
+        std::chrono::duration<double, std::milli>(Clock::now() - build.start).count();
+    }
+    // If that was the last hold on the old scene, its objects are freed here, outside the lock
+    // the render thread reads the scene through.
+  }
+  catch (...)
+  {
+    // Out of memory: no new snapshot; the render thread reports it (VTK's error output is
+    // not for this thread).
+    build.failed = true;
+  }
+  build.done.store(true, std::memory_order_release);
+}
+
+bool vtkHapticScene::FinishBuild()
+{
+  if (m_worker.joinable())
+  {
+    m_worker.join();
+  }
+  if (!m_build)
+  {
+    return true;
+  }
+  const std::unique_ptr<Build> build = std::move(m_build);
+  if (build->failed)
+  {
+    vtkErrorMacro("Cannot build the sphere tree of object "
+                  << build->failedObject << " (out of memory?); the previous scene stays in use");
+    return false;
+  }
+  for (const Build::Staged& staged : build->staged)
+  {
+    ObjectEntry& entry = m_objects[static_cast<std::size_t>(staged.index)];
+    entry.built = staged.object;
+    entry.builtFrom = staged.input;
+    entry.builtFromTime = staged.inputTime;
+    entry.builtPoseTime = staged.poseTime;
+    entry.builtSettingsVersion = staged.settingsVersion;
+    entry.builtLeafSizeFactor = build->leafSizeFactor;
+    entry.builtMaxLeafSpheres = build->maxLeafSpheres;
+  }
+  return true;
+}
+
 int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                 vtkInformationVector* outputVector)
 {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   const int numObjects = inputVector[0]->GetNumberOfInformationObjects();
   m_numRebuilt = 0;
+  // One build at a time. If the last one failed, its objects are still stale and are staged
+  // again below.
+  this->FinishBuild();
   if (numObjects == 0)
   {
     vtkErrorMacro("A haptic scene needs at least one object (AddObject).");
     return 0;
   }
-
-  // Build every changed object first; only when all are complete does a new snapshot replace
-  // the old one, so a failure leaves the last good scene in place. The checks and conversion
-  // touch VTK and run one object at a time; the trees, plain kernel code and most of the work,
-  // are built in parallel (vtkSMPTools), one object per task.
-  struct Staged
+  if (m_objects.size() < static_cast<std::size_t>(numObjects))
   {
-    int index;
-    vtkDataObject* input;
-    vtkMTimeType poseTime;
-    proxima::CollisionObject object;
-  };
-  std::vector<Staged> staged;
+    m_objects.resize(static_cast<std::size_t>(numObjects));
+  }
+
+  // Stage every changed object: the checks and conversion touch VTK and run here, one object at
+  // a time; the trees, plain kernel code and most of the work, are built by RunBuild, here or on
+  // the worker. Only when every tree is complete does a new snapshot replace the old one, so a
+  // failure leaves the last good scene in place.
+  auto build = std::make_unique<Build>();
+  build->start = start;
+  build->leafSizeFactor = this->LeafSizeFactor;
+  build->maxLeafSpheres = this->MaxLeafSpheresPerNode;
+  build->treeOptions.leafSizeFactor = this->LeafSizeFactor;
+  build->treeOptions.maxLeafSpheresPerNode =
+    static_cast<std::uint32_t>(this->MaxLeafSpheresPerNode);
+  build->treeOptions.numBuildThreads = this->ParallelTreeBuild ? 0u : 1u;
   for (int i = 0; i < numObjects; ++i)
   {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], i);
-    ObjectEntry& entry = this->Entry(i);
+    const ObjectEntry& entry = m_objects[static_cast<std::size_t>(i)];
     const vtkMTimeType poseTime = entry.pose ? entry.pose->GetMTime() : 0;
     const bool stale = !entry.built || entry.builtFrom != input ||
                        entry.builtFromTime != input->GetMTime() ||
@@ -198,6 +358,7 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
                        entry.builtMaxLeafSpheres != this->MaxLeafSpheresPerNode;
     if (!stale)
     {
+      build->objects.push_back(entry.built);
       continue;
     }
     proxima::vtk::PolyDataObjectSettings settings;
@@ -207,11 +368,16 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
     settings.material.staticFriction = entry.staticFriction;
     settings.material.dynamicFriction = entry.dynamicFriction;
     settings.material.viscosity = entry.viscosity;
+    Build::Staged staged;
+    staged.index = i;
+    staged.input = input;
+    staged.inputTime = input->GetMTime();
+    staged.poseTime = poseTime;
+    staged.settingsVersion = entry.settingsVersion;
     try
     {
-      staged.push_back(Staged{i, input, poseTime,
-                              proxima::vtk::prepareCollisionObject(
-                                input, "vtkHapticScene object " + std::to_string(i), settings)});
+      staged.object = std::make_shared<proxima::CollisionObject>(proxima::vtk::prepareCollisionObject(
+        input, "vtkHapticScene object " + std::to_string(i), settings));
     }
     catch (const std::exception& error)
     {
@@ -219,89 +385,65 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
                                            << " (the previous scene stays in use)");
       return 0;
     }
+    build->objects.push_back(staged.object);
+    build->staged.push_back(std::move(staged));
     this->UpdateProgress(0.2 * (i + 1) / numObjects);
     if (this->GetAbortExecute())
     {
       return 1;
     }
   }
+  m_numRebuilt = static_cast<int>(build->staged.size());
 
-  proxima::SphereTreeOptions treeOptions;
-  treeOptions.leafSizeFactor = this->LeafSizeFactor;
-  treeOptions.maxLeafSpheresPerNode = static_cast<std::uint32_t>(this->MaxLeafSpheresPerNode);
-  std::vector<char> failed(staged.size(), 0);
-  auto buildTree = [&](long k) {
+  const std::shared_ptr<const proxima::CollisionScene> last = this->GetCollisionScene();
+  const bool sameObjects = last && last->objects.size() == build->objects.size();
+  if (build->staged.empty() && sameObjects)
+  {
+    if (this->GenerateSurface)
+    {
+      proxima::vtk::scenePolyData(*last, output);
+    }
+    this->UpdateProgress(1.0);
+    return 1;
+  }
+
+  if (this->BackgroundBuild && !build->staged.empty())
+  {
+    if (this->GenerateSurface)
+    {
+      // From the new meshes, before the worker starts (it writes only the trees).
+      proxima::CollisionScene upcoming;
+      for (const auto& object : build->objects)
+      {
+        upcoming.addObject(object);
+      }
+      proxima::vtk::scenePolyData(upcoming, output);
+    }
+    m_build = std::move(build);
     try
     {
-      auto& object = staged[static_cast<std::size_t>(k)].object;
-      object.tree.build(object.mesh, treeOptions);
+      m_worker = std::thread([this, job = m_build.get()] { this->RunBuild(*job); });
     }
-    catch (...)
+    catch (const std::system_error&)
     {
-      failed[static_cast<std::size_t>(k)] = 1;
+      // No thread to be had: build here instead.
+      this->RunBuild(*m_build);
     }
-  };
-  if (this->ParallelTreeBuild && staged.size() > 1)
-  {
-    proxima::vtk::detail::parallelForEach(static_cast<long>(staged.size()), buildTree);
+    this->UpdateProgress(1.0);
+    return 1;
   }
-  else
+
+  m_build = std::move(build);
+  this->RunBuild(*m_build);
+  if (!this->FinishBuild())
   {
-    for (std::size_t k = 0; k < staged.size(); ++k)
-    {
-      buildTree(static_cast<long>(k));
-    }
-  }
-  for (std::size_t k = 0; k < staged.size(); ++k)
-  {
-    if (failed[k])
-    {
-      vtkErrorMacro("Cannot build the sphere tree of object "
-                    << staged[k].index << " (out of memory?); the previous scene stays in use");
-      return 0;
-    }
+    return 0;
   }
   this->UpdateProgress(0.8);
-
-  for (Staged& built : staged)
-  {
-    ObjectEntry& entry = this->Entry(built.index);
-    entry.built = std::make_shared<const proxima::CollisionObject>(std::move(built.object));
-    entry.builtFrom = built.input;
-    entry.builtFromTime = built.input->GetMTime();
-    entry.builtPoseTime = built.poseTime;
-    entry.builtSettingsVersion = entry.settingsVersion;
-    entry.builtLeafSizeFactor = this->LeafSizeFactor;
-    entry.builtMaxLeafSpheres = this->MaxLeafSpheresPerNode;
-    ++m_numRebuilt;
-  }
-  std::vector<std::shared_ptr<const proxima::CollisionObject>> objects;
-  for (int i = 0; i < numObjects; ++i)
-  {
-    objects.push_back(this->Entry(i).built);
-  }
-
-  const bool sameObjects = m_scene && m_scene->objects.size() == objects.size();
-  if (m_numRebuilt > 0 || !sameObjects)
-  {
-    // The kernel's scene holds its objects by value: unchanged ones are copied, which costs far
-    // less than rebuilding their trees.
-    auto scene = std::make_shared<proxima::CollisionScene>();
-    scene->objects.reserve(objects.size());
-    for (const auto& object : objects)
-    {
-      scene->objects.push_back(*object);
-    }
-    m_scene = std::move(scene);
-    ++m_sceneVersion;
-  }
-
   if (this->GenerateSurface)
   {
-    proxima::vtk::scenePolyData(*m_scene, output);
+    proxima::vtk::scenePolyData(*this->GetCollisionScene(), output);
   }
-  m_lastBuildMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -313,7 +455,9 @@ void vtkHapticScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxLeafSpheresPerNode: " << this->MaxLeafSpheresPerNode << "\n";
   os << indent << "GenerateSurface: " << (this->GenerateSurface ? "On" : "Off") << "\n";
   os << indent << "ParallelTreeBuild: " << (this->ParallelTreeBuild ? "On" : "Off") << "\n";
-  os << indent << "SceneVersion: " << m_sceneVersion << "\n";
+  os << indent << "BackgroundBuild: " << (this->BackgroundBuild ? "On" : "Off")
+     << (this->IsBuilding() ? " (building)" : "") << "\n";
+  os << indent << "SceneVersion: " << this->GetSceneVersion() << "\n";
   for (std::size_t i = 0; i < m_objects.size(); ++i)
   {
     const ObjectEntry& entry = m_objects[i];

@@ -3,7 +3,9 @@
 // CollisionScene from them, an immutable snapshot that vtkHapticRenderer hands to the haptic
 // threads. Editing an input's poly data, a pose transform or a material marks the scene modified,
 // and the next Update rebuilds only the objects that changed and makes a new snapshot (a new
-// version); the haptic threads keep running on the old one until the new one is complete.
+// version) that shares every unchanged object with the old one; the haptic threads keep running
+// on the old one until the new one is complete. With BackgroundBuild on, the trees are built on
+// the scene's worker thread and Update returns as soon as the poly data is converted.
 //
 // The output is the scene's surface as the proxy feels it (every object scaled and placed, one
 // poly data, cell data "ObjectId"), for drawing.
@@ -14,8 +16,11 @@
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 class vtkLinearTransform;
@@ -33,6 +38,9 @@ public:
   /// calling its Modified() rebuilds the object at the next Update.
   int AddObjectData(vtkPolyData* polyData);
   int GetNumberOfObjects();
+
+  // The per-object setters refuse (vtkErrorMacro, no change) an index that is not an object's:
+  // below 0, or not yet added.
 
   ///@{
   /// Per object: units to metres (default 1).
@@ -65,14 +73,31 @@ public:
   ///@}
 
   ///@{
-  /// Build the trees of several changed objects at once with vtkSMPTools, one object per task
-  /// (default on; off builds one tree at a time). Two edited 1.5M-triangle objects on two cores:
-  /// 955 ms from the edit to live instead of 1325-1470 ms (Documentation/VtkPipeline.md). One
-  /// object's tree is one serial build either way.
+  /// Build each changed object's sphere tree on every hardware thread (default on; off builds
+  /// it on one). The tree is the same bit for bit either way (SphereTreeOptions::numBuildThreads).
   vtkSetMacro(ParallelTreeBuild, vtkTypeBool);
   vtkGetMacro(ParallelTreeBuild, vtkTypeBool);
   vtkBooleanMacro(ParallelTreeBuild, vtkTypeBool);
   ///@}
+
+  ///@{
+  /// Build the changed objects' trees on the scene's worker thread (default off). Off, Update
+  /// returns with the new snapshot made. On, Update checks and converts the changed poly data
+  /// (the part that touches VTK, on the calling thread), starts the tree builds and returns; the
+  /// new snapshot replaces the old one when every tree is built (GetSceneVersion rises, and
+  /// vtkHapticRenderer::UpdateScene publishes it at its next call). The haptic threads run on
+  /// the old scene meanwhile. One build at a time: an Update that executes the scene while a
+  /// build runs waits for it first. The output surface is made from the new meshes at once.
+  vtkSetMacro(BackgroundBuild, vtkTypeBool);
+  vtkGetMacro(BackgroundBuild, vtkTypeBool);
+  vtkBooleanMacro(BackgroundBuild, vtkTypeBool);
+  ///@}
+
+  /// True while a background build runs.
+  bool IsBuilding() const;
+  /// Waits for a background build to finish and takes its objects. False if it failed (an
+  /// error is reported, the previous scene stays, and the next Update tries again).
+  bool WaitForBuild();
 
   ///@{
   /// Make the output surface (default on). Off saves a copy of every mesh per rebuild where
@@ -83,13 +108,16 @@ public:
   ///@}
 
   /// The last snapshot built (null before the first successful Update). Immutable: the haptic
-  /// threads may hold it while a newer one is built.
-  std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const { return m_scene; }
+  /// threads may hold it while a newer one is built. These three may be read while a background
+  /// build runs.
+  std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const;
   /// 1 for the first snapshot, then +1 for each rebuilt one (0 before the first).
-  std::uint64_t GetSceneVersion() const { return m_sceneVersion; }
-  /// Objects rebuilt by the last execution, and its wall time in milliseconds.
+  std::uint64_t GetSceneVersion() const;
+  /// Wall time in milliseconds from the start of the execution that made the last snapshot to
+  /// the snapshot complete.
+  double GetLastBuildMilliseconds() const;
+  /// Objects the last execution rebuilt (or, with a background build, is rebuilding).
   int GetNumberOfObjectsRebuilt() const { return m_numRebuilt; }
-  double GetLastBuildMilliseconds() const { return m_lastBuildMilliseconds; }
 
   /// Includes the pose transforms, so that editing one re-executes the scene.
   vtkMTimeType GetMTime() override;
@@ -105,6 +133,7 @@ protected:
   int MaxLeafSpheresPerNode = 4;
   vtkTypeBool GenerateSurface = 1;
   vtkTypeBool ParallelTreeBuild = 1;
+  vtkTypeBool BackgroundBuild = 0;
 
 private:
   vtkHapticScene(const vtkHapticScene&) = delete;
@@ -120,7 +149,7 @@ private:
     double viscosity = 0.0;
     /// Bumped by every per-object setter, so that a material change rebuilds this object.
     std::uint64_t settingsVersion = 1;
-    // What the cached object was built from.
+    // The object in the newest snapshot, and what it was built from.
     std::shared_ptr<const proxima::CollisionObject> built;
     vtkDataObject* builtFrom = nullptr;
     vtkMTimeType builtFromTime = 0;
@@ -129,12 +158,26 @@ private:
     double builtLeafSizeFactor = -1.0;
     int builtMaxLeafSpheres = 0;
   };
-  ObjectEntry& Entry(int object);
+  /// The entry of an object, or null (with an error naming `setter`) for an index that is not
+  /// an object's.
+  ObjectEntry* Entry(int object, const char* setter);
   const ObjectEntry* FindEntry(int object) const;
 
+  /// One execution's tree builds and the snapshot they make (defined in the .cpp).
+  struct Build;
+  /// Builds the trees and publishes the snapshot: on the worker thread, or inline.
+  void RunBuild(Build& build);
+  /// Joins the worker and takes the objects of its build into the entries; false (and an
+  /// error) if the build failed.
+  bool FinishBuild();
+
   std::vector<ObjectEntry> m_objects;
+  int m_numRebuilt = 0;
+  std::unique_ptr<Build> m_build;
+  std::thread m_worker;
+  // What the worker writes and the render thread reads.
+  mutable std::mutex m_sceneMutex;
   std::shared_ptr<const proxima::CollisionScene> m_scene;
   std::uint64_t m_sceneVersion = 0;
-  int m_numRebuilt = 0;
   double m_lastBuildMilliseconds = 0.0;
 };

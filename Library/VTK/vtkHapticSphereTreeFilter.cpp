@@ -50,6 +50,7 @@ int vtkHapticSphereTreeFilter::RequestData(vtkInformation*, vtkInformationVector
     settings.scale = this->Scale;
     settings.tree.leafSizeFactor = this->LeafSizeFactor;
     settings.tree.maxLeafSpheresPerNode = static_cast<std::uint32_t>(this->MaxLeafSpheresPerNode);
+    settings.tree.numBuildThreads = this->ParallelTreeBuild ? 0u : 1u;
     proxima::vtk::PolyDataObjectReport report;
     try
     {
@@ -120,6 +121,7 @@ void vtkHapticSphereTreeFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SphereResolution: " << this->SphereResolution << "\n";
   os << indent << "LeafSizeFactor: " << this->LeafSizeFactor << "\n";
   os << indent << "MaxLeafSpheresPerNode: " << this->MaxLeafSpheresPerNode << "\n";
+  os << indent << "ParallelTreeBuild: " << (this->ParallelTreeBuild ? "On" : "Off") << "\n";
   os << indent << "Tree: ";
   if (m_object)
   {

@@ -58,6 +58,14 @@ public:
   vtkGetMacro(MaxLeafSpheresPerNode, int);
   ///@}
 
+  ///@{
+  /// Build the tree on every hardware thread (default on; off builds it on one). The tree is the
+  /// same bit for bit either way, so changing this does not rebuild it.
+  vtkSetMacro(ParallelTreeBuild, vtkTypeBool);
+  vtkGetMacro(ParallelTreeBuild, vtkTypeBool);
+  vtkBooleanMacro(ParallelTreeBuild, vtkTypeBool);
+  ///@}
+
   /// The mesh and tree of the last successful execution (null before one), shared so that a
   /// scene can hold it after this filter has moved on; no material (a scene gives it one).
   std::shared_ptr<const proxima::CollisionObject> GetCollisionObject() const { return m_object; }
@@ -76,6 +84,7 @@ protected:
   int SphereResolution = 12;
   double LeafSizeFactor = 2.0;
   int MaxLeafSpheresPerNode = 4;
+  vtkTypeBool ParallelTreeBuild = 1;
 
 private:
   vtkHapticSphereTreeFilter(const vtkHapticSphereTreeFilter&) = delete;

@@ -6,7 +6,9 @@
 #include "Geometry/ProceduralMeshes.h"
 #include "VTK/vtkHapticScene.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -15,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <limits>
 
 namespace
@@ -141,6 +144,91 @@ TEST_F(TwoObjects, ParallelTreeBuildsEqualSerialOnes)
       EXPECT_EQ(a[n].rightOrFirst, b[n].rightOrFirst);
     }
   }
+}
+
+TEST_F(TwoObjects, ANewSnapshotSharesTheObjectsAnEditDidNotTouch)
+{
+  scene->Update();
+  const auto first = scene->GetCollisionScene();
+  scene->SetObjectFriction(1, 0.2, 0.1, 0.0);
+  scene->Update();
+  const auto second = scene->GetCollisionScene();
+  ASSERT_NE(second, first);
+  // The box is the same object in both, not a copy; the sphere is a new one.
+  EXPECT_EQ(second->objects.shared(0), first->objects.shared(0));
+  EXPECT_NE(second->objects.shared(1), first->objects.shared(1));
+}
+
+TEST_F(TwoObjects, ABackgroundBuildKeepsTheOldSceneUntilTheNewOneIsComplete)
+{
+  scene->BackgroundBuildOn();
+  scene->Update();
+  ASSERT_TRUE(scene->WaitForBuild());
+  const auto first = scene->GetCollisionScene();
+  ASSERT_TRUE(first);
+  EXPECT_EQ(scene->GetSceneVersion(), 1u);
+
+  double p[3];
+  box->GetPoint(0, p);
+  box->GetPoints()->SetPoint(0, p[0] - 0.01, p[1], p[2]);
+  box->GetPoints()->Modified();
+  scene->Update();
+  EXPECT_EQ(scene->GetNumberOfObjectsRebuilt(), 1);
+  // Until the worker is done, the last snapshot is the one in use.
+  if (scene->IsBuilding())
+  {
+    EXPECT_EQ(scene->GetCollisionScene(), first);
+  }
+  ASSERT_TRUE(scene->WaitForBuild());
+  EXPECT_FALSE(scene->IsBuilding());
+  EXPECT_EQ(scene->GetSceneVersion(), 2u);
+  const auto second = scene->GetCollisionScene();
+  EXPECT_DOUBLE_EQ(second->objects[0].mesh.points()[0].x, p[0] - 0.01);
+  EXPECT_EQ(second->objects.shared(1), first->objects.shared(1));
+  // The tree was built (the same as a build on the calling thread).
+  vtkNew<vtkHapticScene> inline_;
+  inline_->AddObjectData(box);
+  inline_->Update();
+  const auto& built = second->objects[0].tree.nodes();
+  const auto& oracle = inline_->GetCollisionScene()->objects[0].tree.nodes();
+  ASSERT_EQ(built.size(), oracle.size());
+  EXPECT_EQ(std::memcmp(built.data(), oracle.data(), built.size() * sizeof(built[0])), 0);
+
+  // Nothing changed: no build, no new version.
+  scene->Update();
+  EXPECT_FALSE(scene->IsBuilding());
+  EXPECT_EQ(scene->GetSceneVersion(), 2u);
+}
+
+TEST_F(TwoObjects, SettersRefuseAnIndexThatIsNoObject)
+{
+  scene->Update();
+  const auto before = scene->GetCollisionScene();
+  // Each refusal is an error event (an observer takes it instead of the output window).
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> countErrors;
+  countErrors->SetClientData(&errors);
+  countErrors->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  scene->AddObserver(vtkCommand::ErrorEvent, countErrors);
+  for (const int bad : {-1, 2, 1000})
+  {
+    scene->SetObjectScale(bad, 3.0);
+    scene->SetObjectFriction(bad, 0.9, 0.9, 1.0);
+    scene->SetObjectShading(bad, true);
+    scene->SetObjectPose(bad, pose);
+  }
+  scene->RemoveObserver(countErrors);
+  EXPECT_EQ(errors, 12);
+  // Object 0 (which std::max(object, 0) once edited for -1) and object 1 are as they were.
+  EXPECT_EQ(scene->GetObjectScale(0), 1.0);
+  EXPECT_EQ(scene->GetObjectScale(1), 2.0);
+  EXPECT_EQ(scene->GetObjectPose(0), nullptr);
+  EXPECT_EQ(scene->GetObjectScale(-1), 1.0);
+  scene->Update();
+  EXPECT_EQ(scene->GetCollisionScene(), before);
+  EXPECT_EQ(scene->GetSceneVersion(), 1u);
+  EXPECT_EQ(before->objects[0].material.staticFriction, 0.5);
 }
 
 TEST_F(TwoObjects, ABadEditKeepsTheLastGoodScene)

@@ -1,0 +1,34 @@
+// One thing the proxy collides with: a triangle mesh, its sphere tree and its surface material.
+// Built once off the haptic thread and then never changed, so that scenes can share it: a scene
+// edit makes new objects only for what changed and points at the rest (CollisionScene.h).
+#pragma once
+
+#include "Geometry/SphereTree.h"
+#include "Geometry/TriangleMesh.h"
+#include "Proxy/SurfaceMaterial.h"
+
+#include <memory>
+
+namespace proxima
+{
+
+struct CollisionObject
+{
+  TriangleMesh mesh;
+  SphereTree tree;
+  SurfaceMaterial material;
+};
+
+/// Builds the tree over `mesh` and wraps the object for sharing. Not for the haptic thread.
+inline std::shared_ptr<const CollisionObject>
+makeCollisionObject(TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{},
+                    const SurfaceMaterial& material = SurfaceMaterial{})
+{
+  auto object = std::make_shared<CollisionObject>();
+  object->mesh = std::move(mesh);
+  object->tree.build(object->mesh, options);
+  object->material = material;
+  return object;
+}
+
+} // namespace proxima
