@@ -4,7 +4,7 @@
 #include "Validators.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "IO/MeshWriter.h"
+#include "IO/Mesh/MeshWriter.h"
 
 #include <nlohmann/json.hpp>
 

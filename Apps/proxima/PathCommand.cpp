@@ -3,9 +3,9 @@
 // placed by the surface itself.
 #include "Command.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/MeshReader.h"
-#include "IO/SceneBuilder.h"
+#include "IO/Mesh/MeshReader.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/Scene/SceneBuilder.h"
 #include "Runtime/PathGenerators.h"
 
 #include <cstdint>

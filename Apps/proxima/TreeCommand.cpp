@@ -4,7 +4,7 @@
 #include "Validators.h"
 
 #include "Geometry/SphereTree.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,8 +6,8 @@
 #include "DeviceChoice.h"
 #include "SceneOptions.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/InputError.h"
+#include "IO/InputChecks/InputError.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "VTK/ScenePolyData.h"

@@ -3,7 +3,7 @@
 // (one line on stderr naming the file and the defect), 1 internal error.
 #include "Command.h"
 
-#include "IO/InputError.h"
+#include "IO/InputChecks/InputError.h"
 
 #include <CLI/CLI.hpp>
 

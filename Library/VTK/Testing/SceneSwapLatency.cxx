@@ -8,7 +8,7 @@
 // not a test: run it by hand (Documentation/VtkPipeline.md has the numbers).
 #include "VtkTestSupport.h"
 
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticScene.h"
 #include "VTK/vtkHapticSphereTreeFilter.h"
