@@ -418,9 +418,7 @@ int run(const RunOptions& options)
 Command addRunCommand(CLI::App& parent)
 {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* app = parent.add_subcommand(
-    "run", "Play a finger path through a mesh or a scene in lockstep mode; write the trace and a "
-           "summary");
+  CLI::App* app = parent.add_subcommand(kRunSummary.name, kRunSummary.description);
   addSceneOptionsThroughPath(*app, options->scene);
   app->add_option("--out", options->out, "Trace CSV to write (trace v2: v1's columns, then "
                                          "object and flags)")
