@@ -1,3 +1,6 @@
+// readTextureImage through OpenImageIO. Built into the module proxima-texture-images, which
+// SceneIO loads the first time an image is read (TextureImageOnUse.cpp): OpenImageIO and its
+// codecs are some 260 shared libraries, which a run without a texture should not load.
 #include "IO/Scene/TextureImageFile.h"
 
 #include "IO/InputChecks/FileChecks.h"
@@ -189,19 +192,6 @@ ChannelPlan planChannels(const std::string& path, const OIIO::ImageSpec& spec,
 }
 
 } // namespace
-
-const char* textureChannelName(TextureChannel channel)
-{
-  switch (channel)
-  {
-  case TextureChannel::Luminance: return "luminance";
-  case TextureChannel::Red: return "red";
-  case TextureChannel::Green: return "green";
-  case TextureChannel::Blue: return "blue";
-  case TextureChannel::Alpha: return "alpha";
-  }
-  return "unknown";
-}
 
 TextureImage readTextureImage(const std::string& path, TextureChannel channel)
 {
