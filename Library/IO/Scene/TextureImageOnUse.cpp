@@ -10,9 +10,11 @@ namespace proxima
 
 TextureImage readTextureImage(const std::string& path, TextureChannel channel)
 {
-  static const auto read = reinterpret_cast<detail::ReadTextureImageEntry>(
-    detail::moduleEntry(PROXIMA_MODULE_PROXIMA_TEXTURE_IMAGES, detail::kReadTextureImageEntry));
-  return read(path, channel);
+  // Loaded once, by the first caller (a function-local static is initialised thread-safely).
+  static const detail::TextureImageReaders* const table =
+    reinterpret_cast<const detail::TextureImageReaders* (*)()>(detail::moduleEntry(
+      PROXIMA_MODULE_PROXIMA_TEXTURE_IMAGES, detail::kTextureImageReadersEntry))();
+  return table->readTextureImage(path, channel);
 }
 
 } // namespace proxima

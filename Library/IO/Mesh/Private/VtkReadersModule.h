@@ -1,5 +1,6 @@
-// The entries of the module proxima-vtk-mesh-readers (VtkReadersModule.cpp), which MeshIO loads
-// on first use (VtkReadersOnUse.cpp): VtkReaders.h's two functions under C names that dlsym finds.
+// The entry of the module proxima-vtk-mesh-readers (VtkReadersModule.cpp), which MeshIO loads on
+// first use (VtkReadersOnUse.cpp): a table of VtkReaders.h's two functions, returned by a
+// function with a C name that dlsym finds.
 #pragma once
 
 #include "IO/Mesh/MeshFileFormat.h"
@@ -13,10 +14,14 @@ class vtkPolyData;
 namespace proxima::detail
 {
 
-using ReadWithVtkEntry = vtkSmartPointer<vtkPolyData> (*)(const std::string&, MeshFileFormat);
-using ReadGltfWithVtkEntry = vtkSmartPointer<vtkPolyData> (*)(const std::string&,
-                                                               const std::string&);
-inline constexpr const char* kReadWithVtkEntry = "proximaReadWithVtk";
-inline constexpr const char* kReadGltfWithVtkEntry = "proximaReadGltfWithVtk";
+struct VtkMeshReaders
+{
+  vtkSmartPointer<vtkPolyData> (*readWithVtk)(const std::string& path, MeshFileFormat format);
+  vtkSmartPointer<vtkPolyData> (*readGltfWithVtk)(const std::string& vtkPath,
+                                                  const std::string& userPath);
+};
+
+/// The name of `const VtkMeshReaders* entry()` in the module.
+inline constexpr const char* kVtkMeshReadersEntry = "proximaVtkMeshReaders";
 
 } // namespace proxima::detail

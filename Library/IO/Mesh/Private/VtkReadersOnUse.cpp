@@ -9,19 +9,26 @@
 
 namespace proxima::detail
 {
+namespace
+{
+const VtkMeshReaders& readers()
+{
+  // Loaded once, by the first caller (a function-local static is initialised thread-safely).
+  static const VtkMeshReaders* const table =
+    reinterpret_cast<const VtkMeshReaders* (*)()>(
+      moduleEntry(PROXIMA_MODULE_PROXIMA_VTK_MESH_READERS, kVtkMeshReadersEntry))();
+  return *table;
+}
+} // namespace
 
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format)
 {
-  static const auto read = reinterpret_cast<ReadWithVtkEntry>(
-    moduleEntry(PROXIMA_MODULE_PROXIMA_VTK_MESH_READERS, kReadWithVtkEntry));
-  return read(path, format);
+  return readers().readWithVtk(path, format);
 }
 
 vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath)
 {
-  static const auto read = reinterpret_cast<ReadGltfWithVtkEntry>(
-    moduleEntry(PROXIMA_MODULE_PROXIMA_VTK_MESH_READERS, kReadGltfWithVtkEntry));
-  return read(vtkPath, userPath);
+  return readers().readGltfWithVtk(vtkPath, userPath);
 }
 
 } // namespace proxima::detail

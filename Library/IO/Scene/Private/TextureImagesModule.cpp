@@ -1,9 +1,9 @@
-// The module proxima-texture-images: TextureImageFile.cpp's reader behind a C name for dlsym
-// (TextureImagesModule.h). Exceptions (InputError) pass through to the caller as they are.
+// The module proxima-texture-images: TextureImageFile.cpp's reader in the table of
+// TextureImagesModule.h. Exceptions (InputError) pass through to the caller as they are.
 #include "IO/Scene/Private/TextureImagesModule.h"
 
-extern "C" proxima::TextureImage proximaReadTextureImage(const std::string& path,
-                                                         proxima::TextureChannel channel)
+extern "C" const proxima::detail::TextureImageReaders* proximaTextureImageReaders()
 {
-  return proxima::readTextureImage(path, channel);
+  static const proxima::detail::TextureImageReaders readers{&proxima::readTextureImage};
+  return &readers;
 }
