@@ -4,17 +4,34 @@
 
 find_package(Threads REQUIRED)
 
+# VTK once, with the components of the parts switched on. IO: mesh readers and writers (STL, VTP,
+# glTF; OBJ and PLY writers; the triangle filter of polyDataToSoup). The VTK layer: its filters,
+# scene and representations (execution model, math, transforms, sources, rendering). The
+# applications: the viewer's window, its offscreen screenshots and its text; the VTK layer's image
+# tests use the same (IOImage, ImagingCore's vtkImageDifference, OpenGL2, InteractionStyle).
+set(_vtkComponents)
+if(PROXIMA_BUILD_IO)
+  list(APPEND _vtkComponents CommonCore CommonDataModel IOGeometry IOPLY IOXML FiltersCore)
+endif()
+if(PROXIMA_BUILD_VTK)
+  list(APPEND _vtkComponents CommonExecutionModel CommonMath CommonTransforms FiltersSources
+       FiltersGeneral RenderingCore)
+  if(PROXIMA_BUILD_TESTING)
+    list(APPEND _vtkComponents IOImage ImagingCore RenderingOpenGL2 InteractionStyle)
+  endif()
+endif()
 if(PROXIMA_BUILD_APPS)
-  # Mesh readers (STL, OBJ, PLY, VTP, glTF); the haptic pipeline of Library/VTK (filters, scene,
-  # representations) and its rendering, offscreen image tests (IOImage, ImagingCore's
-  # vtkImageDifference) and the viewer's window (InteractionStyle, RenderingFreeType for text).
-  find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel CommonExecutionModel
-               CommonMath CommonTransforms IOGeometry IOPLY IOXML IOImage FiltersCore
-               FiltersSources FiltersGeneral ImagingCore RenderingCore RenderingOpenGL2
-               InteractionStyle RenderingFreeType)
-  # OFF reading and mesh preparation (welding, normals with a feature angle).
+  list(APPEND _vtkComponents IOImage RenderingOpenGL2 InteractionStyle RenderingFreeType)
+endif()
+if(_vtkComponents)
+  list(REMOVE_DUPLICATES _vtkComponents)
+  find_package(VTK 9.1 REQUIRED COMPONENTS ${_vtkComponents})
+endif()
+
+if(PROXIMA_BUILD_IO)
+  # OFF reading and mesh preparation (normals with a feature angle).
   find_package(OpenMesh REQUIRED)
-  # Texture images (PNG, JPEG, TIFF, OpenEXR) for the IO layer, and to write test images.
+  # Texture images (PNG, JPEG, TIFF, OpenEXR) for the scene files, and to write test images.
   find_package(OpenImageIO CONFIG REQUIRED)
   # Debian 12's OpenImageIO target names /usr/include/opencv4, which exists only with
   # libopencv-dev (OIIO's headers do not need it); CMake refuses a target naming a missing folder,
@@ -31,9 +48,16 @@ if(PROXIMA_BUILD_APPS)
       set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${_property} "${_present}")
     endif()
   endforeach()
-  # Command-line parsing and JSON output.
-  find_package(CLI11 REQUIRED)
+endif()
+
+if(PROXIMA_BUILD_IO OR PROXIMA_BUILD_APPS OR PROXIMA_BUILD_BENCHMARKS)
+  # Scene files and the checks of glTF documents (IO), the JSON reports of proxima and of the
+  # measuring programs.
   find_package(nlohmann_json 3.10 REQUIRED)
+endif()
+if(PROXIMA_BUILD_APPS)
+  # Command-line parsing.
+  find_package(CLI11 REQUIRED)
 endif()
 
 if(PROXIMA_BUILD_TESTING OR PROXIMA_BUILD_BENCHMARKS)

@@ -18,19 +18,36 @@ function(proxima_add_library name)
   add_library(Proxima::${name} ALIAS Proxima${name})
 endfunction()
 
-# proxima_add_test(NAME SOURCES ... DEPENDS ... [LABELS ...]): one GoogleTest program under ctest.
+# proxima_add_test(NAME SOURCES ... DEPENDS ... [LABELS label] [DEFINITIONS ...]
+#                  [WHOLE_PROGRAM ctest-name [LAUNCHER command...] [TIMEOUT seconds]]):
+# the one way a test program is registered. A GoogleTest program under ctest, linked with
+# gtest_main; by default each of its test cases is its own ctest entry (gtest_discover_tests).
+# WHOLE_PROGRAM registers the program as one entry instead, for a program whose cases share
+# something costly (the image tests' X server), run through LAUNCHER when given. Test folders are
+# only entered when PROXIMA_BUILD_TESTING is on; this returns early too, for tests beside a layer.
+# DEPENDS goes to target_link_libraries as is, so linker flags may be among the libraries.
 function(proxima_add_test name)
   if(NOT PROXIMA_BUILD_TESTING)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "WHOLE_PROGRAM;TIMEOUT" "SOURCES;DEPENDS;LABELS;DEFINITIONS;LAUNCHER"
+                        ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
     PROXIMA_SHARED_MESHES="${PROXIMA_SHARED_DATA}/meshes"
-    PROXIMA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+    PROXIMA_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ${ARG_DEFINITIONS})
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
-  gtest_discover_tests(${name} PROPERTIES LABELS "${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+  if(ARG_WHOLE_PROGRAM)
+    add_test(NAME ${ARG_WHOLE_PROGRAM} COMMAND ${ARG_LAUNCHER} $<TARGET_FILE:${name}>)
+    set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES LABELS "${ARG_LABELS}")
+    if(ARG_TIMEOUT)
+      set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+    endif()
+  else()
+    gtest_discover_tests(${name} PROPERTIES LABELS "${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+  endif()
 endfunction()

@@ -1,8 +1,12 @@
 // One subcommand of the `proxima` program. A subcommand lives in its own file and provides an
 // add function that registers its options on the parent CLI11 app and returns what to run once
-// the command line is parsed. To add one (say `bench`): write BenchCommand.cpp defining
-// addBenchCommand, declare it below, add it to kCommands in main.cpp and to CMakeLists.txt.
+// the command line is parsed; it runs in its own program, proxima-<command>, which the front
+// (main.cpp) hands the command line to. To add one (say `bench`): write BenchCommand.cpp defining
+// addBenchCommand, declare it below, give it a summary in CommandSummaries.h (kCommandSummaries
+// is what the front knows of it) and a proxima_add_command line in CMakeLists.txt.
 #pragma once
+
+#include "CommandSummaries.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,7 +1,7 @@
 #include "DeviceChoice.h"
 
 #include "Devices/DeviceRegistry.h"
-#include "IO/InputError.h"
+#include "IO/InputChecks/InputError.h"
 
 namespace proxima::cli
 {

@@ -11,8 +11,7 @@ namespace proxima::cli
 
 Command addDevicesCommand(CLI::App& parent)
 {
-  CLI::App* app = parent.add_subcommand(
-    "devices", "List the haptic devices connected now, by the name proxima run --device takes");
+  CLI::App* app = parent.add_subcommand(kDevicesSummary.name, kDevicesSummary.description);
   return Command{app, [] {
                    const auto devices = listConnectedDevices();
                    for (const ConnectedDevice& device : devices)

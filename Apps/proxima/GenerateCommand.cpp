@@ -4,7 +4,7 @@
 #include "Validators.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "IO/MeshWriter.h"
+#include "IO/Mesh/MeshWriter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,8 +70,7 @@ void addCenter(CLI::App* app, GenerateArguments& arguments)
 Command addGenerateCommand(CLI::App& parent)
 {
   auto arguments = std::make_shared<GenerateArguments>();
-  CLI::App* generate =
-    parent.add_subcommand("generate", "Write a procedural mesh (sizes in metres) to a file.");
+  CLI::App* generate = parent.add_subcommand(kGenerateSummary.name, kGenerateSummary.description);
   generate->require_subcommand(1);
 
   CLI::App* icosphere = generate->add_subcommand(

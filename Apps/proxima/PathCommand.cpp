@@ -3,9 +3,9 @@
 // placed by the surface itself.
 #include "Command.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/MeshReader.h"
-#include "IO/SceneBuilder.h"
+#include "IO/Mesh/MeshReader.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/Scene/SceneBuilder.h"
 #include "Runtime/PathGenerators.h"
 
 #include <cstdint>
@@ -97,10 +97,7 @@ int writePath(const PathOptions& options)
 Command addPathCommand(CLI::App& parent)
 {
   auto options = std::make_shared<PathOptions>();
-  CLI::App* app = parent.add_subcommand(
-    "path",
-    "Write a scripted finger path (slide, press-stroke, circle, jab, wander, or a seeded "
-    "person-like probe session) for a mesh or a scene");
+  CLI::App* app = parent.add_subcommand(kPathSummary.name, kPathSummary.description);
   app->add_option("kind", options->kind, "Path kind")
     ->required()
     ->check(CLI::IsMember(pathKinds()));

@@ -5,14 +5,14 @@
 #include "DeviceChoice.h"
 #include "SceneOptions.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/InputError.h"
-#include "IO/SceneBuilder.h"
-#include "IO/TraceWriter.h"
+#include "IO/InputChecks/InputError.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/PathAndTrace/TraceWriter.h"
+#include "IO/Scene/SceneBuilder.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/BudgetResidual.h"
-#include "Runtime/LockstepRuntime.h"
 #include "Runtime/DeadlineClock.h"
+#include "Runtime/LockstepRuntime.h"
 #include "Runtime/RunSummary.h"
 #include "Runtime/ServoRate.h"
 #include "Runtime/ThreadedRuntime.h"
@@ -420,9 +420,7 @@ int run(const RunOptions& options)
 Command addRunCommand(CLI::App& parent)
 {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* app = parent.add_subcommand(
-    "run", "Play a finger path through a mesh or a scene in lockstep mode; write the trace and a "
-           "summary");
+  CLI::App* app = parent.add_subcommand(kRunSummary.name, kRunSummary.description);
   addSceneOptionsThroughPath(*app, options->scene);
   app->add_option("--out", options->out, "Trace CSV to write (trace v2: v1's columns, then "
                                          "object and flags)")

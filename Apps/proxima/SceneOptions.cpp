@@ -2,8 +2,8 @@
 
 #include "Validators.h"
 
-#include "IO/InputError.h"
-#include "IO/SceneFile.h"
+#include "IO/InputChecks/InputError.h"
+#include "IO/Scene/SceneFile.h"
 
 #include <cmath>
 #include <limits>

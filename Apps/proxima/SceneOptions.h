@@ -3,7 +3,7 @@
 // scene loader, one start check, so that the viewer plays exactly what a run plays.
 #pragma once
 
-#include "IO/SceneBuilder.h"
+#include "IO/Scene/SceneBuilder.h"
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/FingerPath.h"
 #include "Runtime/ServoParameters.h"

@@ -4,7 +4,7 @@
 #include "Validators.h"
 
 #include "Geometry/SphereTree.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 
 #include <nlohmann/json.hpp>
 
@@ -76,8 +76,7 @@ Command addTreeCommand(CLI::App& parent)
 {
   // Shared with the run callback: CLI11 writes the parsed values here.
   auto arguments = std::make_shared<TreeArguments>();
-  CLI::App* app = parent.add_subcommand(
-    "tree", "Read a mesh, build its sphere tree and print sizes and timings as JSON.");
+  CLI::App* app = parent.add_subcommand(kTreeSummary.name, kTreeSummary.description);
   app->add_option("--mesh", arguments->mesh,
                   "Mesh file: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
     ->required();

@@ -6,8 +6,8 @@
 #include "DeviceChoice.h"
 #include "SceneOptions.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/InputError.h"
+#include "IO/InputChecks/InputError.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoRate.h"
@@ -301,9 +301,7 @@ int view(const ViewOptions& options)
 Command addViewCommand(CLI::App& parent)
 {
   auto options = std::make_shared<ViewOptions>();
-  CLI::App* app = parent.add_subcommand(
-    "view", "Replay a finger path through a mesh or a scene in the threaded runtime and draw it "
-            "(proxy, finger, spring, contact planes, friction cones, force)");
+  CLI::App* app = parent.add_subcommand(kViewSummary.name, kViewSummary.description);
   addSceneOptionsThroughPath(*app, options->scene);
   app->add_option("--screenshot", options->screenshot,
                   "Render offscreen to this PNG at --at and exit, instead of opening a window");

@@ -1,47 +1,77 @@
-// proxima: the command line of the toolkit. Parses the command line, runs the one subcommand
-// given and maps failures to the exit statuses of DESIGN.md section 3: 0 success, 2 bad input
-// (one line on stderr naming the file and the defect), 1 internal error.
+// proxima: the front of the command line. It lists the subcommands (`proxima --help`) and words
+// the refusal of a command line without a known one itself; every other command line goes, as
+// given, to the subcommand's own program proxima-<command> beside it (CommandProgram.cpp), as
+// git hands `git <command>` on. The front links no library of the toolkit, so it starts in a few
+// milliseconds, and each subcommand's program loads only what that subcommand uses (VTK's
+// rendering only for view): a suite of hundreds of `proxima run`s does not pay the viewer's start.
 #include "Command.h"
-
-#include "IO/InputError.h"
+#include "CommandSummaries.h"
+#include "ProximaApp.h"
 
 #include <CLI/CLI.hpp>
 
-#include <exception>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstring>
 #include <iostream>
-#include <vector>
+#include <string>
 
 namespace
 {
-using proxima::cli::Command;
+using namespace proxima::cli;
 
-// Every subcommand, in the order `proxima --help` lists them.
-constexpr Command (*kCommands[])(CLI::App&) = {
-  proxima::cli::addRunCommand,
-  proxima::cli::addViewCommand,
-  proxima::cli::addPathCommand,
-  proxima::cli::addTreeCommand,
-  proxima::cli::addGenerateCommand,
-  proxima::cli::addDevicesCommand,
-};
+/// The folder of this program, with a trailing slash: the subcommands' programs are beside it,
+/// wherever the build or an installation put them and whatever the PATH says.
+std::string programFolder()
+{
+  std::string buffer(PATH_MAX, '\0');
+  const ssize_t length = readlink("/proc/self/exe", buffer.data(), buffer.size());
+  if (length <= 0)
+  {
+    return {};
+  }
+  buffer.resize(static_cast<std::size_t>(length));
+  return buffer.substr(0, buffer.rfind('/') + 1);
+}
+
+/// Replaces this process by the program of subcommand `name`, given the whole command line (the
+/// program parses it as the one `proxima` did before the split). Returns only on failure.
+int handOn(const char* name, char** argv)
+{
+  const std::string program = programFolder() + "proxima-" + name;
+  execv(program.c_str(), argv);
+  std::cerr << "proxima: internal error: cannot run " << program << ": " << std::strerror(errno)
+            << "\n";
+  return kExitInternalError;
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"Proxima: haptic rendering with the virtual-proxy method of Ruspini and Khatib.",
-               "proxima"};
-  app.require_subcommand(1);
-  // Usage errors get one line too, in the same shape as bad input.
-  app.failure_message([](const CLI::App*, const CLI::Error& error) {
-    return std::string("proxima: ") + error.what() + " (see proxima --help)\n";
-  });
-
-  std::vector<Command> commands;
-  for (auto add : kCommands)
+  // A command line naming a subcommand goes to its program without being parsed here, wherever
+  // the name is (`proxima run ...`, and `proxima --help run`, which shows run's help): the
+  // program parses the whole line as the one `proxima` did before the split.
+  for (int i = 1; i < argc; ++i)
   {
-    commands.push_back(add(app));
+    for (const CommandSummary& summary : kCommandSummaries)
+    {
+      if (std::strcmp(argv[i], summary.name) == 0)
+      {
+        return handOn(summary.name, argv);
+      }
+    }
   }
 
+  // Everything else (--help, no subcommand, an unknown one) is parsed against the subcommands'
+  // names and descriptions, which is all that `proxima --help` and its errors show of them.
+  CLI::App app{kProximaDescription, "proxima"};
+  configureProximaApp(app);
+  for (const CommandSummary& summary : kCommandSummaries)
+  {
+    app.add_subcommand(summary.name, summary.description);
+  }
   try
   {
     app.parse(argc, argv);
@@ -50,34 +80,9 @@ int main(int argc, char** argv)
   {
     // --help and --version are "errors" with status 0; every real usage error is bad input.
     const int status = app.exit(error);
-    return status == 0 ? proxima::cli::kExitOk : proxima::cli::kExitBadInput;
+    return status == 0 ? kExitOk : kExitBadInput;
   }
-
-  try
-  {
-    for (const Command& command : commands)
-    {
-      if (command.app->parsed())
-      {
-        return command.run();
-      }
-    }
-    std::cerr << "proxima: no subcommand given (see proxima --help)\n";
-    return proxima::cli::kExitBadInput;
-  }
-  catch (const proxima::InputError& error)
-  {
-    std::cerr << "proxima: " << error.what() << "\n";
-    return proxima::cli::kExitBadInput;
-  }
-  catch (const std::exception& error)
-  {
-    std::cerr << "proxima: internal error: " << error.what() << "\n";
-    return proxima::cli::kExitInternalError;
-  }
-  catch (...)
-  {
-    std::cerr << "proxima: internal error of unknown kind\n";
-    return proxima::cli::kExitInternalError;
-  }
+  // Not reached: without a subcommand's name, require_subcommand fails the parse.
+  std::cerr << "proxima: no subcommand given (see proxima --help)\n";
+  return kExitBadInput;
 }

@@ -1,9 +1,9 @@
 #include "VTK/PolyDataCollisionObject.h"
 
-#include "IO/MeshReader.h"
-#include "IO/PointNormals.h"
-#include "IO/Private/PolyDataToSoup.h"
-#include "IO/ScenePose.h"
+#include "IO/Mesh/MeshReader.h"
+#include "IO/Mesh/PolyDataToSoup.h"
+#include "IO/MeshPreparation/PointNormals.h"
+#include "IO/Scene/ScenePose.h"
 
 #include <vtkLinearTransform.h>
 #include <vtkMath.h>
@@ -75,7 +75,7 @@ CollisionObject prepareCollisionObject(vtkPolyData* data, const std::string& nam
                                        PolyDataObjectReport* report)
 {
   const auto conversionStart = std::chrono::steady_clock::now();
-  TriangleSoup soup = detail::polyDataToSoup(data, name, settings.scale);
+  TriangleSoup soup = polyDataToSoup(data, name, settings.scale);
   bool computedNormals = false;
   if (settings.shading && soup.pointNormals.empty())
   {

@@ -1,6 +1,6 @@
 // From vtkPolyData to one collision object of the kernel (mesh, sphere tree, material): the step
 // vtkHapticSphereTreeFilter and vtkHapticScene share. The checks and triangulation are those of
-// the IO layer's readers (IO/Private/PolyDataToSoup.h), so a poly data set is refused for the
+// the IO layer's readers (IO/Mesh/PolyDataToSoup.h), so a poly data set is refused for the
 // same defects as a file. Off the haptic thread.
 #pragma once
 

@@ -19,8 +19,8 @@
 //
 // Usage: BenchProbeTail OUT.json [--quick] [--seeds N]
 //   --quick: one seed, radii 0.5 and 2 mm, for a short check; default 3 seeds, all radii.
-#include "IO/FingerPathFile.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/BudgetResidual.h"
 #include "Runtime/LockstepRuntime.h"

@@ -5,7 +5,7 @@
 // (iterations, triangles tested) are reported as counters, because a mean hides the tail that
 // matters to a servo loop.
 #include "Geometry/ProceduralMeshes.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "Proxy/ProxySolver.h"
 #include "Proxy/SurfaceMaterial.h"
 #include "Proxy/TextureImage.h"

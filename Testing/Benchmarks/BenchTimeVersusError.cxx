@@ -20,7 +20,7 @@
 #include "ProxyOracle.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/PathGenerators.h"
 

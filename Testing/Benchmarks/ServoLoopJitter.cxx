@@ -11,7 +11,7 @@
 //
 //   ServoLoopJitter [--seconds S] [--rate HZ] [--swap] [--no-floor] [--histogram FILE.csv]
 //                   [--mesh FILE]
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"

@@ -2,7 +2,7 @@
 // accepts must keep its contract: at least one row, finite values, times that never go back.
 #include "FuzzScratchFile.h"
 
-#include "IO/FingerPathFile.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 
 #include <cmath>
 #include <cstdint>

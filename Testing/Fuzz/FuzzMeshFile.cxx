@@ -4,7 +4,7 @@
 // exception, a mesh that the kernel's build refuses after the reader accepted it) is a finding.
 #include "FuzzScratchFile.h"
 
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -2,7 +2,7 @@
 // so this is the JSON and the format's checks alone; bad input must be an InputError.
 #include "FuzzScratchFile.h"
 
-#include "IO/SceneFile.h"
+#include "IO/Scene/SceneFile.h"
 
 #include <cstdint>
 

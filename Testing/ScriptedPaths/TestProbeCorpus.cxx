@@ -5,8 +5,8 @@
 // that the same kind of probing keeps every invariant of DESIGN.md section 4. No timing here.
 #include "ScriptedHarness.h"
 
-#include "IO/FingerPathFile.h"
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Runtime/PathGenerators.h"
 
 #include <gtest/gtest.h>

@@ -12,7 +12,7 @@
 // spout and handle pass into the body, a CAD part with sharp feature edges).
 #include "ScriptedHarness.h"
 
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "Runtime/PathGenerators.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 #include "StressSupport.h"
 
 #include "Geometry/TriangleMesh.h"
-#include "IO/FingerPathFile.h"
-#include "IO/MeshWriter.h"
+#include "IO/Mesh/MeshWriter.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/CollisionScene.h"
 #include "Runtime/PathGenerators.h"
 

@@ -12,9 +12,12 @@
 // it has no nearest query of its own, so its adapter takes the nearest of its gather.
 #include "Geometry/ProceduralMeshes.h"
 #include "Geometry/SweptSphere.h"
-#include "Geometry/Testing/TestMeshLoader.h"
 #include "Proxy/CandidateCache.h"
 #include "Proxy/CollisionScene.h"
+
+#if PROXIMA_WITH_MESH_IO
+#include "IO/Mesh/MeshReader.h"
+#endif
 
 #include <gtest/gtest.h>
 
@@ -116,14 +119,24 @@ const std::vector<NamedScene>& scenes()
                                                    {"M3x10_screw.stl", 0.005}};
     for (const auto& [file, scale] : real)
     {
-      test::LoadedMesh loaded = test::loadTestMesh(folder + "/" + file);
-      if (!loaded.ok)
+      // Read through the IO layer's readers when that layer is built (PROXIMA_BUILD_IO).
+      TriangleSoup soup;
+#if PROXIMA_WITH_MESH_IO
+      try
       {
-        std::printf("[ skipped  ] %s: %s\n", file, loaded.error.c_str());
+        soup = readMeshFile(folder + "/" + file);
+      }
+      catch (const InputError& error)
+      {
+        std::printf("[ skipped  ] %s: %s\n", file, error.what());
         continue;
       }
+#else
+      std::printf("[ skipped  ] %s: the IO layer is not built\n", file);
+      continue;
+#endif
       auto scene = std::make_unique<CollisionScene>();
-      if (!addSoup(*scene, scaled(std::move(loaded.soup), scale)))
+      if (!addSoup(*scene, scaled(std::move(soup), scale)))
       {
         ADD_FAILURE() << file << ": mesh refused";
         continue;

@@ -12,7 +12,7 @@
 // (Documentation/VtkPipeline.md has the numbers).
 #include "VtkTestSupport.h"
 
-#include "IO/MeshReader.h"
+#include "IO/Mesh/MeshReader.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticScene.h"
 #include "VTK/vtkHapticSphereTreeFilter.h"

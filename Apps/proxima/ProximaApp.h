@@ -1,0 +1,25 @@
+// What the `proxima` front and every subcommand's program share at the top of the command line:
+// the program's name and description and how usage errors are worded, so that a command line
+// reads the same whichever of them parses it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace proxima::cli
+{
+
+inline constexpr const char* kProximaDescription =
+  "Proxima: haptic rendering with the virtual-proxy method of Ruspini and Khatib.";
+
+/// Requires one subcommand, and words usage errors in one line, in the same shape as bad input.
+inline void configureProximaApp(CLI::App& app)
+{
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& error) {
+    return std::string("proxima: ") + error.what() + " (see proxima --help)\n";
+  });
+}
+
+} // namespace proxima::cli

@@ -1,0 +1,69 @@
+// What a scene file says, checked but not yet loaded: the objects' mesh files, scales, poses and
+// materials, with every path resolved against the scene file's folder. Plain data, no JSON: a
+// program can also fill one in by hand and build it (IO/SceneBuilder.h). The file format is in
+// Documentation/SceneFiles.md.
+#pragma once
+
+#include "IO/Scene/ScenePose.h"
+#include "IO/Scene/TextureImageFile.h"
+#include "Proxy/SurfaceMaterial.h"
+
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// How an object asks for force shading (Documentation/ForceShading.md).
+enum class SceneShading
+{
+  /// Never shade.
+  Off,
+  /// Shade; a mesh whose file has no point normals gets them from withFeatureAngleNormals.
+  On,
+  /// Shade exactly when the mesh file has point normals.
+  Auto
+};
+
+/// One texture map of a material: an image file and what it modulates (paper 4.3).
+struct SceneTexture
+{
+  /// The image file, resolved against the scene file's folder.
+  std::string image;
+  TextureRole role = TextureRole::Bump;
+  /// Bump maps: metres of height per unit of image value. Other roles: 0.
+  double amplitude = 0.0;
+  TextureChannel channel = TextureChannel::Luminance;
+};
+
+struct SceneMaterial
+{
+  SceneShading shading = SceneShading::Off;
+  /// For shading On on a mesh without point normals: bends sharper than this stay sharp.
+  double featureAngleDegrees = 30.0;
+  double staticFriction = 0.0;
+  double dynamicFriction = 0.0;
+  /// N s/m.
+  double viscosity = 0.0;
+  std::vector<SceneTexture> textures;
+};
+
+struct SceneObject
+{
+  /// The mesh file, resolved against the scene file's folder.
+  std::string mesh;
+  /// File units to metres, applied before the pose.
+  double scale = 1.0;
+  ScenePose pose;
+  SceneMaterial material;
+};
+
+struct SceneDescription
+{
+  /// The scene file as the caller named it (empty for a description made in code).
+  std::string path;
+  int version = 1;
+  std::vector<SceneObject> objects;
+};
+
+} // namespace proxima
