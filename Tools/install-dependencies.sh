@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(
   # toolchain
   cmake ninja-build g++ pkg-config git ccache
-  # mesh readers, pipeline and (later) rendering
+  # mesh readers, the haptic pipeline and its rendering
   libvtk9-dev
   # OFF files and mesh preparation
   libopenmesh-dev
@@ -25,6 +25,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib
   # libFuzzer targets (Tools/fuzz-smoke.sh): clang with its fuzzer and sanitizer runtimes
   clang-14 libclang-rt-14-dev
+  # the format check of CI (Tools/check-format.sh, .clang-format)
+  clang-format-14
 )
 
 missing=()
