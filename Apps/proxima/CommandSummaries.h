@@ -28,8 +28,7 @@ inline constexpr CommandSummary kGenerateSummary{
 inline constexpr CommandSummary kDevicesSummary{
   "devices", "List the haptic devices connected now, by the name proxima run --device takes"};
 
-inline constexpr CommandSummary kCommandSummaries[] = {kRunSummary,  kViewSummary,
-                                                       kPathSummary, kTreeSummary,
-                                                       kGenerateSummary, kDevicesSummary};
+inline constexpr CommandSummary kCommandSummaries[] = {
+  kRunSummary, kViewSummary, kPathSummary, kTreeSummary, kGenerateSummary, kDevicesSummary};
 
 } // namespace proxima::cli

@@ -27,9 +27,9 @@ void addDeviceOptions(CLI::App& app, DeviceChoiceOptions& options)
                   " (default sim: the --path; Documentation/Devices.md)")
     ->check(CLI::Validator(
       [](std::string& input) -> std::string {
-        return isDeviceSpec(input) ? std::string()
-                                   : "must be one of " + std::string(kDeviceNames) + ", not " +
-                                       input;
+        return isDeviceSpec(input)
+                 ? std::string()
+                 : "must be one of " + std::string(kDeviceNames) + ", not " + input;
       },
       "DEVICE"));
   app.add_option("--falcon-firmware", options.falconFirmware,

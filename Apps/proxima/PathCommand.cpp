@@ -115,9 +115,10 @@ Command addPathCommand(CLI::App& parent)
   app->add_option("--rate", options->rate, "Samples per second (default 1000)")
     ->check(CLI::PositiveNumber);
   app->add_option("--seed", options->seed, "probe only: random seed (default 1)");
-  app->add_option("--duration", options->duration,
-                  "probe only: seconds of probing, at least (default 8; the last episode is "
-                  "finished)")
+  app
+    ->add_option("--duration", options->duration,
+                 "probe only: seconds of probing, at least (default 8; the last episode is "
+                 "finished)")
     ->check(CLI::NonNegativeNumber);
   app->add_option("--out", options->out, "Path CSV to write")->required();
   app->callback([options] {

@@ -52,7 +52,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 class Progress
 {
 public:
-  explicit Progress(std::uint64_t total) : m_total(total), m_enabled(isatty(STDERR_FILENO) != 0) {}
+  explicit Progress(std::uint64_t total)
+    : m_total(total)
+    , m_enabled(isatty(STDERR_FILENO) != 0)
+  {}
   void update(std::uint64_t done)
   {
     if (!m_enabled || m_total == 0)
@@ -97,7 +100,8 @@ void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
   json["viscosity_N_s_per_m"] = material.viscosity;
 }
 
-nlohmann::ordered_json loopJson(const LoopStatistics& statistics, const std::string& scheduling = {})
+nlohmann::ordered_json loopJson(const LoopStatistics& statistics,
+                                const std::string& scheduling = {})
 {
   nlohmann::ordered_json json;
   if (!scheduling.empty())
@@ -109,10 +113,11 @@ nlohmann::ordered_json loopJson(const LoopStatistics& statistics, const std::str
   json["late_wake_ups"] = statistics.lateWakeUps;
   json["missed_deadlines"] = statistics.missedDeadlines;
   json["over_budget_ticks"] = statistics.overBudgetTicks;
-  json["wake_latency_us"] = {{"p50", statistics.wakeLatencyQuantileNanoseconds(0.5) / 1e3},
-                             {"p99", statistics.wakeLatencyQuantileNanoseconds(0.99) / 1e3},
-                             {"p99.9", statistics.wakeLatencyQuantileNanoseconds(0.999) / 1e3},
-                             {"max", static_cast<double>(statistics.maxWakeLatencyNanoseconds) / 1e3}};
+  json["wake_latency_us"] = {
+    {"p50", statistics.wakeLatencyQuantileNanoseconds(0.5) / 1e3},
+    {"p99", statistics.wakeLatencyQuantileNanoseconds(0.99) / 1e3},
+    {"p99.9", statistics.wakeLatencyQuantileNanoseconds(0.999) / 1e3},
+    {"max", static_cast<double>(statistics.maxWakeLatencyNanoseconds) / 1e3}};
   json["jitter_us"] = {{"p50", statistics.jitterQuantileNanoseconds(0.5) / 1e3},
                        {"p99", statistics.jitterQuantileNanoseconds(0.99) / 1e3},
                        {"max", statistics.jitterQuantileNanoseconds(1.0) / 1e3}};
@@ -123,9 +128,10 @@ nlohmann::ordered_json loopJson(const LoopStatistics& statistics, const std::str
 /// "woke late 12 of 29001 times (0.04 %), missed 30 deadlines": the human line's figures.
 std::string deadlineLine(const LoopStatistics& statistics)
 {
-  const double percent = statistics.wakeUps > 0 ? 100.0 * static_cast<double>(statistics.lateWakeUps) /
-                                                    static_cast<double>(statistics.wakeUps)
-                                                : 0.0;
+  const double percent = statistics.wakeUps > 0
+                           ? 100.0 * static_cast<double>(statistics.lateWakeUps) /
+                               static_cast<double>(statistics.wakeUps)
+                           : 0.0;
   char text[160];
   std::snprintf(text, sizeof text, "woke late %llu of %llu times (%.2f %%), missed %llu deadlines",
                 static_cast<unsigned long long>(statistics.lateWakeUps),
@@ -193,8 +199,8 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   if (!options.noFloor)
   {
     report["floor"] = loopJson(floor.statistics, floor.scheduling);
-    line += "; bare floor loop just before (" + floor.scheduling + ") " +
-            deadlineLine(floor.statistics);
+    line +=
+      "; bare floor loop just before (" + floor.scheduling + ") " + deadlineLine(floor.statistics);
   }
   // For a person at a terminal, like the progress; a script reads the summary, and a run that
   // succeeds prints nothing else on standard error.
@@ -209,8 +215,8 @@ int run(const RunOptions& options)
   const SceneOptions& shared = options.scene;
   if (options.realtime && !isServoRate(shared.rate))
   {
-    throw InputError("--rate", "must be " + servoRateRange() +
-                                 " with --realtime (the servo loop's range)");
+    throw InputError("--rate",
+                     "must be " + servoRateRange() + " with --realtime (the servo loop's range)");
   }
   const auto readStart = std::chrono::steady_clock::now();
   LoadedScene loaded = loadScene(shared);
@@ -245,12 +251,13 @@ int run(const RunOptions& options)
   nlohmann::ordered_json realtimeReport;
   if (options.realtime)
   {
-    runRealtime(options, sceneHolder, fingerPath, settings.numTicks, device.device(),
-                [&](const HapticState& record) {
-                  trace.write(record);
-                  summary.add(record);
-                },
-                realtimeReport);
+    runRealtime(
+      options, sceneHolder, fingerPath, settings.numTicks, device.device(),
+      [&](const HapticState& record) {
+        trace.write(record);
+        summary.add(record);
+      },
+      realtimeReport);
   }
   else
   {
@@ -345,14 +352,14 @@ int run(const RunOptions& options)
   }
   json["ticks"] = summary.ticks();
   json["contact_ticks"] = summary.contactTicks();
-  json["iterations"] = {
-    {"total", summary.totalIterations()},
-    {"mean", summary.ticks() > 0 ? static_cast<double>(summary.totalIterations()) /
-                                     static_cast<double>(summary.ticks())
-                                 : 0.0},
-    {"max", summary.maxIterations()},
-    {"cap", shared.maxIterations},
-    {"ticks_at_cap", summary.iterationCapTicks()}};
+  json["iterations"] = {{"total", summary.totalIterations()},
+                        {"mean", summary.ticks() > 0
+                                   ? static_cast<double>(summary.totalIterations()) /
+                                       static_cast<double>(summary.ticks())
+                                   : 0.0},
+                        {"max", summary.maxIterations()},
+                        {"cap", shared.maxIterations},
+                        {"ticks_at_cap", summary.iterationCapTicks()}};
   json["refused_finger_ticks"] = summary.refusedTicks();
   json["contact_overflow_ticks"] = summary.overflowTicks();
   json["clamped_force_ticks"] = summary.clampedTicks();
@@ -422,8 +429,10 @@ Command addRunCommand(CLI::App& parent)
   auto options = std::make_shared<RunOptions>();
   CLI::App* app = parent.add_subcommand(kRunSummary.name, kRunSummary.description);
   addSceneOptionsThroughPath(*app, options->scene);
-  app->add_option("--out", options->out, "Trace CSV to write (trace v2: v1's columns, then "
-                                         "object and flags)")
+  app
+    ->add_option("--out", options->out,
+                 "Trace CSV to write (trace v2: v1's columns, then "
+                 "object and flags)")
     ->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
   addDeviceOptions(*app, options->device);

@@ -17,9 +17,7 @@ namespace
 {
 SceneShading shadingFrom(const std::string& name)
 {
-  return name == "on"   ? SceneShading::On
-         : name == "auto" ? SceneShading::Auto
-                          : SceneShading::Off;
+  return name == "on" ? SceneShading::On : name == "auto" ? SceneShading::Auto : SceneShading::Off;
 }
 
 TextureRole roleFrom(const std::string& name)
@@ -34,8 +32,8 @@ TextureRole roleFrom(const std::string& name)
 
 TextureChannel channelFrom(const std::string& name)
 {
-  for (TextureChannel channel : {TextureChannel::Red, TextureChannel::Green, TextureChannel::Blue,
-                                 TextureChannel::Alpha})
+  for (TextureChannel channel :
+       {TextureChannel::Red, TextureChannel::Green, TextureChannel::Blue, TextureChannel::Alpha})
   {
     if (name == textureChannelName(channel))
     {
@@ -92,8 +90,8 @@ std::pair<std::size_t, double> nearestObject(const CollisionScene& scene, const 
 
 void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options)
 {
-  CLI::Option* mesh = app.add_option(
-    "--mesh", options.mesh, "Mesh file (STL, OBJ, PLY, VTP, OFF, glTF/GLB); or --scene");
+  CLI::Option* mesh = app.add_option("--mesh", options.mesh,
+                                     "Mesh file (STL, OBJ, PLY, VTP, OFF, glTF/GLB); or --scene");
   CLI::Option* scene = app.add_option(
     "--scene", options.scene,
     "Scene file (JSON: objects with meshes, poses and materials; Documentation/SceneFiles.md); "
@@ -112,11 +110,13 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
     ->check(CLI::PositiveNumber);
   app.add_option("--max-force", options.maxForce, "Force clamp in newtons (default 10)")
     ->check(CLI::PositiveNumber);
-  app.add_option("--max-iterations", options.maxIterations,
-                  "Move/update iterations per tick (default 256)")
+  app
+    .add_option("--max-iterations", options.maxIterations,
+                "Move/update iterations per tick (default 256)")
     ->check(CLI::Range(1, 1000));
-  app.add_option("--skin", options.skin,
-                  "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
+  app
+    .add_option("--skin", options.skin,
+                "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
     ->check(CLI::NonNegativeNumber);
 
   // The mesh's scale and surface: for --mesh only (a scene file gives them per object).
@@ -125,39 +125,45 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
   surface.push_back(
     app.add_option("--scale", options.scale, meshOnly + "File units to metres (default 1)")
       ->check(CLI::PositiveNumber));
+  surface.push_back(app
+                      .add_option("--shading", options.shading,
+                                  meshOnly +
+                                    "Force shading from the mesh's point normals: off, on or auto "
+                                    "(default off)")
+                      ->check(CLI::IsMember({"off", "on", "auto"})));
   surface.push_back(
-    app.add_option("--shading", options.shading,
-                    meshOnly + "Force shading from the mesh's point normals: off, on or auto "
-                               "(default off)")
-      ->check(CLI::IsMember({"off", "on", "auto"})));
-  surface.push_back(
-    app.add_option("--feature-angle", options.featureAngle,
-                    meshOnly + "With --shading on and a mesh without normals: edges sharper than "
-                               "this many degrees stay sharp (default 30)")
+    app
+      .add_option("--feature-angle", options.featureAngle,
+                  meshOnly + "With --shading on and a mesh without normals: edges sharper than "
+                             "this many degrees stay sharp (default 30)")
       ->check(CLI::Range(0.0, 180.0)));
-  surface.push_back(app.add_option("--static-friction", options.staticFriction,
-                                    meshOnly + "Static friction coefficient mu_s (default 0: none)")
+  surface.push_back(app
+                      .add_option("--static-friction", options.staticFriction,
+                                  meshOnly + "Static friction coefficient mu_s (default 0: none)")
                       ->check(CLI::NonNegativeNumber));
-  surface.push_back(
-    app.add_option("--dynamic-friction", options.dynamicFriction,
-                    meshOnly + "Dynamic friction coefficient mu_d (default 0: none)")
-      ->check(CLI::NonNegativeNumber));
-  surface.push_back(app.add_option("--viscosity", options.viscosity,
-                                    meshOnly + "Viscous friction b in N s/m (default 0: none)")
+  surface.push_back(app
+                      .add_option("--dynamic-friction", options.dynamicFriction,
+                                  meshOnly + "Dynamic friction coefficient mu_d (default 0: none)")
+                      ->check(CLI::NonNegativeNumber));
+  surface.push_back(app
+                      .add_option("--viscosity", options.viscosity,
+                                  meshOnly + "Viscous friction b in N s/m (default 0: none)")
                       ->check(CLI::NonNegativeNumber));
   CLI::Option* texture = app.add_option(
     "--texture", options.texture,
     meshOnly + "Texture image (PNG, JPEG, TIFF, OpenEXR) mapped by the mesh's texture "
                "coordinates; needs --texture-role");
   CLI::Option* role =
-    app.add_option("--texture-role", options.textureRole,
-                    meshOnly + "What --texture modulates: bump (height), friction or viscosity "
-                               "(scales those coefficients)")
+    app
+      .add_option("--texture-role", options.textureRole,
+                  meshOnly + "What --texture modulates: bump (height), friction or viscosity "
+                             "(scales those coefficients)")
       ->check(CLI::IsMember({"bump", "friction", "viscosity", "stiffness"}));
   CLI::Option* amplitude =
-    app.add_option("--texture-amplitude", options.textureAmplitude,
-                    meshOnly + "Bump maps: metres of height per unit of image value (required "
-                               "for bump, not 0)")
+    app
+      .add_option("--texture-amplitude", options.textureAmplitude,
+                  meshOnly + "Bump maps: metres of height per unit of image value (required "
+                             "for bump, not 0)")
       ->check(CLI::Validator(
         [](std::string& input) -> std::string {
           std::size_t used = 0;
@@ -176,9 +182,10 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
         },
         "NONZERO"));
   CLI::Option* channel =
-    app.add_option("--texture-channel", options.textureChannel,
-                    meshOnly + "Which value of each pixel --texture takes: luminance, red, green, "
-                               "blue or alpha (default luminance)")
+    app
+      .add_option("--texture-channel", options.textureChannel,
+                  meshOnly + "Which value of each pixel --texture takes: luminance, red, green, "
+                             "blue or alpha (default luminance)")
       ->check(CLI::IsMember({"luminance", "red", "green", "blue", "alpha"}));
   texture->needs(role);
   role->needs(texture);
@@ -197,11 +204,12 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
 
 void addTickBudgetOption(CLI::App& app, SceneOptions& options, const std::string& defaults)
 {
-  app.add_option("--tick-budget", options.tickBudget,
-                  "Work budget of one proxy tick: <N>us of wall time, <N>it move/update "
-                  "iterations, both (50us,40it), or none. A tick that reaches it stops with the "
-                  "proxy where it is (always feasible) and the next tick goes on from there. " +
-                    defaults)
+  app
+    .add_option("--tick-budget", options.tickBudget,
+                "Work budget of one proxy tick: <N>us of wall time, <N>it move/update "
+                "iterations, both (50us,40it), or none. A tick that reaches it stops with the "
+                "proxy where it is (always feasible) and the next tick goes on from there. " +
+                  defaults)
     ->check(tickBudgetValue());
 }
 

@@ -26,7 +26,8 @@ struct TreeArguments
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
 {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
 }
 
 nlohmann::ordered_json toJson(const Vec3& v)
@@ -77,24 +78,29 @@ Command addTreeCommand(CLI::App& parent)
   // Shared with the run callback: CLI11 writes the parsed values here.
   auto arguments = std::make_shared<TreeArguments>();
   CLI::App* app = parent.add_subcommand(kTreeSummary.name, kTreeSummary.description);
-  app->add_option("--mesh", arguments->mesh,
-                  "Mesh file: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
+  app
+    ->add_option("--mesh", arguments->mesh,
+                 "Mesh file: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
     ->required();
-  app->add_option("--scale", arguments->scale,
-                  "Factor from file units to metres, applied to every coordinate")
+  app
+    ->add_option("--scale", arguments->scale,
+                 "Factor from file units to metres, applied to every coordinate")
     ->check(finiteNumber(true))
     ->capture_default_str();
-  app->add_option("--leaf-size-factor", arguments->tree.leafSizeFactor,
-                  "Split triangles longer than this many median edge lengths into several leaf "
-                  "spheres; 0 gives one leaf sphere per triangle")
+  app
+    ->add_option("--leaf-size-factor", arguments->tree.leafSizeFactor,
+                 "Split triangles longer than this many median edge lengths into several leaf "
+                 "spheres; 0 gives one leaf sphere per triangle")
     ->check(finiteNumber(false))
     ->capture_default_str();
-  app->add_option("--leaf-spheres-per-node", arguments->tree.maxLeafSpheresPerNode,
-                  "Leaf spheres grouped under one leaf node (1 is the paper's tree)")
+  app
+    ->add_option("--leaf-spheres-per-node", arguments->tree.maxLeafSpheresPerNode,
+                 "Leaf spheres grouped under one leaf node (1 is the paper's tree)")
     ->check(CLI::Range(1u, 1024u))
     ->capture_default_str();
-  app->add_option("--max-pieces-per-triangle", arguments->tree.maxPiecesPerTriangle,
-                  "Upper bound on the leaf spheres of one triangle")
+  app
+    ->add_option("--max-pieces-per-triangle", arguments->tree.maxPiecesPerTriangle,
+                 "Upper bound on the leaf spheres of one triangle")
     ->check(CLI::Range(1u, 1u << 20))
     ->capture_default_str();
   return Command{app, [arguments] { return runTree(*arguments); }};

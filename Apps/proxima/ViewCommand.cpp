@@ -152,8 +152,7 @@ int view(const ViewOptions& options)
   }
   // The finger's device, as for `proxima run --device` (sim plays the path); made before the
   // renderer, so that it outlives the haptic threads.
-  RunDevice device(options.device, shifted,
-                   ticksCovering(0.0, pathSeconds + 0.5, shared.rate));
+  RunDevice device(options.device, shifted, ticksCovering(0.0, pathSeconds + 0.5, shared.rate));
   vtkNew<vtkHapticRenderer> haptics;
   haptics->SetCollisionScene(scene);
   haptics->SetDevice(&device.device());
@@ -305,19 +304,22 @@ Command addViewCommand(CLI::App& parent)
   addSceneOptionsThroughPath(*app, options->scene);
   app->add_option("--screenshot", options->screenshot,
                   "Render offscreen to this PNG at --at and exit, instead of opening a window");
-  app->add_option("--at", options->at,
-                  "With --screenshot: seconds into the path to capture (default: its end)")
+  app
+    ->add_option("--at", options->at,
+                 "With --screenshot: seconds into the path to capture (default: its end)")
     ->check(CLI::NonNegativeNumber);
   app->add_option("--width", options->width, "Window width in pixels (default 800)")
     ->check(CLI::Range(64, 8192));
   app->add_option("--height", options->height, "Window height in pixels (default 600)")
     ->check(CLI::Range(64, 8192));
-  app->add_option("--view-distance", options->viewDistance,
-                  "Camera distance from the proxy in metres (default 40 proxy radii)")
+  app
+    ->add_option("--view-distance", options->viewDistance,
+                 "Camera distance from the proxy in metres (default 40 proxy radii)")
     ->check(CLI::PositiveNumber);
-  app->add_option("--force-scale", options->forceScale,
-                  "Force arrow length in metres per newton (default: 30 proxy radii at "
-                  "--max-force)")
+  app
+    ->add_option("--force-scale", options->forceScale,
+                 "Force arrow length in metres per newton (default: 30 proxy radii at "
+                 "--max-force)")
     ->check(CLI::PositiveNumber);
   addDeviceOptions(*app, options->device);
   addSceneOptionsAfterPath(*app, options->scene);

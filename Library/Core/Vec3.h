@@ -13,7 +13,11 @@ struct Vec3
   double z = 0.0;
 
   constexpr Vec3() = default;
-  constexpr Vec3(double xValue, double yValue, double zValue) : x(xValue), y(yValue), z(zValue) {}
+  constexpr Vec3(double xValue, double yValue, double zValue)
+    : x(xValue)
+    , y(yValue)
+    , z(zValue)
+  {}
 
   constexpr double operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
   constexpr double& operator[](int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
@@ -48,16 +52,34 @@ struct Vec3
   constexpr bool operator!=(const Vec3& o) const { return !(*this == o); }
 };
 
-constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
-constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 operator*(double s, const Vec3& v)
+{
+  return v * s;
+}
+constexpr double dot(const Vec3& a, const Vec3& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(const Vec3& a, const Vec3& b)
 {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-constexpr double squaredNorm(const Vec3& v) { return dot(v, v); }
-inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
-inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
-constexpr double squaredDistance(const Vec3& a, const Vec3& b) { return squaredNorm(a - b); }
+constexpr double squaredNorm(const Vec3& v)
+{
+  return dot(v, v);
+}
+inline double norm(const Vec3& v)
+{
+  return std::sqrt(dot(v, v));
+}
+inline double distance(const Vec3& a, const Vec3& b)
+{
+  return norm(a - b);
+}
+constexpr double squaredDistance(const Vec3& a, const Vec3& b)
+{
+  return squaredNorm(a - b);
+}
 constexpr double maxAbsComponent(const Vec3& v)
 {
   const double ax = v.x < 0 ? -v.x : v.x;

@@ -40,10 +40,11 @@ bool writeDeviceRecording(const std::string& path, const std::vector<RecordedSam
   {
     const DeviceSample& s = row.sample;
     // %.17g: every double comes back bit for bit.
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%d,%d,%u,%d,%.17g,%.17g,%.17g,%.17g\n",
-                  row.time, s.position.x, s.position.y, s.position.z, s.valid ? 1 : 0,
-                  s.connected ? 1 : 0, static_cast<unsigned>(s.buttons), s.hasOrientation ? 1 : 0,
-                  s.orientation[0], s.orientation[1], s.orientation[2], s.orientation[3]);
+    std::snprintf(line, sizeof line,
+                  "%.17g,%.17g,%.17g,%.17g,%d,%d,%u,%d,%.17g,%.17g,%.17g,%.17g\n", row.time,
+                  s.position.x, s.position.y, s.position.z, s.valid ? 1 : 0, s.connected ? 1 : 0,
+                  static_cast<unsigned>(s.buttons), s.hasOrientation ? 1 : 0, s.orientation[0],
+                  s.orientation[1], s.orientation[2], s.orientation[3]);
     file << line;
   }
   file.close();
@@ -71,9 +72,8 @@ std::optional<std::vector<RecordedSample>> readDeviceRecording(const std::string
     return std::nullopt;
   }
   std::vector<RecordedSample> samples;
-  static const char* const names[kNumColumns] = {"t",     "x",         "y",       "z",
-                                                 "valid", "connected", "buttons", "has_orientation",
-                                                 "qw",    "qx",        "qy",      "qz"};
+  static const char* const names[kNumColumns] = {
+    "t", "x", "y", "z", "valid", "connected", "buttons", "has_orientation", "qw", "qx", "qy", "qz"};
   for (std::size_t number = 2; std::getline(file, line); ++number)
   {
     if (line.empty())

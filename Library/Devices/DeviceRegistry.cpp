@@ -19,9 +19,9 @@ constexpr std::uint16_t kFalconVendor = 0x0403;
 constexpr std::uint16_t kFalconProduct = 0xcb48;
 // 3Dconnexion devices sold under Logitech's vendor ID (SpaceNavigator, SpaceExplorer,
 // SpacePilot, SpaceMouse Pro, Wireless, ...); every device under 3Dconnexion's own ID is one.
-constexpr std::uint16_t kLogitechSpaceMice[] = {0xc603, 0xc605, 0xc606, 0xc621, 0xc623, 0xc625,
-                                                0xc626, 0xc627, 0xc628, 0xc629, 0xc62b, 0xc62e,
-                                                0xc62f};
+constexpr std::uint16_t kLogitechSpaceMice[] = {0xc603, 0xc605, 0xc606, 0xc621, 0xc623,
+                                                0xc625, 0xc626, 0xc627, 0xc628, 0xc629,
+                                                0xc62b, 0xc62e, 0xc62f};
 
 std::string hexIds(std::uint16_t vendor, std::uint16_t product)
 {

@@ -22,7 +22,9 @@ constexpr int kHandshakeTimeoutMilliseconds = 1000;
 } // namespace
 
 FalconDevice::FalconDevice(std::unique_ptr<BulkTransport> transport, const FalconSettings& settings)
-  : m_transport(std::move(transport)), m_settings(settings), m_kinematics(settings.geometry)
+  : m_transport(std::move(transport))
+  , m_settings(settings)
+  , m_kinematics(settings.geometry)
 {
   const double theta = settings.thetaAtZeroCounts;
   m_neutral = m_kinematics.forward({theta, theta, theta}).value_or(Vec3{});
@@ -71,7 +73,8 @@ std::array<std::int16_t, 3> FalconDevice::commandsFromTorques(const JointAngles&
   const double scale = largest > limit ? limit / largest : 1.0;
   for (std::size_t i = 0; i < 3; ++i)
   {
-    commands[i] = static_cast<std::int16_t>(std::clamp(std::round(values[i] * scale), -limit, limit));
+    commands[i] =
+      static_cast<std::int16_t>(std::clamp(std::round(values[i] * scale), -limit, limit));
   }
   return commands;
 }
@@ -101,9 +104,9 @@ bool FalconDevice::expectBytes(const std::vector<std::uint8_t>& expected, const 
   }
   if (received != expected)
   {
-    error = std::string("the Falcon's answer to the ") + what + " is not what its bootloader sends (" +
-            std::to_string(received.size()) + " of " + std::to_string(expected.size()) +
-            " bytes, or different ones)";
+    error = std::string("the Falcon's answer to the ") + what +
+            " is not what its bootloader sends (" + std::to_string(received.size()) + " of " +
+            std::to_string(expected.size()) + " bytes, or different ones)";
     return false;
   }
   return true;
@@ -263,8 +266,8 @@ DeviceSample FalconDevice::read(double /*time*/)
   DeviceSample sample;
   if (result.ok())
   {
-    if (const auto frame =
-          m_reader.push(std::span<const std::uint8_t>(buffer.data(), std::min(result.size, buffer.size()))))
+    if (const auto frame = m_reader.push(
+          std::span<const std::uint8_t>(buffer.data(), std::min(result.size, buffer.size()))))
     {
       m_encoders = frame->values;
       m_buttons = frame->info & kFalconButtonMask;

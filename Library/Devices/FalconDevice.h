@@ -65,7 +65,10 @@ public:
   const char* name() const override { return "falcon"; }
 
   /// LED bits (kFalconLedGreen, Blue, Red) sent with every frame from now on.
-  void setLeds(std::uint8_t leds) { m_leds = leds & (kFalconLedGreen | kFalconLedBlue | kFalconLedRed); }
+  void setLeds(std::uint8_t leds)
+  {
+    m_leds = leds & (kFalconLedGreen | kFalconLedBlue | kFalconLedRed);
+  }
 
   bool homed() const { return m_homed; }
   bool connected() const { return m_connected; }

@@ -58,8 +58,8 @@ std::optional<FalconFrame> decodeFalconFrame(std::span<const std::uint8_t> bytes
   {
     if (bytes[i] < kNibbleBase)
     {
-      error = "byte " + std::to_string(i) + " of a frame is " + std::to_string(bytes[i]) +
-              ", below 'A'";
+      error =
+        "byte " + std::to_string(i) + " of a frame is " + std::to_string(bytes[i]) + ", below 'A'";
       return std::nullopt;
     }
   }

@@ -58,7 +58,8 @@ constexpr int kForwardMaxSteps = 64;
 constexpr double kConstraintTolerance = 1e-9;
 } // namespace
 
-DeltaKinematics::DeltaKinematics(const DeltaGeometry& geometry) : m_geometry(geometry)
+DeltaKinematics::DeltaKinematics(const DeltaGeometry& geometry)
+  : m_geometry(geometry)
 {
   for (std::size_t i = 0; i < 3; ++i)
   {
@@ -124,9 +125,9 @@ std::optional<Vec3> DeltaKinematics::forward(const JointAngles& angles) const
                 knees[2] - m_arms[2].effectorOffset, m_geometry.lowerArm + links);
   for (int step = 0; position && step < kForwardMaxSteps; ++step)
   {
-    const auto next = trilaterate(sphereCentre(0, knees[0], *position),
-                                  sphereCentre(1, knees[1], *position),
-                                  sphereCentre(2, knees[2], *position), m_geometry.lowerArm);
+    const auto next =
+      trilaterate(sphereCentre(0, knees[0], *position), sphereCentre(1, knees[1], *position),
+                  sphereCentre(2, knees[2], *position), m_geometry.lowerArm);
     if (!next)
     {
       return std::nullopt;

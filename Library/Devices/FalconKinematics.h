@@ -31,14 +31,14 @@ namespace proxima
 /// in brackets.
 struct DeltaGeometry
 {
-  double upperArm = falcon::kUpperArm;                    // [a]
-  double lowerArm = falcon::kLowerArm;                    // [b]
-  double kneeLink = falcon::kKneeLink;                    // [e]
-  double effectorLink = falcon::kEffectorLink;            // [d]
-  double effectorRadial = falcon::kEffectorRadial;        // [c]
-  double effectorAlongAxis = falcon::kEffectorAlongAxis;  // [f]
-  double hipRadial = falcon::kHipRadial;                  // [r]
-  double hipAlongAxis = falcon::kHipAlongAxis;            // [s]
+  double upperArm = falcon::kUpperArm;                   // [a]
+  double lowerArm = falcon::kLowerArm;                   // [b]
+  double kneeLink = falcon::kKneeLink;                   // [e]
+  double effectorLink = falcon::kEffectorLink;           // [d]
+  double effectorRadial = falcon::kEffectorRadial;       // [c]
+  double effectorAlongAxis = falcon::kEffectorAlongAxis; // [f]
+  double hipRadial = falcon::kHipRadial;                 // [r]
+  double hipAlongAxis = falcon::kHipAlongAxis;           // [s]
   std::array<double, 3> armAngles{falcon::kArmAngles[0], falcon::kArmAngles[1],
                                   falcon::kArmAngles[2]}; // [phy]
 };

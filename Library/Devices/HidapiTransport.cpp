@@ -24,7 +24,9 @@ std::string narrow(const wchar_t* text)
 class HidapiTransport final : public ReportTransport
 {
 public:
-  explicit HidapiTransport(hid_device* device) : m_device(device) {}
+  explicit HidapiTransport(hid_device* device)
+    : m_device(device)
+  {}
   ~HidapiTransport() override { hid_close(m_device); }
   HidapiTransport(const HidapiTransport&) = delete;
   HidapiTransport& operator=(const HidapiTransport&) = delete;

@@ -34,9 +34,9 @@ class LibusbTransport final : public BulkTransport
 {
 public:
   LibusbTransport(libusb_context* context, libusb_device_handle* handle)
-    : m_context(context), m_handle(handle)
-  {
-  }
+    : m_context(context)
+    , m_handle(handle)
+  {}
   ~LibusbTransport() override
   {
     libusb_release_interface(m_handle, 0);
@@ -66,10 +66,9 @@ public:
     }
     int transferred = 0;
     // libusb takes a non-const buffer for both directions; an OUT transfer only reads it.
-    const int code = libusb_bulk_transfer(m_handle, kEndpointOut,
-                                          const_cast<unsigned char*>(bytes.data()),
-                                          static_cast<int>(bytes.size()), &transferred,
-                                          kWriteTimeoutMilliseconds);
+    const int code =
+      libusb_bulk_transfer(m_handle, kEndpointOut, const_cast<unsigned char*>(bytes.data()),
+                           static_cast<int>(bytes.size()), &transferred, kWriteTimeoutMilliseconds);
     if (code == 0 && static_cast<std::size_t>(transferred) != bytes.size())
     {
       return {TransportStatus::Failed, static_cast<std::size_t>(transferred)};
@@ -85,8 +84,8 @@ public:
     }
     // Room for the payload plus the status bytes of every packet it may span.
     const std::size_t payloadPerPacket = ftdi::kPacketSize - ftdi::kStatusBytes;
-    const std::size_t packets = std::max<std::size_t>(1, (buffer.size() + payloadPerPacket - 1) /
-                                                           payloadPerPacket);
+    const std::size_t packets =
+      std::max<std::size_t>(1, (buffer.size() + payloadPerPacket - 1) / payloadPerPacket);
     const std::size_t rawSize = std::min(packets * ftdi::kPacketSize, m_raw.size());
     int transferred = 0;
     // libusb waits forever on a timeout of 0; "do not wait" is the shortest wait it has.

@@ -4,9 +4,9 @@ namespace proxima
 {
 
 ReplayDevice::ReplayDevice(std::vector<RecordedSample> samples, DeviceLimits limits)
-  : m_samples(std::move(samples)), m_limits(limits)
-{
-}
+  : m_samples(std::move(samples))
+  , m_limits(limits)
+{}
 
 DeviceSample ReplayDevice::read(double time)
 {

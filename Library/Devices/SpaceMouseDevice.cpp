@@ -8,9 +8,10 @@ namespace proxima
 
 SpaceMouseDevice::SpaceMouseDevice(std::unique_ptr<ReportTransport> transport,
                                    const SpaceMouseSettings& settings)
-  : m_transport(std::move(transport)), m_settings(settings), m_ratePosition(settings.centre)
-{
-}
+  : m_transport(std::move(transport))
+  , m_settings(settings)
+  , m_ratePosition(settings.centre)
+{}
 
 Vec3 SpaceMouseDevice::mapped(const std::array<int, 3>& counts) const
 {
@@ -78,8 +79,8 @@ DeviceSample SpaceMouseDevice::read(double time)
   }
   else
   {
-    position = componentMax(low, componentMin(high, m_settings.centre +
-                                                      offset * m_settings.metresPerCount));
+    position =
+      componentMax(low, componentMin(high, m_settings.centre + offset * m_settings.metresPerCount));
   }
   m_started = true;
   m_lastTime = time;

@@ -40,48 +40,47 @@ SpaceMouseReportResult applySpaceMouseReport(std::span<const std::uint8_t> repor
   SpaceMouseReportResult result;
   switch (id)
   {
-  case kSpaceMouseTranslationReport:
-  {
-    const std::size_t needed = layout == SpaceMouseLayout::SixAxisReport ? 12 : 6;
-    if (payload < needed)
+    case kSpaceMouseTranslationReport:
     {
-      return refuse("report 1 has " + std::to_string(payload) + " bytes, the layout needs " +
-                    std::to_string(needed));
+      const std::size_t needed = layout == SpaceMouseLayout::SixAxisReport ? 12 : 6;
+      if (payload < needed)
+      {
+        return refuse("report 1 has " + std::to_string(payload) + " bytes, the layout needs " +
+                      std::to_string(needed));
+      }
+      readAxes(report, 1, state.translation);
+      result.translation = true;
+      if (layout == SpaceMouseLayout::SixAxisReport)
+      {
+        readAxes(report, 7, state.rotation);
+        result.rotation = true;
+      }
+      break;
     }
-    readAxes(report, 1, state.translation);
-    result.translation = true;
-    if (layout == SpaceMouseLayout::SixAxisReport)
-    {
-      readAxes(report, 7, state.rotation);
+    case kSpaceMouseRotationReport:
+      if (payload < 6)
+      {
+        return refuse("report 2 has " + std::to_string(payload) + " bytes, needs 6");
+      }
+      readAxes(report, 1, state.rotation);
       result.rotation = true;
-    }
-    break;
-  }
-  case kSpaceMouseRotationReport:
-    if (payload < 6)
+      break;
+    case kSpaceMouseButtonReport:
     {
-      return refuse("report 2 has " + std::to_string(payload) + " bytes, needs 6");
+      if (payload < 1)
+      {
+        return refuse("report 3 has no button bytes");
+      }
+      std::uint32_t buttons = 0;
+      for (std::size_t i = 0; i < std::min<std::size_t>(payload, 4); ++i)
+      {
+        buttons |= static_cast<std::uint32_t>(report[1 + i]) << (8 * i);
+      }
+      state.buttons = buttons;
+      result.buttons = true;
+      break;
     }
-    readAxes(report, 1, state.rotation);
-    result.rotation = true;
-    break;
-  case kSpaceMouseButtonReport:
-  {
-    if (payload < 1)
-    {
-      return refuse("report 3 has no button bytes");
-    }
-    std::uint32_t buttons = 0;
-    for (std::size_t i = 0; i < std::min<std::size_t>(payload, 4); ++i)
-    {
-      buttons |= static_cast<std::uint32_t>(report[1 + i]) << (8 * i);
-    }
-    state.buttons = buttons;
-    result.buttons = true;
-    break;
-  }
-  default:
-    return refuse("unknown report ID " + std::to_string(id));
+    default: return refuse("unknown report ID " + std::to_string(id));
   }
   result.accepted = true;
   return result;
@@ -92,8 +91,8 @@ std::array<std::uint8_t, 2> spaceMouseLedReport(bool on)
   return {kSpaceMouseLedReport, static_cast<std::uint8_t>(on ? 1 : 0)};
 }
 
-std::optional<std::vector<std::pair<std::uint8_t, std::size_t>>>
-inputReportSizes(std::span<const std::uint8_t> descriptor, std::string& error)
+std::optional<std::vector<std::pair<std::uint8_t, std::size_t>>> inputReportSizes(
+  std::span<const std::uint8_t> descriptor, std::string& error)
 {
   // Walks the short items of the descriptor (HID 1.11 section 6.2.2.2), keeping the global Report
   // ID, Report Size and Report Count, and adds size x count bits to the current report for every
@@ -131,29 +130,28 @@ inputReportSizes(std::span<const std::uint8_t> descriptor, std::string& error)
     }
     switch (prefix & 0xfc)
     {
-    case 0x84: // Report ID
-      reportId = static_cast<std::uint8_t>(data);
-      break;
-    case 0x74: // Report Size
-      reportSize = data;
-      break;
-    case 0x94: // Report Count
-      reportCount = data;
-      break;
-    case 0x80: // Input
-    {
-      auto entry = std::find_if(bits.begin(), bits.end(),
-                                [&](const auto& pair) { return pair.first == reportId; });
-      if (entry == bits.end())
+      case 0x84: // Report ID
+        reportId = static_cast<std::uint8_t>(data);
+        break;
+      case 0x74: // Report Size
+        reportSize = data;
+        break;
+      case 0x94: // Report Count
+        reportCount = data;
+        break;
+      case 0x80: // Input
       {
-        bits.emplace_back(reportId, 0);
-        entry = bits.end() - 1;
+        auto entry = std::find_if(bits.begin(), bits.end(),
+                                  [&](const auto& pair) { return pair.first == reportId; });
+        if (entry == bits.end())
+        {
+          bits.emplace_back(reportId, 0);
+          entry = bits.end() - 1;
+        }
+        entry->second += static_cast<std::size_t>(reportSize) * reportCount;
+        break;
       }
-      entry->second += static_cast<std::size_t>(reportSize) * reportCount;
-      break;
-    }
-    default:
-      break;
+      default: break;
     }
     at += 1 + dataSize;
   }

@@ -61,8 +61,8 @@ std::array<std::uint8_t, 2> spaceMouseLedReport(bool on);
 
 /// Input report sizes in bytes (without the ID byte), by report ID, from a HID report descriptor.
 /// Refuses (nullopt, `error` set) a descriptor whose items run past its end.
-std::optional<std::vector<std::pair<std::uint8_t, std::size_t>>>
-inputReportSizes(std::span<const std::uint8_t> descriptor, std::string& error);
+std::optional<std::vector<std::pair<std::uint8_t, std::size_t>>> inputReportSizes(
+  std::span<const std::uint8_t> descriptor, std::string& error);
 
 /// The layout a report descriptor describes: six axes (12 bytes) in report 1, or three (6 bytes)
 /// with report 2 beside it. Refuses a descriptor without a translation report of either size.

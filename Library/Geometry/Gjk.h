@@ -93,8 +93,8 @@ GjkResult gjkDistance(const SetA& a, const SetB& b, GjkSimplex& simplex,
   if (simplex.size == 0)
   {
     GjkVertex first;
-    first.w = a.support(Vec3{1.0, 0.0, 0.0}, first.indexA) -
-              b.support(Vec3{-1.0, 0.0, 0.0}, first.indexB);
+    first.w =
+      a.support(Vec3{1.0, 0.0, 0.0}, first.indexA) - b.support(Vec3{-1.0, 0.0, 0.0}, first.indexB);
     simplex.vertices[0] = first;
     simplex.size = 1;
   }

@@ -19,9 +19,9 @@ TriangleSoup makeIcosphere(std::uint32_t subdivisions, double radius, const Vec3
     p = normalizedOrZero(p);
   }
   std::vector<std::array<std::uint32_t, 3>> faces = {
-    {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+    {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
     {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-    {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (std::uint32_t level = 0; level < subdivisions; ++level)
   {
     // Each edge's midpoint is made once and shared by both faces, so the sphere stays closed.
@@ -68,8 +68,8 @@ TriangleSoup makeBox(const Vec3& h, const Vec3& center)
   TriangleSoup soup;
   for (int i = 0; i < 8; ++i)
   {
-    soup.points.push_back(center + Vec3{(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y,
-                                        (i & 4) ? h.z : -h.z});
+    soup.points.push_back(center +
+                          Vec3{(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
   }
   // Quads with outward winding (counter-clockwise seen from outside).
   const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},

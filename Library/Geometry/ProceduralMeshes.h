@@ -19,7 +19,8 @@ TriangleSoup makeBox(const Vec3& halfExtents, const Vec3& center = Vec3{});
 /// triangles each, corners at `radius` from the axis, z from -height/2 to height/2 about
 /// `center`, outward winding, and radial unit normals per point: the faceted cylinder of the
 /// paper's Figure 6, whose normals stand for the round one.
-TriangleSoup makePrism(std::uint32_t sides, double radius, double height, const Vec3& center = Vec3{});
+TriangleSoup makePrism(std::uint32_t sides, double radius, double height,
+                       const Vec3& center = Vec3{});
 
 /// A square of side `size` in the plane z = height, split into 2 * cells^2 triangles, normal +z.
 TriangleSoup makeGrid(double size, std::uint32_t cells, double height = 0.0);

@@ -51,9 +51,7 @@ Vec3 reduceSimplexToClosest(GjkVertex* vertices, double* weights, int& size)
 {
   switch (size)
   {
-    case 1:
-      weights[0] = 1.0;
-      return vertices[0].w;
+    case 1: weights[0] = 1.0; return vertices[0].w;
     case 2:
     {
       const double s = closestParameterOnSegment(Vec3{}, vertices[0].w, vertices[1].w);
@@ -63,10 +61,8 @@ Vec3 reduceSimplexToClosest(GjkVertex* vertices, double* weights, int& size)
       compact(vertices, weights, size);
       return p;
     }
-    case 3:
-      return closestOnTriangle(vertices, weights, size);
-    default:
-      break;
+    case 3: return closestOnTriangle(vertices, weights, size);
+    default: break;
   }
 
   // Tetrahedron: the origin is inside when the four sub-volumes with the origin replacing one

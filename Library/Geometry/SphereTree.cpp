@@ -88,9 +88,9 @@ BuildLeaf makeLeaf(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t tr
   const Sphere exact = minimalSphere(a, b, c);
   BuildLeaf leaf;
   leaf.center = roundToFloatPrecision(exact.center);
-  const double reach = std::sqrt(std::max({squaredDistance(leaf.center, a),
-                                           squaredDistance(leaf.center, b),
-                                           squaredDistance(leaf.center, c)}));
+  const double reach =
+    std::sqrt(std::max({squaredDistance(leaf.center, a), squaredDistance(leaf.center, b),
+                        squaredDistance(leaf.center, c)}));
   leaf.radius = static_cast<double>(roundUpToFloat(reach));
   leaf.triangle = triangle;
   return leaf;
@@ -170,8 +170,8 @@ std::uint32_t splitLeaves(std::vector<BuildLeaf>& leaves, std::uint32_t begin, s
   const double middle = box.center()[axis];
   auto first = leaves.begin() + begin;
   auto last = leaves.begin() + end;
-  auto split = std::partition(first, last,
-                              [&](const BuildLeaf& leaf) { return leaf.center[axis] < middle; });
+  auto split =
+    std::partition(first, last, [&](const BuildLeaf& leaf) { return leaf.center[axis] < middle; });
   if (split == first || split == last || depth > kMedianSplitDepth)
   {
     split = first + (end - begin) / 2;
@@ -251,9 +251,10 @@ class TreeBuilder
 public:
   TreeBuilder(std::vector<BuildLeaf>& leaves, std::uint32_t maxPerNode,
               std::vector<SphereTreeNode>& nodes)
-    : m_leaves(leaves), m_maxPerNode(std::max<std::uint32_t>(1, maxPerNode)), m_nodes(nodes)
-  {
-  }
+    : m_leaves(leaves)
+    , m_maxPerNode(std::max<std::uint32_t>(1, maxPerNode))
+    , m_nodes(nodes)
+  {}
 
   // Builds the subtree over leaves [begin, end), whose root is at `depth`, and returns its exact
   // (double) sphere.
@@ -306,12 +307,11 @@ constexpr std::uint32_t kLeavesPerSubtree = 8192;
 class ParallelTreeBuilder
 {
 public:
-  ParallelTreeBuilder(std::vector<BuildLeaf>& leaves, std::uint32_t maxPerNode,
-                      unsigned numThreads)
-    : m_leaves(leaves), m_maxPerNode(std::max<std::uint32_t>(1, maxPerNode)),
-      m_numThreads(numThreads)
-  {
-  }
+  ParallelTreeBuilder(std::vector<BuildLeaf>& leaves, std::uint32_t maxPerNode, unsigned numThreads)
+    : m_leaves(leaves)
+    , m_maxPerNode(std::max<std::uint32_t>(1, maxPerNode))
+    , m_numThreads(numThreads)
+  {}
 
   // Appends the whole tree to `nodes` and returns its depth.
   std::uint32_t build(std::vector<SphereTreeNode>& nodes)
@@ -496,11 +496,13 @@ class CoverTriangles
 public:
   CoverTriangles(const TriangleMesh& mesh, const Vec3& origin, double targetEdgeSquared,
                  int maxDepth, std::vector<BuildLeaf>& leaves)
-    : m_mesh(mesh), m_origin(origin), m_targetEdgeSquared(targetEdgeSquared),
-      m_maxDepth(maxDepth), m_leaves(leaves),
-      m_chunks((mesh.numTriangles() + kTrianglesPerChunk - 1) / kTrianglesPerChunk)
-  {
-  }
+    : m_mesh(mesh)
+    , m_origin(origin)
+    , m_targetEdgeSquared(targetEdgeSquared)
+    , m_maxDepth(maxDepth)
+    , m_leaves(leaves)
+    , m_chunks((mesh.numTriangles() + kTrianglesPerChunk - 1) / kTrianglesPerChunk)
+  {}
 
   void operator()(std::size_t begin, std::size_t end)
   {
@@ -589,8 +591,8 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
     for (std::uint32_t t = 0; t < m_numTriangles; ++t)
     {
       const TriangleCorners& c = mesh.corners(t);
-      addLeavesOf(c.a - m_origin, c.b - m_origin, c.c - m_origin, t, targetEdgeSquared,
-                  maxDepth, leaves);
+      addLeavesOf(c.a - m_origin, c.b - m_origin, c.c - m_origin, t, targetEdgeSquared, maxDepth,
+                  leaves);
     }
   }
   else

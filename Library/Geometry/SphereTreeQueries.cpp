@@ -55,8 +55,7 @@ public:
     , m_motion(query.end - query.start)
     , m_reachBeyondSphere(query.radius + query.skin)
     , m_counts(counts)
-  {
-  }
+  {}
 
   bool reachesNode(const SphereTreeNode& node)
   {
@@ -71,7 +70,10 @@ public:
     return dot(centerOf(left) - m_start, m_motion) <= dot(centerOf(right) - m_start, m_motion);
   }
 
-  bool reachesLeaf(const LeafSphere& leaf) const { return reachesPath(centerOf(leaf), leaf.radius); }
+  bool reachesLeaf(const LeafSphere& leaf) const
+  {
+    return reachesPath(centerOf(leaf), leaf.radius);
+  }
 
   void visitTriangle(std::uint32_t triangle)
   {
@@ -115,9 +117,10 @@ class NearPointVisitor
 {
 public:
   NearPointVisitor(const Vec3& point, double maxDistance, Found& found)
-    : m_point(point), m_maxDistance(maxDistance), m_found(found)
-  {
-  }
+    : m_point(point)
+    , m_maxDistance(maxDistance)
+    , m_found(found)
+  {}
 
   bool reachesNode(const SphereTreeNode& node) const
   {
@@ -152,8 +155,7 @@ public:
     , m_bestDistance(maxDistance)
     , m_bestSquared(maxDistance * maxDistance)
     , m_counts(counts)
-  {
-  }
+  {}
 
   bool reachesNode(const SphereTreeNode& node) const
   {
@@ -346,9 +348,8 @@ std::uint32_t SphereTree::candidatesWithin(const Vec3& point, double maxDistance
   return found;
 }
 
-NearestTriangle SphereTree::nearest(const TriangleMesh& mesh, const Vec3& point,
-                                    double maxDistance, SphereTreeScratch& scratch,
-                                    QueryStats* stats) const
+NearestTriangle SphereTree::nearest(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
+                                    SphereTreeScratch& scratch, QueryStats* stats) const
 {
   if (m_nodes.empty() || !(maxDistance >= 0.0))
   {

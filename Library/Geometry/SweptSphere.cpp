@@ -165,8 +165,8 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
       return sweepFromOutside(start, motion, freshRadius, triangle);
     }
   }
-  const ClosestPointResult closest = closestPointOnTriangle(start, triangle.a, triangle.b,
-                                                            triangle.c);
+  const ClosestPointResult closest =
+    closestPointOnTriangle(start, triangle.a, triangle.b, triangle.c);
   const double startDistance = std::sqrt(closest.squaredDistance);
   double contactRadius = freshRadius;
   if (startDistance < radius + 1.5 * skin)
@@ -189,8 +189,8 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
     const double slack = skin > 0.0 && startDistance >= radius - 0.5 * skin
                            ? kTouchingSlope * std::sqrt(dot(motion, motion)) * startDistance
                            : 0.0;
-    const bool approaching = startDistance > 0.0 ? dot(motion, away) < -slack
-                                                  : dot(motion, motion) > 0.0;
+    const bool approaching =
+      startDistance > 0.0 ? dot(motion, away) < -slack : dot(motion, motion) > 0.0;
     result.hit = approaching;
     result.t = approaching ? 0.0 : 1.0;
     return result;

@@ -29,9 +29,9 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
     {
       const TriangleCorners& c = object.mesh.corners(m_triangle[m_count]);
       const Vec3 centroid = (c.a + c.b + c.c) / 3.0;
-      const double radius = std::sqrt(std::max({squaredDistance(centroid, c.a),
-                                                squaredDistance(centroid, c.b),
-                                                squaredDistance(centroid, c.c)}));
+      const double radius =
+        std::sqrt(std::max({squaredDistance(centroid, c.a), squaredDistance(centroid, c.b),
+                            squaredDistance(centroid, c.c)}));
       m_sphereX[m_count] = centroid.x;
       m_sphereY[m_count] = centroid.y;
       m_sphereZ[m_count] = centroid.z;
@@ -42,9 +42,9 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
       const double normalLength = norm(normalCross);
       const Vec3 normal = normalLength > 0.0 ? normalCross / normalLength : Vec3{};
       const double offset = dot(normal, centroid);
-      const double off = std::max({std::fabs(dot(normal, c.a) - offset),
-                                   std::fabs(dot(normal, c.b) - offset),
-                                   std::fabs(dot(normal, c.c) - offset)});
+      const double off =
+        std::max({std::fabs(dot(normal, c.a) - offset), std::fabs(dot(normal, c.b) - offset),
+                  std::fabs(dot(normal, c.c) - offset)});
       m_normalX[m_count] = normal.x;
       m_normalY[m_count] = normal.y;
       m_normalZ[m_count] = normal.z;
@@ -158,8 +158,7 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
   return found;
 }
 
-double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end,
-                                      double distance) const
+double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end, double distance) const
 {
   // The segment's points p with |p - centre| <= reach - distance: from the start (inside) to
   // where it leaves that ball.

@@ -60,8 +60,8 @@ public:
   /// Every cached triangle within `maxDistance` of `point`; returns the count, writes at most
   /// `capacity`. Call only when coversBall(point, maxDistance).
   std::uint32_t gatherWithin(const CollisionScene& scene, const Vec3& point, double maxDistance,
-                             NearbyTriangle* out, std::uint32_t* outObjects,
-                             std::uint32_t capacity, QueryStats& stats) const;
+                             NearbyTriangle* out, std::uint32_t* outObjects, std::uint32_t capacity,
+                             QueryStats& stats) const;
 
   /// How much of the sweep from `start` to `end` (as a fraction of it, 0 to 1) stays within the
   /// cache's cover with `distance` around it; 0 when the start is not covered.

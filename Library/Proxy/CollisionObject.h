@@ -20,9 +20,9 @@ struct CollisionObject
 };
 
 /// Builds the tree over `mesh` and wraps the object for sharing. Not for the haptic thread.
-inline std::shared_ptr<const CollisionObject>
-makeCollisionObject(TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{},
-                    const SurfaceMaterial& material = SurfaceMaterial{})
+inline std::shared_ptr<const CollisionObject> makeCollisionObject(
+  TriangleMesh mesh, const SphereTreeOptions& options = SphereTreeOptions{},
+  const SurfaceMaterial& material = SurfaceMaterial{})
 {
   auto object = std::make_shared<CollisionObject>();
   object->mesh = std::move(mesh);

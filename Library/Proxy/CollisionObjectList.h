@@ -32,7 +32,9 @@ public:
     using reference = const CollisionObject&;
 
     const_iterator() = default;
-    explicit const_iterator(std::vector<Pointer>::const_iterator at) : m_at(at) {}
+    explicit const_iterator(std::vector<Pointer>::const_iterator at)
+      : m_at(at)
+    {}
     reference operator*() const { return **m_at; }
     pointer operator->() const { return m_at->get(); }
     const_iterator& operator++()

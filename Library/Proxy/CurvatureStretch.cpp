@@ -27,9 +27,18 @@ bool edgeOf(const TriangleCorners& corners, TriangleFeature feature, Vec3& from,
 {
   switch (feature)
   {
-    case TriangleFeature::EdgeAB: from = corners.a; to = corners.b; return true;
-    case TriangleFeature::EdgeBC: from = corners.b; to = corners.c; return true;
-    case TriangleFeature::EdgeCA: from = corners.c; to = corners.a; return true;
+    case TriangleFeature::EdgeAB:
+      from = corners.a;
+      to = corners.b;
+      return true;
+    case TriangleFeature::EdgeBC:
+      from = corners.b;
+      to = corners.c;
+      return true;
+    case TriangleFeature::EdgeCA:
+      from = corners.c;
+      to = corners.a;
+      return true;
     default: return false;
   }
 }
@@ -176,8 +185,7 @@ Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFin
   const double alongSquared = squaredNorm(along);
   // Along an edge the cylinder is straight: only the part across it is stretched (a corner, or
   // an edge of zero length, is curved in every tangent direction).
-  const Vec3 straight =
-    alongSquared > 0.0 ? along * (dot(planar, along) / alongSquared) : Vec3{};
+  const Vec3 straight = alongSquared > 0.0 ? along * (dot(planar, along) / alongSquared) : Vec3{};
   const double hessian = 1.0 - depth / rho;
   if (hessian > 1.0 / kMaxCurvatureStretch)
   {

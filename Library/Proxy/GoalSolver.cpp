@@ -46,7 +46,10 @@ bool isKktPoint(const Vec3& toFinger, const Vec3* normals, const GoalSolution& s
   return norm(residual) <= kFeasibilityTolerance * (scale + depthSum);
 }
 
-double determinant3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
+double determinant3(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return dot(a, cross(b, c));
+}
 
 // Solves G mu = rhs for the Gram matrix G of `count` normals by Cramer's rule; false if the
 // normals are (nearly) dependent, in which case a smaller subset covers the same constraint.

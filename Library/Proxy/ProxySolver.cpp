@@ -114,12 +114,11 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
 {
   m_scene = scene;
   m_parameters = parameters;
-  m_skin = scene != nullptr
-             ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
-             : resolveSkin(parameters, 0.0, 0.0);
+  m_skin = scene != nullptr ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
+                            : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
-  m_coherenceMargin = parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin
-                                                       : parameters.radius;
+  m_coherenceMargin =
+    parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin : parameters.radius;
   m_cache.invalidate();
   m_planesValid = false;
   m_reachRadius = 0.0;
@@ -132,8 +131,8 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
       box.expand(object.mesh.bounds().upper);
     }
     m_reachCenter = box.center();
-    m_reachRadius = kReachFactor * (scene->maxAbsCoordinate() +
-                                    std::max(scene->diagonal(), parameters.radius));
+    m_reachRadius =
+      kReachFactor * (scene->maxAbsCoordinate() + std::max(scene->diagonal(), parameters.radius));
   }
   // DESIGN.md section 4's accuracy scale: 1 nm, or 1e-9 of the scene's size if larger.
   m_shadingTolerance = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
@@ -282,9 +281,8 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     {
       const CollisionObject& object = m_scene->objects[objectIndex];
       const std::uint32_t room = kMaxNearbyTriangles - stored;
-      const std::uint32_t found = object.tree.gatherWithin(object.mesh, position, reach,
-                                                           m_nearby + stored, room, m_scratch,
-                                                           &stats);
+      const std::uint32_t found = object.tree.gatherWithin(
+        object.mesh, position, reach, m_nearby + stored, room, m_scratch, &stats);
       complete = complete && found <= room;
       const std::uint32_t kept = found < room ? found : room;
       for (std::uint32_t i = 0; i < kept; ++i)
@@ -357,9 +355,21 @@ bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t 
     case TriangleFeature::VertexA: points[0] = own[0]; break;
     case TriangleFeature::VertexB: points[0] = own[1]; break;
     case TriangleFeature::VertexC: points[0] = own[2]; break;
-    case TriangleFeature::EdgeAB: points[0] = own[0]; points[1] = own[1]; numPoints = 2; break;
-    case TriangleFeature::EdgeBC: points[0] = own[1]; points[1] = own[2]; numPoints = 2; break;
-    case TriangleFeature::EdgeCA: points[0] = own[2]; points[1] = own[0]; numPoints = 2; break;
+    case TriangleFeature::EdgeAB:
+      points[0] = own[0];
+      points[1] = own[1];
+      numPoints = 2;
+      break;
+    case TriangleFeature::EdgeBC:
+      points[0] = own[1];
+      points[1] = own[2];
+      numPoints = 2;
+      break;
+    case TriangleFeature::EdgeCA:
+      points[0] = own[2];
+      points[1] = own[0];
+      numPoints = 2;
+      break;
     case TriangleFeature::Face: return true;
   }
   const TriangleMesh& mesh = m_scene->objects[plane.object].mesh;
@@ -743,8 +753,8 @@ bool ProxySolver::reachedTarget(ProxyTickState& tick, const ProxyTickResult& res
   return false;
 }
 
-bool ProxySolver::stopsWithoutProgress(ProxyTickState& tick, double toTarget,
-                                       double distanceBefore, ProxyTickResult& result)
+bool ProxySolver::stopsWithoutProgress(ProxyTickState& tick, double toTarget, double distanceBefore,
+                                       ProxyTickResult& result)
 {
   const bool progressed = toTarget < distanceBefore - tick.stepTolerance ||
                           tick.shading.moving(m_anyShaded, result.iterations);

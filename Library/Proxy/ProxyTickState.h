@@ -68,7 +68,9 @@ private:
 class ShadedTarget
 {
 public:
-  explicit ShadedTarget(const Vec3& finger) : m_target(finger) {}
+  explicit ShadedTarget(const Vec3& finger)
+    : m_target(finger)
+  {}
 
   const Vec3& target() const { return m_target; }
   /// A shaded plane took part in an update stage this tick.
@@ -161,7 +163,9 @@ private:
 class RepeatedBlockedMove
 {
 public:
-  explicit RepeatedBlockedMove(const Vec3& proxy) : m_previousGoal(proxy) {}
+  explicit RepeatedBlockedMove(const Vec3& proxy)
+    : m_previousGoal(proxy)
+  {}
 
   bool repeats(const Vec3& goal) const { return m_blockedAtOnce && goal == m_previousGoal; }
   void moved(const Vec3& goal, const Vec3& before, const Vec3& after)
@@ -206,8 +210,7 @@ struct ProxyTickState
     , stepTolerance(0.01 * skin)
     , shading(fingerInReach)
     , blocked(proxy)
-  {
-  }
+  {}
 
   const TickBudget budget;
   /// The finger, brought within ProxySolver::reachRadius().

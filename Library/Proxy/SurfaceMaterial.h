@@ -49,7 +49,10 @@ struct SurfaceMaterial
   /// Texture maps (paper 4.3); they need the mesh's texture coordinates.
   std::vector<TextureMap> textures;
 
-  bool hasFriction() const { return staticFriction > 0.0 || dynamicFriction > 0.0 || viscosity > 0.0; }
+  bool hasFriction() const
+  {
+    return staticFriction > 0.0 || dynamicFriction > 0.0 || viscosity > 0.0;
+  }
 };
 
 } // namespace proxima

@@ -12,8 +12,7 @@ BudgetResidualProbe::BudgetResidualProbe(const CollisionScene& scene,
   m_solver.setScene(&scene, unbudgeted);
 }
 
-double BudgetResidualProbe::residual(const Vec3& start, const Vec3& finger,
-                                     const Vec3& limitedEnd)
+double BudgetResidualProbe::residual(const Vec3& start, const Vec3& finger, const Vec3& limitedEnd)
 {
   m_solver.resetProxy(start);
   const ProxyTickResult settled = m_solver.update(finger);

@@ -25,16 +25,15 @@ void sleepUntilNanoseconds(Nanoseconds deadline)
   target.tv_sec = static_cast<time_t>(deadline / 1000000000);
   target.tv_nsec = static_cast<long>(deadline % 1000000000);
   while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &target, nullptr) == EINTR)
-  {
-  }
+  {}
 }
 
 DeadlineSchedule::DeadlineSchedule(Nanoseconds start, double rate,
                                    LoopStatisticsRecorder& statistics)
-  : m_start(start), m_period(static_cast<Nanoseconds>(std::llround(1e9 / rate))),
-    m_statistics(statistics)
-{
-}
+  : m_start(start)
+  , m_period(static_cast<Nanoseconds>(std::llround(1e9 / rate)))
+  , m_statistics(statistics)
+{}
 
 Nanoseconds DeadlineSchedule::nextDeadline() const
 {
@@ -93,14 +92,10 @@ std::string describeScheduling(std::thread& thread)
   }
   switch (policy)
   {
-  case SCHED_FIFO:
-    return "SCHED_FIFO " + std::to_string(parameters.sched_priority);
-  case SCHED_RR:
-    return "SCHED_RR " + std::to_string(parameters.sched_priority);
-  case SCHED_OTHER:
-    return "SCHED_OTHER";
-  default:
-    return "policy " + std::to_string(policy);
+    case SCHED_FIFO: return "SCHED_FIFO " + std::to_string(parameters.sched_priority);
+    case SCHED_RR: return "SCHED_RR " + std::to_string(parameters.sched_priority);
+    case SCHED_OTHER: return "SCHED_OTHER";
+    default: return "policy " + std::to_string(policy);
   }
 }
 

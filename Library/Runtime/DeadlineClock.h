@@ -58,8 +58,7 @@ class DeadlineClock
 public:
   DeadlineClock(Nanoseconds start, double rate, LoopStatisticsRecorder& statistics)
     : m_schedule(start, rate, statistics)
-  {
-  }
+  {}
 
   /// Waits for the next tick's deadline; returns its tick number.
   std::uint64_t waitForNextTick()

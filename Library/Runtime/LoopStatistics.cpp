@@ -108,8 +108,8 @@ void LoopStatisticsRecorder::reset(double rate)
 
 void LoopStatisticsRecorder::record(std::int64_t periodNanoseconds, bool missed)
 {
-  const std::int64_t bin = std::clamp<std::int64_t>(periodNanoseconds / LoopStatistics::kBinNanoseconds,
-                                                    0, LoopStatistics::kBins - 1);
+  const std::int64_t bin = std::clamp<std::int64_t>(
+    periodNanoseconds / LoopStatistics::kBinNanoseconds, 0, LoopStatistics::kBins - 1);
   m_histogram[static_cast<std::size_t>(bin)].fetch_add(1, std::memory_order_relaxed);
   const std::uint64_t ticks = m_ticks.fetch_add(1, std::memory_order_relaxed);
   if (ticks == 0 || periodNanoseconds < m_minPeriod.load(std::memory_order_relaxed))

@@ -11,8 +11,7 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 
 // Samples the segment at the rate, including both ends, starting at `startTime`.
-void appendSegment(FingerPath& path, const Vec3& from, const Vec3& to, double duration,
-                   double rate)
+void appendSegment(FingerPath& path, const Vec3& from, const Vec3& to, double duration, double rate)
 {
   const double startTime = path.empty() ? 0.0 : path.endTime() + 1.0 / rate;
   const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(duration * rate)));
@@ -62,8 +61,8 @@ FingerPath makePressAndStrokePath(const PressAndStroke& p, double rate)
   return path;
 }
 
-FingerPath makeCirclePath(const Vec3& center, const Vec3& axis, const Vec3& startDir,
-                          double radius, double revolutions, double duration, double rate)
+FingerPath makeCirclePath(const Vec3& center, const Vec3& axis, const Vec3& startDir, double radius,
+                          double revolutions, double duration, double rate)
 {
   const Vec3 w = normalizedOrZero(axis);
   Vec3 u = normalizedOrZero(startDir - w * dot(startDir, w));
@@ -107,8 +106,7 @@ FingerPath concatenatePaths(const std::vector<FingerPath>& parts, double rate)
     {
       continue;
     }
-    const double shift =
-      (joined.empty() ? 0.0 : joined.endTime() + 1.0 / rate) - part.startTime();
+    const double shift = (joined.empty() ? 0.0 : joined.endTime() + 1.0 / rate) - part.startTime();
     for (std::size_t i = 0; i < part.size(); ++i)
     {
       joined.append(part.times[i] + shift, part.positions[i]);
@@ -124,8 +122,7 @@ const std::vector<std::string>& defaultPathKinds()
   return kinds;
 }
 
-FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double radius,
-                           double rate)
+FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double radius, double rate)
 {
   const Vec3 center = bounds.center();
   const Vec3 extent = bounds.extent();
@@ -155,9 +152,8 @@ FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double r
   {
     const double ringRadius = 0.45 * std::min(extent.x, extent.y);
     const FingerPath descend =
-      makeSlidePath(top + Vec3{ringRadius, 0, clearance}, Vec3{center.x + ringRadius, center.y,
-                                                                center.z},
-                    1.0, rate);
+      makeSlidePath(top + Vec3{ringRadius, 0, clearance},
+                    Vec3{center.x + ringRadius, center.y, center.z}, 1.0, rate);
     const FingerPath ring =
       makeCirclePath(center, Vec3{0, 0, 1}, Vec3{1, 0, 0}, ringRadius, 2.0, 4.0, rate);
     return concatenatePaths({descend, ring}, rate);

@@ -35,8 +35,8 @@ FingerPath makePressAndStrokePath(const PressAndStroke& p, double rate);
 
 /// The paper's Figure 6 path: `revolutions` turns of a circle of `radius` about `axis` through
 /// `center`, counter-clockwise seen from the axis' tip, starting at center + radius * startDir.
-FingerPath makeCirclePath(const Vec3& center, const Vec3& axis, const Vec3& startDir,
-                          double radius, double revolutions, double duration, double rate);
+FingerPath makeCirclePath(const Vec3& center, const Vec3& axis, const Vec3& startDir, double radius,
+                          double revolutions, double duration, double rate);
 
 struct Jabs
 {
@@ -61,8 +61,7 @@ const std::vector<std::string>& defaultPathKinds();
 /// presses into the top and strokes across; slide skims the top; circle runs a horizontal circle
 /// inside the object at mid-height; jab strikes the top centre at 10 m/s from five directions;
 /// wander drives straight through the object. Throws std::invalid_argument for an unknown kind.
-FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double radius,
-                           double rate);
+FingerPath makeDefaultPath(const std::string& kind, const Aabb& bounds, double radius, double rate);
 
 /// A person-like probing session (DESIGN.md section 5, "the tail is the headline"): episodes
 /// at random surface points, each one of

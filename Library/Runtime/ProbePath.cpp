@@ -28,7 +28,9 @@ namespace
 class ProbeRandom
 {
 public:
-  explicit ProbeRandom(std::uint64_t seed) : m_engine(seed) {}
+  explicit ProbeRandom(std::uint64_t seed)
+    : m_engine(seed)
+  {}
   double uniform() { return static_cast<double>(m_engine() >> 11) * 0x1.0p-53; }
   double between(double low, double high) { return low + (high - low) * uniform(); }
 
@@ -85,7 +87,10 @@ class ProbeBuilder
 public:
   ProbeBuilder(const std::vector<ProbeSurface>& surfaces, const ProbeOptions& options,
                std::vector<ProbePhase>* phases)
-    : m_surfaces(surfaces), m_options(options), m_phases(phases), m_random(options.seed)
+    : m_surfaces(surfaces)
+    , m_options(options)
+    , m_phases(phases)
+    , m_random(options.seed)
   {
     for (const ProbeSurface& surface : m_surfaces)
     {
@@ -173,7 +178,8 @@ private:
   void hold(double duration, ProbePhase phase)
   {
     const Vec3 here = current();
-    const auto ticks = static_cast<std::size_t>(std::max(1.0, std::round(duration * m_options.rate)));
+    const auto ticks =
+      static_cast<std::size_t>(std::max(1.0, std::round(duration * m_options.rate)));
     for (std::size_t i = 0; i < ticks; ++i)
     {
       append(here, phase);
@@ -229,7 +235,8 @@ private:
     {
       const NearestTriangle found =
         surface.tree->nearest(*surface.mesh, point, maxDistance, m_scratch);
-      if (found.found && (!best.found || found.closest.squaredDistance < best.closest.squaredDistance))
+      if (found.found &&
+          (!best.found || found.closest.squaredDistance < best.closest.squaredDistance))
       {
         best = found;
         const TriangleCorners& t = surface.mesh->corners(found.triangle);
@@ -319,15 +326,14 @@ private:
       arcOnOuterSphere(to, speed);
       return;
     }
-    const double steps =
-      std::max(1.0, std::ceil(angle * m_outerRadius * m_options.rate / speed));
+    const double steps = std::max(1.0, std::ceil(angle * m_outerRadius * m_options.rate / speed));
     for (double i = 1; i <= steps; ++i)
     {
       const double s = i / steps;
       const Vec3 direction =
-        angle < 1e-9 ? u1
-                     : (u0 * std::sin((1.0 - s) * angle) + u1 * std::sin(s * angle)) /
-                         std::sin(angle);
+        angle < 1e-9
+          ? u1
+          : (u0 * std::sin((1.0 - s) * angle) + u1 * std::sin(s * angle)) / std::sin(angle);
       append(m_center + normalizedOrZero(direction) * m_outerRadius, ProbePhase::Transit);
     }
   }

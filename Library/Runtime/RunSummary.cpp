@@ -66,19 +66,25 @@ double RunSummary::solveNanosecondsQuantile(double q) const
     m_sorted = true;
   }
   const double clamped = std::clamp(q, 0.0, 1.0);
-  const auto rank = static_cast<std::size_t>(
-    std::ceil(clamped * static_cast<double>(m_solveNanoseconds.size())));
+  const auto rank =
+    static_cast<std::size_t>(std::ceil(clamped * static_cast<double>(m_solveNanoseconds.size())));
   return static_cast<double>(m_solveNanoseconds[rank == 0 ? 0 : rank - 1]);
 }
 
-void RunSummary::addBudgetResidual(double metres) { m_budgetResiduals.push_back(metres); }
+void RunSummary::addBudgetResidual(double metres)
+{
+  m_budgetResiduals.push_back(metres);
+}
 
 double RunSummary::budgetResidualQuantile(double q) const
 {
   return nearestRank(m_budgetResiduals, q);
 }
 
-double RunSummary::recoveryTicksQuantile(double q) const { return nearestRank(m_recoveryTicks, q); }
+double RunSummary::recoveryTicksQuantile(double q) const
+{
+  return nearestRank(m_recoveryTicks, q);
+}
 
 std::map<std::uint64_t, std::uint64_t> RunSummary::recoveryHistogram() const
 {

@@ -12,9 +12,9 @@ constexpr double kGainRounding = 1e-9;
 } // namespace
 
 ServoForce::ServoForce(const ServoParameters& parameters, const DeviceLimits& limits)
-  : m_parameters(parameters), m_maxForce(std::min(parameters.maxForce, limits.maxForce))
-{
-}
+  : m_parameters(parameters)
+  , m_maxForce(std::min(parameters.maxForce, limits.maxForce))
+{}
 
 void ServoForce::step(const TickInput& input, HapticState& state)
 {
@@ -65,8 +65,8 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     {
       // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
       // continuous, since proxy and finger coincide out of contact.
-      force = (state.proxy - input.sample.position) *
-              (m_parameters.stiffness * state.stiffnessScale);
+      force =
+        (state.proxy - input.sample.position) * (m_parameters.stiffness * state.stiffnessScale);
       if (m_gain < 1.0)
       {
         m_gain = m_gain + gainStep;

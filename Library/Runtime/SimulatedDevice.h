@@ -11,7 +11,9 @@ namespace proxima
 class SimulatedDevice final : public HapticDevice
 {
 public:
-  explicit SimulatedDevice(FingerPath path) : m_path(std::move(path)) {}
+  explicit SimulatedDevice(FingerPath path)
+    : m_path(std::move(path))
+  {}
 
   DeviceSample read(double time) override
   {

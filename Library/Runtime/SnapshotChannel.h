@@ -16,8 +16,8 @@ template <typename T>
 class SnapshotChannel
 {
   static_assert(std::is_trivially_copyable_v<T>, "a snapshot is copied word by word");
-  static constexpr std::size_t kWords = (sizeof(T) + sizeof(std::uint64_t) - 1) /
-                                        sizeof(std::uint64_t);
+  static constexpr std::size_t kWords =
+    (sizeof(T) + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t);
 
 public:
   SnapshotChannel() { write(T{}); }

@@ -28,8 +28,11 @@ struct SceneSlot
 struct ThreadedRuntime::Impl
 {
   Impl(HapticDevice& device_, const ServoParameters& servo_, const RuntimeSettings& settings_)
-    : device(device_), limits(device_.limits()), servo(servo_), settings(settings_),
-      solver(std::make_unique<ProxySolver>())
+    : device(device_)
+    , limits(device_.limits())
+    , servo(servo_)
+    , settings(settings_)
+    , solver(std::make_unique<ProxySolver>())
   {
     const std::string rateError = servoRateError(settings.servoRate);
     if (!rateError.empty())
@@ -48,10 +51,7 @@ struct ThreadedRuntime::Impl
   /// On the proxy thread: installs a published scene, unless the last one it let go of has not
   /// been collected yet (a haptic thread never frees a scene).
   void installPendingScene();
-  void collectRetired()
-  {
-    delete retired.exchange(nullptr, std::memory_order_acq_rel);
-  }
+  void collectRetired() { delete retired.exchange(nullptr, std::memory_order_acq_rel); }
 
   HapticDevice& device;
   /// Asked once here, so that only the servo thread ever calls the device.
@@ -236,8 +236,7 @@ void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
 ThreadedRuntime::ThreadedRuntime(HapticDevice& device, const ServoParameters& servo,
                                  const RuntimeSettings& settings)
   : m_impl(std::make_unique<Impl>(device, servo, settings))
-{
-}
+{}
 
 ThreadedRuntime::~ThreadedRuntime()
 {
@@ -285,7 +284,8 @@ bool ThreadedRuntime::start(std::string& message)
       : 0;
   try
   {
-    impl.proxyThread = std::thread([&impl, start, proxyOffset] { impl.proxyLoop(start + proxyOffset); });
+    impl.proxyThread =
+      std::thread([&impl, start, proxyOffset] { impl.proxyLoop(start + proxyOffset); });
     impl.servoThread = std::thread([&impl, start] { impl.servoLoop(start); });
   }
   catch (const std::system_error& error)
@@ -304,15 +304,18 @@ bool ThreadedRuntime::start(std::string& message)
             " Hz";
   if (impl.settings.realtimeScheduling)
   {
-    const std::string servoError = requestFifoScheduling(impl.servoThread, impl.settings.servoPriority);
-    const std::string proxyError = requestFifoScheduling(impl.proxyThread, impl.settings.proxyPriority);
+    const std::string servoError =
+      requestFifoScheduling(impl.servoThread, impl.settings.servoPriority);
+    const std::string proxyError =
+      requestFifoScheduling(impl.proxyThread, impl.settings.proxyPriority);
     if (servoError.empty() && proxyError.empty())
     {
       message += "; real-time scheduling (SCHED_FIFO) granted";
     }
     else
     {
-      message += "; real-time scheduling refused (" + (servoError.empty() ? proxyError : servoError) +
+      message += "; real-time scheduling refused (" +
+                 (servoError.empty() ? proxyError : servoError) +
                  "): the loops run at normal priority. Grant it with an rtprio limit "
                  "(/etc/security/limits.conf) or CAP_SYS_NICE";
     }
@@ -381,8 +384,8 @@ std::vector<HapticState> ThreadedRuntime::records() const
     return {};
   }
   return std::vector<HapticState>(m_impl->records.begin(),
-                                 m_impl->records.begin() +
-                                   static_cast<std::ptrdiff_t>(m_impl->recordCount));
+                                  m_impl->records.begin() +
+                                    static_cast<std::ptrdiff_t>(m_impl->recordCount));
 }
 
 void ThreadedRuntime::injectProxyStall(double seconds)

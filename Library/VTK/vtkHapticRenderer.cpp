@@ -223,7 +223,6 @@ void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProxyRate: " << this->ProxyRate << "\n";
   os << indent << "RealtimeScheduling: " << (this->RealtimeScheduling ? "On" : "Off") << "\n";
   os << indent << "Duration: " << this->Duration << "\n";
-  os << indent << "Running: " << (this->IsRunning() ? "yes" : "no")
-     << ", published scene version " << m_publishedVersion << ", live "
-     << this->GetLiveSceneVersion() << "\n";
+  os << indent << "Running: " << (this->IsRunning() ? "yes" : "no") << ", published scene version "
+     << m_publishedVersion << ", live " << this->GetLiveSceneVersion() << "\n";
 }

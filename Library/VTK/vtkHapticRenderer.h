@@ -31,8 +31,7 @@ class vtkHapticRenderer : public vtkObject
 {
 public:
   static vtkHapticRenderer* New();
-  vtkTypeMacro(vtkHapticRenderer, vtkObject)
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkHapticRenderer, vtkObject) void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// The scene to render (default none). UpdateScene updates it and publishes its snapshots.

@@ -350,12 +350,11 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], i);
     const ObjectEntry& entry = m_objects[static_cast<std::size_t>(i)];
     const vtkMTimeType poseTime = entry.pose ? entry.pose->GetMTime() : 0;
-    const bool stale = !entry.built || entry.builtFrom != input ||
-                       entry.builtFromTime != input->GetMTime() ||
-                       entry.builtPoseTime != poseTime ||
-                       entry.builtSettingsVersion != entry.settingsVersion ||
-                       entry.builtLeafSizeFactor != this->LeafSizeFactor ||
-                       entry.builtMaxLeafSpheres != this->MaxLeafSpheresPerNode;
+    const bool stale =
+      !entry.built || entry.builtFrom != input || entry.builtFromTime != input->GetMTime() ||
+      entry.builtPoseTime != poseTime || entry.builtSettingsVersion != entry.settingsVersion ||
+      entry.builtLeafSizeFactor != this->LeafSizeFactor ||
+      entry.builtMaxLeafSpheres != this->MaxLeafSpheresPerNode;
     if (!stale)
     {
       build->objects.push_back(entry.built);
@@ -376,8 +375,9 @@ int vtkHapticScene::RequestData(vtkInformation*, vtkInformationVector** inputVec
     staged.settingsVersion = entry.settingsVersion;
     try
     {
-      staged.object = std::make_shared<proxima::CollisionObject>(proxima::vtk::prepareCollisionObject(
-        input, "vtkHapticScene object " + std::to_string(i), settings));
+      staged.object =
+        std::make_shared<proxima::CollisionObject>(proxima::vtk::prepareCollisionObject(
+          input, "vtkHapticScene object " + std::to_string(i), settings));
     }
     catch (const std::exception& error)
     {
@@ -463,8 +463,8 @@ void vtkHapticScene::PrintSelf(ostream& os, vtkIndent indent)
     const ObjectEntry& entry = m_objects[i];
     os << indent << "Object " << i << ": scale " << entry.scale << ", pose "
        << (entry.pose ? "set" : "none") << ", shading " << (entry.shading ? "on" : "off")
-       << ", friction " << entry.staticFriction << "/" << entry.dynamicFriction
-       << ", viscosity " << entry.viscosity;
+       << ", friction " << entry.staticFriction << "/" << entry.dynamicFriction << ", viscosity "
+       << entry.viscosity;
     if (entry.built)
     {
       os << ", " << entry.built->mesh.numTriangles() << " triangles";

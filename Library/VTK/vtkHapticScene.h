@@ -29,8 +29,8 @@ class vtkHapticScene : public vtkPolyDataAlgorithm
 {
 public:
   static vtkHapticScene* New();
-  vtkTypeMacro(vtkHapticScene, vtkPolyDataAlgorithm)
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkHapticScene, vtkPolyDataAlgorithm) void PrintSelf(ostream& os,
+                                                                    vtkIndent indent) override;
 
   /// Adds an object: returns its index (the input connection's). Same as AddInputConnection.
   int AddObject(vtkAlgorithmOutput* polyData);

@@ -21,7 +21,6 @@
 
 vtkStandardNewMacro(vtkHapticSphereTreeFilter);
 
-
 bool vtkHapticSphereTreeFilter::TreeIsStale(vtkDataObject* input) const
 {
   return !m_object || input != m_builtFromInput || input->GetMTime() != m_builtFromInputTime ||

@@ -16,8 +16,8 @@ class vtkHapticSphereTreeFilter : public vtkPolyDataAlgorithm
 {
 public:
   static vtkHapticSphereTreeFilter* New();
-  vtkTypeMacro(vtkHapticSphereTreeFilter, vtkPolyDataAlgorithm)
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkHapticSphereTreeFilter,
+               vtkPolyDataAlgorithm) void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// Units of the input to metres (default 1). Changing it rebuilds the tree.

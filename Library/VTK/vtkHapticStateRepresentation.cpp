@@ -79,8 +79,8 @@ vtkHapticStateRepresentation::vtkHapticStateRepresentation()
     m_coneSources[i] = vtkSmartPointer<vtkConeSource>::New();
     m_coneSources[i]->SetResolution(32);
     m_coneSources[i]->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-    m_coneActors[i] = actorFor(m_coneSources[i].Get(), kSlipColor[0], kSlipColor[1],
-                               kSlipColor[2], 0.55);
+    m_coneActors[i] =
+      actorFor(m_coneSources[i].Get(), kSlipColor[0], kSlipColor[1], kSlipColor[2], 0.55);
     // Open cones are seen from inside as well.
     m_coneActors[i]->GetProperty()->BackfaceCullingOff();
   }
@@ -233,8 +233,7 @@ void vtkHapticStateRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ContactDiscRadius: " << this->ContactDiscRadius << " (0: four proxy radii)\n";
-  os << indent << "FrictionConeHeight: " << this->FrictionConeHeight
-     << " (0: three proxy radii)\n";
+  os << indent << "FrictionConeHeight: " << this->FrictionConeHeight << " (0: three proxy radii)\n";
   os << indent << "ForceScale: " << this->ForceScale << " m/N\n";
   os << indent << "FingerOpacity: " << this->FingerOpacity << "\n";
   os << indent << "ContactDiscOpacity: " << this->ContactDiscOpacity << "\n";

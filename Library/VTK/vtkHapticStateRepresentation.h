@@ -26,8 +26,8 @@ class vtkHapticStateRepresentation : public vtkObject
 {
 public:
   static vtkHapticStateRepresentation* New();
-  vtkTypeMacro(vtkHapticStateRepresentation, vtkObject)
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkHapticStateRepresentation, vtkObject) void PrintSelf(ostream& os,
+                                                                       vtkIndent indent) override;
 
   /// Moves every part to `state`; parts without a subject (contacts beyond numContacts, cones of
   /// frictionless contacts, a zero force) are hidden.

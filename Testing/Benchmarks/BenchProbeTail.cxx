@@ -61,12 +61,16 @@ struct SharedMesh
 
 // The scales of ../shared/data/paths/README.md where it gives one, so the probe paths and the
 // shared paths see the same objects.
-const std::vector<SharedMesh> kMeshes = {
-  {"stanford-bunny.obj", 0.4},     {"VH_M_Liver.glb", 0.5},
-  {"M3x10_screw.stl", 0.005},      {"cranium_bone_iso075mm.ply", 0.001},
-  {"Angel_decimated.vtp", 0.0},    {"fandisk.off", 0.0},
-  {"teapot.obj", 0.0},             {"spot_triangulated.obj", 0.0},
-  {"abc_00000050_trimesh_000.stl", 0.0}, {"featuretype.STL", 0.0}};
+const std::vector<SharedMesh> kMeshes = {{"stanford-bunny.obj", 0.4},
+                                         {"VH_M_Liver.glb", 0.5},
+                                         {"M3x10_screw.stl", 0.005},
+                                         {"cranium_bone_iso075mm.ply", 0.001},
+                                         {"Angel_decimated.vtp", 0.0},
+                                         {"fandisk.off", 0.0},
+                                         {"teapot.obj", 0.0},
+                                         {"spot_triangulated.obj", 0.0},
+                                         {"abc_00000050_trimesh_000.stl", 0.0},
+                                         {"featuretype.STL", 0.0}};
 
 struct SharedPath
 {
@@ -207,8 +211,9 @@ nlohmann::json statistics(Ticks ticks, bool withTail)
     {"contact_ticks", ticks.solveContact.size()},
     {"contact_solve_ns", summary(ticks.solveContact)},
     {"solve_ns", summary(ticks.solveAll)},
-    {"iterations", {{"p99.9", quantile(ticks.iterations, 0.999)},
-                    {"max", ticks.iterations.empty() ? 0.0 : ticks.iterations.back()}}},
+    {"iterations",
+     {{"p99.9", quantile(ticks.iterations, 0.999)},
+      {"max", ticks.iterations.empty() ? 0.0 : ticks.iterations.back()}}},
     {"triangles_tested",
      {{"mean", ticks.trianglesTested.empty()
                  ? 0.0
@@ -222,17 +227,19 @@ nlohmann::json statistics(Ticks ticks, bool withTail)
   {
     std::sort(ticks.residuals.begin(), ticks.residuals.end());
     std::sort(ticks.recoveries.begin(), ticks.recoveries.end());
-    json["budget"] = {
-      {"limited_ticks", ticks.limited},
-      {"limited_fraction", ticks.solveAll.empty() ? 0.0
-                                                  : static_cast<double>(ticks.limited) /
-                                                      static_cast<double>(ticks.solveAll.size())},
-      {"residual_m", {{"median", quantile(ticks.residuals, 0.5)},
-                      {"max", ticks.residuals.empty() ? 0.0 : ticks.residuals.back()}}},
-      {"recoveries", ticks.recoveries.size()},
-      {"recovery_ticks", {{"p99", quantile(ticks.recoveries, 0.99)},
-                          {"max", ticks.recoveries.empty() ? 0.0 : ticks.recoveries.back()}}},
-      {"unrecovered_limited_ticks", ticks.unrecovered}};
+    json["budget"] = {{"limited_ticks", ticks.limited},
+                      {"limited_fraction", ticks.solveAll.empty()
+                                             ? 0.0
+                                             : static_cast<double>(ticks.limited) /
+                                                 static_cast<double>(ticks.solveAll.size())},
+                      {"residual_m",
+                       {{"median", quantile(ticks.residuals, 0.5)},
+                        {"max", ticks.residuals.empty() ? 0.0 : ticks.residuals.back()}}},
+                      {"recoveries", ticks.recoveries.size()},
+                      {"recovery_ticks",
+                       {{"p99", quantile(ticks.recoveries, 0.99)},
+                        {"max", ticks.recoveries.empty() ? 0.0 : ticks.recoveries.back()}}},
+                      {"unrecovered_limited_ticks", ticks.unrecovered}};
   }
   if (withTail)
   {
@@ -449,9 +456,11 @@ int main(int argc, char** argv)
         json["seed"] = seed;
         cases.push_back(json);
         append(all, ticks);
-        std::fprintf(stderr, "%-30s r %.1f mm seed %d: contact median %7.0f ns, p99.9 %8.0f ns, "
-                             "max %8.0f ns; budgeted max %8.0f ns, %5.2f%% limited\n",
-                     mesh.file, radius * 1e3, seed, json["contact_solve_ns"]["median"].get<double>(),
+        std::fprintf(stderr,
+                     "%-30s r %.1f mm seed %d: contact median %7.0f ns, p99.9 %8.0f ns, "
+                     "max %8.0f ns; budgeted max %8.0f ns, %5.2f%% limited\n",
+                     mesh.file, radius * 1e3, seed,
+                     json["contact_solve_ns"]["median"].get<double>(),
                      json["contact_solve_ns"]["p99.9"].get<double>(),
                      json["contact_solve_ns"]["max"].get<double>(),
                      json["budgeted"]["solve_ns"]["max"].get<double>(),
@@ -463,11 +472,11 @@ int main(int argc, char** argv)
       json["seeds"] = seeds;
       pooled.push_back(json);
       // Seeds pooled, unbudgeted: the budget would cut the longest ticks' iterations short.
-      series.push_back({{"radius_m", radius},
-                        {"r_over_edge", edge > 0.0 ? radius / edge : 0.0},
-                        {"solve_ns_per_iteration", json["per_iteration"]["solve_ns"]},
-                        {"triangles_tested_per_iteration",
-                         json["per_iteration"]["triangles_tested"]}});
+      series.push_back(
+        {{"radius_m", radius},
+         {"r_over_edge", edge > 0.0 ? radius / edge : 0.0},
+         {"solve_ns_per_iteration", json["per_iteration"]["solve_ns"]},
+         {"triangles_tested_per_iteration", json["per_iteration"]["triangles_tested"]}});
       append(byRadius[radius], all);
     }
     meshes.push_back({{"mesh", mesh.file},
@@ -507,8 +516,9 @@ int main(int argc, char** argv)
     json["triangles"] = scene.objects.front().mesh.numTriangles();
     json["radius_m"] = shared.radius;
     sharedPaths.push_back(json);
-    std::fprintf(stderr, "%-30s (shared path): contact median %7.0f ns, p99.9 %8.0f ns; "
-                         "budgeted max %8.0f ns, %5.2f%% limited\n",
+    std::fprintf(stderr,
+                 "%-30s (shared path): contact median %7.0f ns, p99.9 %8.0f ns; "
+                 "budgeted max %8.0f ns, %5.2f%% limited\n",
                  shared.file, json["contact_solve_ns"]["median"].get<double>(),
                  json["contact_solve_ns"]["p99.9"].get<double>(),
                  json["budgeted"]["solve_ns"]["max"].get<double>(),

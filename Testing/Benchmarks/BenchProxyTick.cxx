@@ -45,13 +45,13 @@ FingerPath slidingPath(const CollisionObject& object)
   const Aabb& bounds = object.mesh.bounds();
   const Vec3 c = bounds.center();
   SphereTreeScratch scratch;
-  const NearestTriangle top = object.tree.nearest(
-    object.mesh, Vec3{c.x, c.y, bounds.upper.z}, bounds.diagonal(), scratch);
+  const NearestTriangle top =
+    object.tree.nearest(object.mesh, Vec3{c.x, c.y, bounds.upper.z}, bounds.diagonal(), scratch);
   PressAndStroke p;
   p.strokeDirection = Vec3{1, 0, 0};
   p.strokeLength = 0.02;
-  p.surfacePoint = Vec3{top.closest.point.x - 0.5 * p.strokeLength, top.closest.point.y,
-                        top.closest.point.z};
+  p.surfacePoint =
+    Vec3{top.closest.point.x - 0.5 * p.strokeLength, top.closest.point.y, top.closest.point.z};
   p.approachHeight = 3.0 * kRadius;
   p.depth = 2.0 * kRadius;
   p.speed = 0.05;
@@ -141,7 +141,8 @@ void playPath(benchmark::State& state, const Workload& workload)
     const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
     return values[rank == 0 ? 0 : rank - 1];
   };
-  const double ticks = static_cast<double>(state.iterations()) * static_cast<double>(workload.path.size());
+  const double ticks =
+    static_cast<double>(state.iterations()) * static_cast<double>(workload.path.size());
   state.counters["triangles"] = workload.triangles;
   state.counters["tick_median_ns"] = quantile(nanoseconds, 0.5);
   state.counters["tick_p99_ns"] = quantile(nanoseconds, 0.99);
@@ -160,7 +161,12 @@ void BM_ProxyTickIcosphere(benchmark::State& state)
 {
   playPath(state, icosphereWorkload(static_cast<std::uint32_t>(state.range(0))));
 }
-BENCHMARK(BM_ProxyTickIcosphere)->Arg(5)->Arg(7)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_ProxyTickIcosphere)
+  ->Arg(5)
+  ->Arg(7)
+  ->Arg(8)
+  ->Unit(benchmark::kMillisecond)
+  ->Iterations(5);
 
 // Pay for what you use (issue: surface effects): the same press and stroke on the 1.3M-triangle
 // icosphere with each surface effect on alone, and with shading asked for on a copy of the mesh
@@ -179,8 +185,8 @@ enum SurfaceEffects : int
 
 const char* effectName(int effects)
 {
-  static const char* names[kNumEffects] = {"plain", "shading asked, no normals", "shading",
-                                           "friction", "bump texture", "all"};
+  static const char* names[kNumEffects] = {
+    "plain", "shading asked, no normals", "shading", "friction", "bump texture", "all"};
   return names[effects];
 }
 
@@ -192,7 +198,8 @@ std::shared_ptr<const TextureImage> bumpImage()
   {
     for (std::uint32_t i = 0; i < size; ++i)
     {
-      values[j * size + i] = static_cast<float>(0.5 + 0.25 * std::sin(0.2 * i) + 0.25 * std::sin(0.2 * j));
+      values[j * size + i] =
+        static_cast<float>(0.5 + 0.25 * std::sin(0.2 * i) + 0.25 * std::sin(0.2 * j));
     }
   }
   return std::make_shared<const TextureImage>(size, size, std::move(values));
@@ -217,7 +224,8 @@ const Workload& effectsWorkload(int effects)
       soup.texCoords.push_back({p.x / (2.0 * radius) + 0.5, p.y / (2.0 * radius) + 0.5});
     }
     SurfaceMaterial material;
-    material.shading = effects == kShadingWithoutNormals || effects == kShading || effects == kEverything;
+    material.shading =
+      effects == kShadingWithoutNormals || effects == kShading || effects == kEverything;
     if (effects == kFriction || effects == kEverything)
     {
       material.staticFriction = 0.5;
@@ -244,8 +252,10 @@ void BM_ProxyTickSurfaceEffects(benchmark::State& state)
   state.SetLabel(effectName(effects));
   playPath(state, effectsWorkload(effects));
 }
-BENCHMARK(BM_ProxyTickSurfaceEffects)->DenseRange(0, kNumEffects - 1)
-  ->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_ProxyTickSurfaceEffects)
+  ->DenseRange(0, kNumEffects - 1)
+  ->Unit(benchmark::kMillisecond)
+  ->Iterations(5);
 
 void BM_ProxyTickSkull(benchmark::State& state)
 {

@@ -153,8 +153,7 @@ void makeQueries(Dataset& d)
   std::mt19937_64 engine(kSeed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gauss;
-  auto direction = [&]
-  {
+  auto direction = [&] {
     return normalizedOrZero(Vec3{gauss(engine), gauss(engine), gauss(engine)});
   };
   const Vec3 center = d.mesh.bounds().center();
@@ -269,8 +268,7 @@ void reportLatency(benchmark::State& state, std::size_t numQueries, Query&& quer
       queryNs[i] = std::chrono::duration<double, std::nano>(t2 - t1).count();
     }
   }
-  auto quantile = [](std::vector<double> v, double q)
-  {
+  auto quantile = [](std::vector<double> v, double q) {
     const auto k = static_cast<std::ptrdiff_t>(q * double(v.size() - 1));
     std::nth_element(v.begin(), v.begin() + k, v.end());
     return v[static_cast<std::size_t>(k)];
@@ -353,10 +351,9 @@ void sweepSphereTree(benchmark::State& state, const std::string& name)
   state.counters["nodes_visited"] = stats.nodesVisited / n;
   state.counters["triangles_tested"] = stats.trianglesTested / n;
   state.counters["hit_fraction"] = double(hits) / n;
-  reportLatency(state, d->sweeps.size(),
-                [&](std::size_t k) {
-                  benchmark::DoNotOptimize(d->tree.firstContact(d->mesh, d->sweeps[k], *scratch));
-                });
+  reportLatency(state, d->sweeps.size(), [&](std::size_t k) {
+    benchmark::DoNotOptimize(d->tree.firstContact(d->mesh, d->sweeps[k], *scratch));
+  });
 }
 
 /// CGAL broad phase (box of the swept capsule), our exact narrow phase; see the file comment.
@@ -417,9 +414,9 @@ void sweepCgal(benchmark::State& state, const std::string& name)
     i = (i + 1) % d->sweeps.size();
   }
   state.counters["triangles_tested"] = numCandidates / double(state.iterations());
-  reportLatency(state, d->sweeps.size(),
-                [&](std::size_t k)
-                { benchmark::DoNotOptimize(cgalFirstContact(*d, d->sweeps[k], candidates)); });
+  reportLatency(state, d->sweeps.size(), [&](std::size_t k) {
+    benchmark::DoNotOptimize(cgalFirstContact(*d, d->sweeps[k], candidates));
+  });
 }
 
 // ---- nearest ------------------------------------------------------------------------------
@@ -443,10 +440,9 @@ void nearestSphereTree(benchmark::State& state, const std::string& name)
   const auto n = double(state.iterations());
   state.counters["nodes_visited"] = stats.nodesVisited / n;
   state.counters["triangles_tested"] = stats.trianglesTested / n;
-  reportLatency(
-    state, d->points.size(),
-    [&](std::size_t k)
-    { benchmark::DoNotOptimize(d->tree.nearest(d->mesh, d->points[k], unlimited, *scratch)); });
+  reportLatency(state, d->points.size(), [&](std::size_t k) {
+    benchmark::DoNotOptimize(d->tree.nearest(d->mesh, d->points[k], unlimited, *scratch));
+  });
 }
 
 void nearestCgal(benchmark::State& state, const std::string& name)
@@ -456,8 +452,7 @@ void nearestCgal(benchmark::State& state, const std::string& name)
   {
     return;
   }
-  auto query = [&](std::size_t k)
-  {
+  auto query = [&](std::size_t k) {
     const Vec3& p = d->points[k];
     return d->cgalTree->closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z));
   };
@@ -548,10 +543,9 @@ void gatherSphereTree(benchmark::State& state, const std::string& name)
   state.counters["nodes_visited"] = stats.nodesVisited / n;
   state.counters["triangles_tested"] = stats.trianglesTested / n;
   state.counters["found"] = found / n;
-  reportLatency(
-    state, d->gatherPoints.size(),
-    [&](std::size_t k)
-    { benchmark::DoNotOptimize(treeGather(*d, d->gatherPoints[k], out, *scratch, nullptr)); });
+  reportLatency(state, d->gatherPoints.size(), [&](std::size_t k) {
+    benchmark::DoNotOptimize(treeGather(*d, d->gatherPoints[k], out, *scratch, nullptr));
+  });
 }
 
 void gatherCgal(benchmark::State& state, const std::string& name)
@@ -576,9 +570,9 @@ void gatherCgal(benchmark::State& state, const std::string& name)
   const auto n = double(state.iterations());
   state.counters["triangles_tested"] = numCandidates / n;
   state.counters["found"] = found / n;
-  reportLatency(state, d->gatherPoints.size(),
-                [&](std::size_t k)
-                { benchmark::DoNotOptimize(cgalGather(*d, d->gatherPoints[k], candidates, out)); });
+  reportLatency(state, d->gatherPoints.size(), [&](std::size_t k) {
+    benchmark::DoNotOptimize(cgalGather(*d, d->gatherPoints[k], candidates, out));
+  });
 }
 
 // ---- narrow phase alone ---------------------------------------------------------------------

@@ -70,7 +70,8 @@ std::vector<Setting> settings()
   add("default", "", [](Setting& s) { s.isDefault = true; });
   for (double f : {0.0, 1.0, 4.0, 8.0})
   {
-    add("leafSizeFactor", std::to_string(f).substr(0, 3), [f](Setting& s) { s.tree.leafSizeFactor = f; });
+    add("leafSizeFactor", std::to_string(f).substr(0, 3),
+        [f](Setting& s) { s.tree.leafSizeFactor = f; });
   }
   for (std::uint32_t n : {1u, 2u, 8u, 16u})
   {
@@ -108,9 +109,9 @@ FingerPath slidingPath(const CollisionObject& object)
 {
   const Aabb& bounds = object.mesh.bounds();
   SphereTreeScratch scratch;
-  const NearestTriangle top = object.tree.nearest(
-    object.mesh, Vec3{bounds.center().x, bounds.center().y, bounds.upper.z}, bounds.diagonal(),
-    scratch);
+  const NearestTriangle top =
+    object.tree.nearest(object.mesh, Vec3{bounds.center().x, bounds.center().y, bounds.upper.z},
+                        bounds.diagonal(), scratch);
   PressAndStroke p;
   p.strokeDirection = Vec3{1, 0, 0};
   p.strokeLength = 0.02;
@@ -253,28 +254,31 @@ std::string measure(const TriangleSoup& soup, const oracle::MeshOracle& oracle,
 
   const double penetration = std::max(0.0, -s.minClearance);
   const double gap = std::max(0.0, s.maxGap);
-  std::string json = "  {\"mesh\": \"" + meshName + "\", \"knob\": \"" + setting.knob + "\", \"value\": \"" +
-          setting.value + "\", \"default\": " + (setting.isDefault ? "true" : "false") +
-          ", \"triangles\": " + std::to_string(oracle.numTriangles()) +
-          ", \"ticks\": " + std::to_string(path.size()) + ", \"passes\": " +
-          std::to_string(passes) + ", \"tick_median_ns\": " + number(quantile(all, 0.5)) +
-          ", \"tick_p99_ns\": " + number(quantile(all, 0.99)) + ", \"tick_p999_ns\": " +
-          number(quantile(all, 0.999)) + ", \"contact_median_ns\": " +
-          number(quantile(contact, 0.5)) + ", \"contact_p99_ns\": " +
-          number(quantile(contact, 0.99)) + ", \"contact_p999_ns\": " +
-          number(quantile(contact, 0.999)) + ", \"iterations_per_tick\": " +
-          number(iterations / static_cast<double>(all.size())) + ", \"tree_build_s\": " +
-          number(buildSeconds) + ", \"tree_bytes_per_triangle\": " +
-          number(static_cast<double>(scene.objects.front().tree.memoryBytes()) /
-                 static_cast<double>(oracle.numTriangles())) +
-          ", \"skin_m\": " + number(solver.skin()) + ", \"penetration_m\": " +
-          number(penetration) + ", \"gap_m\": " + number(gap) + ", \"residual_m\": " +
-          number(s.maxResidual) + ", \"free_path_error_m\": " + number(s.maxFreePathError) +
-          ", \"oracle_failures\": " + std::to_string(s.failures()) + ", \"cap_ticks\": " +
-          std::to_string(s.capTicks) + ", \"figure6_mean_deg\": " + number(meanFigure6) +
-          ", \"figure6_max_deg\": " + number(maxFigure6) + "}";
-  std::fprintf(stderr, "%-22s %-24s contact median %8.0f ns, p99.9 %8.0f ns; residual %.2g m, "
-                       "gap %.2g m, penetration %.2g m; figure 6 max %.2f deg\n",
+  std::string json =
+    "  {\"mesh\": \"" + meshName + "\", \"knob\": \"" + setting.knob + "\", \"value\": \"" +
+    setting.value + "\", \"default\": " + (setting.isDefault ? "true" : "false") +
+    ", \"triangles\": " + std::to_string(oracle.numTriangles()) +
+    ", \"ticks\": " + std::to_string(path.size()) + ", \"passes\": " + std::to_string(passes) +
+    ", \"tick_median_ns\": " + number(quantile(all, 0.5)) +
+    ", \"tick_p99_ns\": " + number(quantile(all, 0.99)) +
+    ", \"tick_p999_ns\": " + number(quantile(all, 0.999)) +
+    ", \"contact_median_ns\": " + number(quantile(contact, 0.5)) +
+    ", \"contact_p99_ns\": " + number(quantile(contact, 0.99)) +
+    ", \"contact_p999_ns\": " + number(quantile(contact, 0.999)) +
+    ", \"iterations_per_tick\": " + number(iterations / static_cast<double>(all.size())) +
+    ", \"tree_build_s\": " + number(buildSeconds) + ", \"tree_bytes_per_triangle\": " +
+    number(static_cast<double>(scene.objects.front().tree.memoryBytes()) /
+           static_cast<double>(oracle.numTriangles())) +
+    ", \"skin_m\": " + number(solver.skin()) + ", \"penetration_m\": " + number(penetration) +
+    ", \"gap_m\": " + number(gap) + ", \"residual_m\": " + number(s.maxResidual) +
+    ", \"free_path_error_m\": " + number(s.maxFreePathError) +
+    ", \"oracle_failures\": " + std::to_string(s.failures()) +
+    ", \"cap_ticks\": " + std::to_string(s.capTicks) +
+    ", \"figure6_mean_deg\": " + number(meanFigure6) +
+    ", \"figure6_max_deg\": " + number(maxFigure6) + "}";
+  std::fprintf(stderr,
+               "%-22s %-24s contact median %8.0f ns, p99.9 %8.0f ns; residual %.2g m, "
+               "gap %.2g m, penetration %.2g m; figure 6 max %.2f deg\n",
                setting.knob.c_str(), setting.value.c_str(), quantile(contact, 0.5),
                quantile(contact, 0.999), s.maxResidual, gap, penetration, maxFigure6);
   return json;
@@ -326,8 +330,10 @@ int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: %s OUT.json [subdivisions=8] [passes=5]\n"
-                         "       %s --scaling OUT.json [passes=5] [one shared mesh]\n", argv[0], argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s OUT.json [subdivisions=8] [passes=5]\n"
+                 "       %s --scaling OUT.json [passes=5] [one shared mesh]\n",
+                 argv[0], argv[0]);
     return 2;
   }
   if (std::string(argv[1]) == "--scaling")
@@ -348,9 +354,9 @@ int main(int argc, char** argv)
       const double radius = kEdge * std::ldexp(1.0, static_cast<int>(subdivisions)) / 1.05;
       run(makeIcosphere(subdivisions, radius), "icosphere " + std::to_string(subdivisions));
     }
-    for (const char* name : {"stanford-bunny.obj", "Angel_decimated.vtp", "M3x10_screw.stl",
-                             "fandisk.off", "teapot.obj", "spot_triangulated.obj",
-                             "VH_M_Liver.glb", "cranium_bone_iso075mm.ply"})
+    for (const char* name :
+         {"stanford-bunny.obj", "Angel_decimated.vtp", "M3x10_screw.stl", "fandisk.off",
+          "teapot.obj", "spot_triangulated.obj", "VH_M_Liver.glb", "cranium_bone_iso075mm.ply"})
     {
       TriangleSoup soup;
       if (!only.empty() && only != name)

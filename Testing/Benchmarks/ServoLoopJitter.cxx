@@ -212,8 +212,9 @@ int main(int argc, char** argv)
                            {"scheduling", message},
                            {"servo", loopJson(servoStatistics, runtime.servoScheduling())},
                            {"proxy", loopJson(runtime.proxyStatistics())},
-                           {"floor", floor ? loopJson(floorReport.statistics, floorReport.scheduling)
-                                           : nlohmann::json(nullptr)},
+                           {"floor", floor
+                                       ? loopJson(floorReport.statistics, floorReport.scheduling)
+                                       : nlohmann::json(nullptr)},
                            {"swap", swapJson}};
   std::cout << report.dump(2) << "\n";
   if (!histogram.empty())

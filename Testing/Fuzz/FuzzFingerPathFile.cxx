@@ -29,7 +29,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   catch (const proxima::InputError&)
-  {
-  }
+  {}
   return 0;
 }

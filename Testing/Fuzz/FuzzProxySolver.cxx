@@ -23,7 +23,10 @@ using namespace proxima;
 class Bytes
 {
 public:
-  Bytes(const std::uint8_t* data, std::size_t size) : m_data(data), m_size(size) {}
+  Bytes(const std::uint8_t* data, std::size_t size)
+    : m_data(data)
+    , m_size(size)
+  {}
   bool empty() const { return m_at >= m_size; }
   std::uint8_t byte() { return m_at < m_size ? m_data[m_at++] : 0; }
   std::int16_t word()
@@ -39,23 +42,21 @@ private:
   std::size_t m_at = 0;
 };
 
-double coordinate(std::int16_t value, double half) { return half * value / 32768.0; }
+double coordinate(std::int16_t value, double half)
+{
+  return half * value / 32768.0;
+}
 
 // A finger coordinate: the grid, or one of the values a broken device sends.
 double fingerCoordinate(std::int16_t value)
 {
   switch (value)
   {
-  case -32768:
-    return std::numeric_limits<double>::quiet_NaN();
-  case 32767:
-    return std::numeric_limits<double>::infinity();
-  case 32766:
-    return -std::numeric_limits<double>::infinity();
-  case 32765:
-    return 1e300;
-  default:
-    return coordinate(value, 0.1);
+    case -32768: return std::numeric_limits<double>::quiet_NaN();
+    case 32767: return std::numeric_limits<double>::infinity();
+    case 32766: return -std::numeric_limits<double>::infinity();
+    case 32765: return 1e300;
+    default: return coordinate(value, 0.1);
   }
 }
 

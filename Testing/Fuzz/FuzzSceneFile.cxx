@@ -15,7 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)proxima::readSceneFile(file.path());
   }
   catch (const proxima::InputError&)
-  {
-  }
+  {}
   return 0;
 }

@@ -21,9 +21,9 @@ class ScratchFile
 public:
   explicit ScratchFile(const std::string& extension)
   {
-    const std::filesystem::path folder =
-      std::filesystem::exists("/dev/shm") ? std::filesystem::path("/dev/shm")
-                                          : std::filesystem::temp_directory_path();
+    const std::filesystem::path folder = std::filesystem::exists("/dev/shm")
+                                           ? std::filesystem::path("/dev/shm")
+                                           : std::filesystem::temp_directory_path();
     char process[16];
     std::snprintf(process, sizeof(process), "%010d", static_cast<int>(::getpid()));
     m_path = (folder / ("proxima-fuzz-" + std::string(process) + extension)).string();

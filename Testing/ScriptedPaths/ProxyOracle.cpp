@@ -36,10 +36,22 @@ struct Q3
   Quad z = 0;
 };
 
-Q3 operator+(const Q3& a, const Q3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Q3 operator-(const Q3& a, const Q3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Q3 operator*(const Q3& a, Quad s) { return {a.x * s, a.y * s, a.z * s}; }
-Quad dotQ(const Q3& a, const Q3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Q3 operator+(const Q3& a, const Q3& b)
+{
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Q3 operator-(const Q3& a, const Q3& b)
+{
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Q3 operator*(const Q3& a, Quad s)
+{
+  return {a.x * s, a.y * s, a.z * s};
+}
+Quad dotQ(const Q3& a, const Q3& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 Q3 crossQ(const Q3& a, const Q3& b)
 {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -144,7 +156,10 @@ Quad segmentSegmentSquared(const Q3& p1, const Q3& q1, const Q3& p2, const Q3& q
   return best;
 }
 
-Point toPoint(const Vec3& v) { return Point(v.x, v.y, v.z); }
+Point toPoint(const Vec3& v)
+{
+  return Point(v.x, v.y, v.z);
+}
 
 // Bounding boxes as the AABB tree's primitives: overlap of two boxes of doubles is decided
 // exactly, so a box query never misses a triangle, zero-area ones included.
@@ -165,10 +180,7 @@ struct ReferencePointMap
   using reference = Point;
   using category = boost::readable_property_map_tag;
   const std::vector<Cuboid>* boxes = nullptr;
-  friend reference get(const ReferencePointMap& map, key_type id)
-  {
-    return (*map.boxes)[id].min();
-  }
+  friend reference get(const ReferencePointMap& map, key_type id) { return (*map.boxes)[id].min(); }
 };
 
 using Primitive =
@@ -181,8 +193,7 @@ CGAL::Bbox_3 paddedBox(const Vec3& lower, const Vec3& upper, double pad)
   // The pad covers the rounding of lower - pad and upper + pad themselves.
   const double slack = pad * 1e-12 + 1e-15 * (maxAbsComponent(lower) + maxAbsComponent(upper));
   const double p = pad + slack;
-  return CGAL::Bbox_3(lower.x - p, lower.y - p, lower.z - p, upper.x + p, upper.y + p,
-                      upper.z + p);
+  return CGAL::Bbox_3(lower.x - p, lower.y - p, lower.z - p, upper.x + p, upper.y + p, upper.z + p);
 }
 } // namespace
 
@@ -264,10 +275,10 @@ struct MeshOracle::Impl
     diagonal = all.diagonal();
     BoxMap boxMap{&boxes};
     ReferencePointMap pointMap{&boxes};
-    tree.insert(boost::counting_iterator<std::uint32_t>(0),
-                boost::counting_iterator<std::uint32_t>(
-                  static_cast<std::uint32_t>(triangles.size())),
-                boxMap, pointMap);
+    tree.insert(
+      boost::counting_iterator<std::uint32_t>(0),
+      boost::counting_iterator<std::uint32_t>(static_cast<std::uint32_t>(triangles.size())), boxMap,
+      pointMap);
     tree.build();
   }
 
@@ -278,13 +289,15 @@ struct MeshOracle::Impl
   }
 };
 
-MeshOracle::MeshOracle(std::vector<TriangleCorners> triangles) : m_impl(std::make_unique<Impl>())
+MeshOracle::MeshOracle(std::vector<TriangleCorners> triangles)
+  : m_impl(std::make_unique<Impl>())
 {
   m_impl->triangles = std::move(triangles);
   m_impl->build();
 }
 
-MeshOracle::MeshOracle(const CollisionScene& scene) : m_impl(std::make_unique<Impl>())
+MeshOracle::MeshOracle(const CollisionScene& scene)
+  : m_impl(std::make_unique<Impl>())
 {
   for (const CollisionObject& object : scene.objects)
   {
@@ -298,7 +311,10 @@ MeshOracle::MeshOracle(const CollisionScene& scene) : m_impl(std::make_unique<Im
 
 MeshOracle::~MeshOracle() = default;
 
-std::size_t MeshOracle::numTriangles() const { return m_impl->triangles.size(); }
+std::size_t MeshOracle::numTriangles() const
+{
+  return m_impl->triangles.size();
+}
 Aabb MeshOracle::bounds() const
 {
   Aabb box;
@@ -306,7 +322,10 @@ Aabb MeshOracle::bounds() const
   box.expand(m_impl->upper);
   return box;
 }
-double MeshOracle::diagonal() const { return m_impl->diagonal; }
+double MeshOracle::diagonal() const
+{
+  return m_impl->diagonal;
+}
 
 double MeshOracle::pointTriangleDistance(const Vec3& p, const TriangleCorners& t, Vec3* closest,
                                          Vec3* away)
@@ -565,19 +584,18 @@ std::string InvariantStats::summary(const std::string& name) const
       << "[oracle] " << name << ": min clearance (d - r) " << minClearance
       << " m, min sweep clearance " << minSweepClearance << " m, max residual " << maxResidual
       << " m (remaining slide " << maxSlide << " m), max gap " << maxGap
-      << " m, max free-path error " << maxFreePathError
-      << " m, max force error " << maxForceError << " (relative), max replay discrepancy "
-      << maxReplayDiscrepancy << " m\n"
+      << " m, max free-path error " << maxFreePathError << " m, max force error " << maxForceError
+      << " (relative), max replay discrepancy " << maxReplayDiscrepancy << " m\n"
       << "[oracle] " << name << ": max iterations " << maxIterations << ", iteration-cap ticks "
       << capTicks << ", budget-limited ticks " << budgetLimitedTicks << ", overflow ticks "
       << overflowTicks << ", refused ticks " << refusedTicks
       << " (uncapped they converge in <= " << maxUncappedIterations << " iterations, ending up to "
       << maxCapLag << " m from the capped end; non-terminating " << nonTerminating << ")"
       << ", failures " << failures() << " (penetration " << penetrations << ", crossing "
-      << crossings << ", tunnel " << tunnels << ", free path " << freePathFailures
-      << ", residual " << residualFailures << ", gap " << gapFailures << ", force "
-      << forceFailures << ", refusal " << refusalFailures << ", replay " << replayFailures
-      << ", approach " << approachFailures << ", non-terminating " << nonTerminating << ")\n";
+      << crossings << ", tunnel " << tunnels << ", free path " << freePathFailures << ", residual "
+      << residualFailures << ", gap " << gapFailures << ", force " << forceFailures << ", refusal "
+      << refusalFailures << ", replay " << replayFailures << ", approach " << approachFailures
+      << ", non-terminating " << nonTerminating << ")\n";
   // One row per case for the tables of the closing note: grep '^\[table\]'.
   out << "[table] | " << name << " | " << ticks << " | " << minClearance << " | "
       << minSweepClearance << " | " << maxResidual << " | " << maxGap << " | " << maxFreePathError
@@ -596,12 +614,17 @@ std::string InvariantStats::summary(const std::string& name) const
 
 TickChecker::TickChecker(const MeshOracle& oracle, const CollisionScene& scene,
                          const ProxyParameters& parameters, const OracleSettings& settings)
-  : m_oracle(oracle), m_scene(scene), m_parameters(parameters), m_settings(settings),
-    m_replay(std::make_unique<ProxySolver>())
-{
-}
+  : m_oracle(oracle)
+  , m_scene(scene)
+  , m_parameters(parameters)
+  , m_settings(settings)
+  , m_replay(std::make_unique<ProxySolver>())
+{}
 
-void TickChecker::reset(const Vec3& proxy) { m_proxy = proxy; }
+void TickChecker::reset(const Vec3& proxy)
+{
+  m_proxy = proxy;
+}
 
 void TickChecker::check(std::uint64_t tick, const Vec3& finger, const ProxyTickResult& result)
 {
@@ -656,8 +679,7 @@ Vec3 TickChecker::sought(const Vec3& finger) const
   // The solver's documented reach (ProxySolver::reachRadius): 16 (M + max(diagonal, r)) about the
   // centre of the scene's box, computed here from the oracle's own triangles, in long double.
   const Aabb box = m_oracle.bounds();
-  const long double largest =
-    std::max(maxAbsComponent(box.lower), maxAbsComponent(box.upper));
+  const long double largest = std::max(maxAbsComponent(box.lower), maxAbsComponent(box.upper));
   const long double reach =
     16.0L * (largest + std::max<long double>(m_oracle.diagonal(), m_parameters.radius));
   const Vec3 center = box.center();
@@ -801,8 +823,8 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
   s.minClearance = std::min(s.minClearance, clearance);
   if (clearance < -m_settings.penetrationTolerance)
   {
-    s.fail(s.penetrations, where() + ": proxy " + str(proxy) + " is " + str(-clearance) +
-                             " m inside the radius");
+    s.fail(s.penetrations,
+           where() + ": proxy " + str(proxy) + " is " + str(-clearance) + " m inside the radius");
   }
 
   // (f) Contact gap: an active plane means a triangle at the radius, not beyond it.
@@ -836,10 +858,10 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
     s.maxCapLag = std::max(s.maxCapLag, lag);
     if (converged.hitIterationCap)
     {
-      s.fail(s.nonTerminating, where() + ": the move/update loop does not terminate (still moving " +
-                                 "after " + std::to_string(converged.iterations) +
-                                 " iterations; the capped tick ended " + str(lag) +
-                                 " m from where the long run stopped)");
+      s.fail(s.nonTerminating,
+             where() + ": the move/update loop does not terminate (still moving " + "after " +
+               std::to_string(converged.iterations) + " iterations; the capped tick ended " +
+               str(lag) + " m from where the long run stopped)");
     }
     else
     {
@@ -890,8 +912,8 @@ void TickChecker::checkEnd(const std::string& where, const Vec3& proxy, const Ve
     {
       const double gap = m_oracle.distance(proxy, 2.0 * radius) - radius;
       s.fail(s.residualFailures, where + ": not a local minimum: a feasible step gets " + str(r) +
-                                   " m nearer the finger (proxy " + str(proxy) + " is " +
-                                   str(gap) + " m beyond the radius from the mesh, iterations " +
+                                   " m nearer the finger (proxy " + str(proxy) + " is " + str(gap) +
+                                   " m beyond the radius from the mesh, iterations " +
                                    std::to_string(iterations) + ")");
     }
   }

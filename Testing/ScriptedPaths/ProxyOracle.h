@@ -167,9 +167,8 @@ struct InvariantStats
 
   std::uint64_t failures() const
   {
-    return penetrations + crossings + tunnels + freePathFailures + residualFailures +
-           gapFailures + forceFailures + refusalFailures + replayFailures + approachFailures +
-           nonTerminating;
+    return penetrations + crossings + tunnels + freePathFailures + residualFailures + gapFailures +
+           forceFailures + refusalFailures + replayFailures + approachFailures + nonTerminating;
   }
   void fail(std::uint64_t& counter, const std::string& message);
   /// One line per measure, for the test output.

@@ -22,10 +22,12 @@ class ScriptedDevice final : public HapticDevice
 public:
   ScriptedDevice(FingerPath path, const std::set<std::uint64_t>& nanTicks,
                  const std::map<std::uint64_t, Vec3>& overrides, double startTime, double rate)
-    : m_device(std::move(path)), m_nanTicks(nanTicks), m_overrides(overrides),
-      m_startTime(startTime), m_rate(rate)
-  {
-  }
+    : m_device(std::move(path))
+    , m_nanTicks(nanTicks)
+    , m_overrides(overrides)
+    , m_startTime(startTime)
+    , m_rate(rate)
+  {}
   DeviceSample read(double time) override
   {
     DeviceSample sample = m_device.read(time);
@@ -121,11 +123,11 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
     // (e) Force: kp (proxy - finger) clamped to the device limit, or the last force held.
     const std::string where = "tick " + std::to_string(record.tick);
     const auto overridden = c.fingerOverrides.find(record.tick);
-    const bool nanTick = c.nanTicks.count(record.tick) != 0 ||
-                         (overridden != c.fingerOverrides.end() &&
-                          !(std::isfinite(overridden->second.x) &&
-                            std::isfinite(overridden->second.y) &&
-                            std::isfinite(overridden->second.z)));
+    const bool nanTick =
+      c.nanTicks.count(record.tick) != 0 ||
+      (overridden != c.fingerOverrides.end() &&
+       !(std::isfinite(overridden->second.x) && std::isfinite(overridden->second.y) &&
+         std::isfinite(overridden->second.z)));
     if (nanTick != record.fingerRefused)
     {
       stats.fail(stats.refusalFailures, where + ": finger " + oracle::str(record.finger) +
@@ -169,8 +171,7 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
     }
   });
   outcome.stats = stats;
-  outcome.seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   return outcome;
 }
 
@@ -270,8 +271,8 @@ void expectMatchesGolden(const std::string& name, const std::vector<HapticState>
       const double a = expected[i][k];
       const double b = got[i][k];
       const bool integer = k == 0 || k >= 11; // tick, contacts, iterations
-      const double tolerance = integer ? 0.0 : 1e-12 * std::max({std::fabs(a), std::fabs(b),
-                                                                 scale[k]});
+      const double tolerance =
+        integer ? 0.0 : 1e-12 * std::max({std::fabs(a), std::fabs(b), scale[k]});
       const double difference = std::fabs(a - b);
       if (scale[k] > 0.0)
       {
@@ -282,8 +283,8 @@ void expectMatchesGolden(const std::string& name, const std::vector<HapticState>
         ++mismatches;
         if (reported++ < 10)
         {
-          ADD_FAILURE() << path << ": tick " << i << " column " << k << " is "
-                        << oracle::str(b) << ", golden " << oracle::str(a);
+          ADD_FAILURE() << path << ": tick " << i << " column " << k << " is " << oracle::str(b)
+                        << ", golden " << oracle::str(a);
         }
       }
     }

@@ -60,11 +60,10 @@ TEST(ScriptedGoldenTraces, BoxJabs)
 TEST(ScriptedGoldenTraces, GrooveCircle)
 {
   // Around the line of a 60-degree groove: one face, both faces, the other face, free.
-  const FingerPath path =
-    concatenatePaths({makeSlidePath({0.0, 0.0, 0.03}, {0.0, 0.012, 0.005}, 0.1, kRate),
-                      makeCirclePath({0.0, 0.0, 0.005}, {1, 0, 0}, {0, 1, 0}, 0.012, 1.0, 0.5,
-                                     kRate)},
-                     kRate);
+  const FingerPath path = concatenatePaths(
+    {makeSlidePath({0.0, 0.0, 0.03}, {0.0, 0.012, 0.005}, 0.1, kRate),
+     makeCirclePath({0.0, 0.0, 0.005}, {1, 0, 0}, {0, 1, 0}, 0.012, 1.0, 0.5, kRate)},
+    kRate);
   runGolden("groove-circle", scenes::makeVGroove(60.0, 0.05, 0.04), path);
 }
 

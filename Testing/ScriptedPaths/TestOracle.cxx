@@ -26,8 +26,8 @@ TEST(OracleDistance, PointTriangleKnownAnswers)
   EXPECT_DOUBLE_EQ(MeshOracle::pointTriangleDistance({-3, -4, 0}, kTriangle, &closest), 5.0);
   EXPECT_EQ(closest, (Vec3{0, 0, 0}));
   // Beyond the hypotenuse: the nearest point is on the edge x + y = 1.
-  EXPECT_NEAR(MeshOracle::pointTriangleDistance({1, 1, 0}, kTriangle, &closest),
-              std::sqrt(0.5), 1e-16);
+  EXPECT_NEAR(MeshOracle::pointTriangleDistance({1, 1, 0}, kTriangle, &closest), std::sqrt(0.5),
+              1e-16);
   EXPECT_NEAR(closest.x, 0.5, 1e-16);
   // Zero area: the triangle is its longest edge.
   const TriangleCorners line{{0, 0, 0}, {2, 0, 0}, {1, 0, 0}};
@@ -45,8 +45,8 @@ TEST(OracleDistance, SameAnswerOneKilometreFromTheOrigin)
   const Vec3 p = o + Vec3{s / 8, s / 8, s / 16};
   EXPECT_EQ(MeshOracle::pointTriangleDistance(p, far), s / 16);
   // A vertical segment beyond the corner b: nearest to b itself.
-  const double slanted = MeshOracle::segmentTriangleDistance(o + Vec3{2 * s, -s, s / 16},
-                                                             o + Vec3{2 * s, -s, 1}, far);
+  const double slanted =
+    MeshOracle::segmentTriangleDistance(o + Vec3{2 * s, -s, s / 16}, o + Vec3{2 * s, -s, 1}, far);
   EXPECT_NEAR(slanted, std::sqrt(s * s + s * s + s * s / 256), 1e-17);
 }
 
@@ -59,14 +59,14 @@ TEST(OracleDistance, SegmentTriangle)
   EXPECT_EQ(MeshOracle::segmentTriangleDistance({0.2, 0.2, 1}, {0.2, 0.2, -1}, kTriangle), 0.0);
   EXPECT_TRUE(MeshOracle::segmentTouchesTriangle({0.2, 0.2, 1}, {0.2, 0.2, -1}, kTriangle));
   // Skew to an edge: segment along z at (0.5, -0.25), nearest to the edge on y = 0.
-  EXPECT_DOUBLE_EQ(MeshOracle::segmentTriangleDistance({0.5, -0.25, 1}, {0.5, -0.25, -1}, kTriangle),
-                   0.25);
+  EXPECT_DOUBLE_EQ(
+    MeshOracle::segmentTriangleDistance({0.5, -0.25, 1}, {0.5, -0.25, -1}, kTriangle), 0.25);
   // Ending exactly on a corner touches; one ulp short does not.
   EXPECT_TRUE(MeshOracle::segmentTouchesTriangle({1, 0, 1}, {1, 0, 0}, kTriangle));
   EXPECT_FALSE(
     MeshOracle::segmentTouchesTriangle({1, 0, 1}, {1, 0, std::nextafter(0.0, 1.0)}, kTriangle));
-  EXPECT_FALSE(MeshOracle::segmentTouchesTriangle({1.0000000001, 0, 1}, {1.0000000001, 0, -1},
-                                                  kTriangle));
+  EXPECT_FALSE(
+    MeshOracle::segmentTouchesTriangle({1.0000000001, 0, 1}, {1.0000000001, 0, -1}, kTriangle));
   // A zero-area triangle is crossed through its edges.
   const TriangleCorners line{{0, 0, 0}, {2, 0, 0}, {1, 0, 0}};
   EXPECT_TRUE(MeshOracle::segmentTouchesTriangle({1.5, -1, 0}, {1.5, 1, 0}, line));
@@ -81,7 +81,8 @@ TEST(OracleDistance, RandomSegmentsAgainstDenseSampling)
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 100; ++trial)
   {
-    const TriangleCorners t{{u(engine), u(engine), u(engine)}, {u(engine), u(engine), u(engine)},
+    const TriangleCorners t{{u(engine), u(engine), u(engine)},
+                            {u(engine), u(engine), u(engine)},
                             {u(engine), u(engine), u(engine)}};
     const Vec3 a{2 * u(engine), 2 * u(engine), 2 * u(engine)};
     const Vec3 b{2 * u(engine), 2 * u(engine), 2 * u(engine)};
@@ -108,7 +109,7 @@ TEST(OracleMesh, GridDistancesAndGather)
   EXPECT_DOUBLE_EQ(oracle.distance({0.01, 0.02, 0.003}), 0.003);
   EXPECT_DOUBLE_EQ(oracle.distance({0.01, 0.02, -0.5}), 0.5);
   EXPECT_DOUBLE_EQ(oracle.distance({0.01, 0.02, -0.5}, 0.1), 0.1); // capped
-  EXPECT_NEAR(oracle.distance({0.3, 0.0, 0.0}), 0.2, 1e-15);        // beyond the edge x = 0.1
+  EXPECT_NEAR(oracle.distance({0.3, 0.0, 0.0}), 0.2, 1e-15);       // beyond the edge x = 0.1
   EXPECT_DOUBLE_EQ(oracle.segmentDistance({-1, 0.013, 0.004}, {1, 0.013, 0.004}), 0.004);
   EXPECT_EQ(oracle.segmentDistance({0.013, 0.013, 0.004}, {0.013, 0.013, -0.004}), 0.0);
   EXPECT_TRUE(oracle.segmentTouchesAny({0.013, 0.013, 0.004}, {0.013, 0.013, -0.004}));
@@ -149,8 +150,9 @@ class OracleCatches : public testing::Test
 {
 protected:
   OracleCatches()
-    : scene(scenes::makeScene(makeGrid(0.2, 4, 0.0))), oracle(*scene),
-      settings(oracle::OracleSettings::forScene(scene->diagonal(), 1e-12))
+    : scene(scenes::makeScene(makeGrid(0.2, 4, 0.0)))
+    , oracle(*scene)
+    , settings(oracle::OracleSettings::forScene(scene->diagonal(), 1e-12))
   {
     parameters.radius = 0.001;
   }

@@ -40,11 +40,13 @@ struct ProbeCase
   std::uint64_t seed;
 };
 
-std::ostream& operator<<(std::ostream& out, const ProbeCase& c) { return out << c.file; }
+std::ostream& operator<<(std::ostream& out, const ProbeCase& c)
+{
+  return out << c.file;
+}
 
 class ProbeCorpus : public testing::TestWithParam<ProbeCase>
-{
-};
+{};
 
 TEST_P(ProbeCorpus, InvariantsHoldOnEveryTick)
 {
@@ -74,13 +76,14 @@ TEST_P(ProbeCorpus, InvariantsHoldOnEveryTick)
 
 // The radii of the shared person-like paths (../shared/data/paths/README.md): large against the
 // triangles, where the worst ticks were.
-INSTANTIATE_TEST_SUITE_P(
-  Probe, ProbeCorpus,
-  testing::Values(ProbeCase{"stanford-bunny.obj", 0.4, 0.002, 1},
-                  ProbeCase{"VH_M_Liver.glb", 0.5, 0.002, 2},
-                  ProbeCase{"M3x10_screw.stl", 0.005, 0.0005, 3},
-                  ProbeCase{"fandisk.off", 0.1, 0.003, 4}),
-  [](const testing::TestParamInfo<ProbeCase>& info) { return testName(info.param.file); });
+INSTANTIATE_TEST_SUITE_P(Probe, ProbeCorpus,
+                         testing::Values(ProbeCase{"stanford-bunny.obj", 0.4, 0.002, 1},
+                                         ProbeCase{"VH_M_Liver.glb", 0.5, 0.002, 2},
+                                         ProbeCase{"M3x10_screw.stl", 0.005, 0.0005, 3},
+                                         ProbeCase{"fandisk.off", 0.1, 0.003, 4}),
+                         [](const testing::TestParamInfo<ProbeCase>& info) {
+                           return testName(info.param.file);
+                         });
 
 struct SharedProbePath
 {
@@ -102,11 +105,13 @@ double environmentScale()
   return scale > 0.0 && scale <= 1.0 ? scale : 1.0;
 }
 
-std::ostream& operator<<(std::ostream& out, const SharedProbePath& c) { return out << c.path; }
+std::ostream& operator<<(std::ostream& out, const SharedProbePath& c)
+{
+  return out << c.path;
+}
 
 class SharedProbePaths : public testing::TestWithParam<SharedProbePath>
-{
-};
+{};
 
 // The person-like paths of ../shared/data/paths at their scale and radius: the ones whose worst
 // ticks took 170-216 iterations before the crease stretch. Every tick under the oracle.
@@ -152,11 +157,11 @@ TEST_P(SharedProbePaths, InvariantsHoldOnEveryTick)
 
 INSTANTIATE_TEST_SUITE_P(
   Shared, SharedProbePaths,
-  testing::Values(
-    SharedProbePath{"bunny-probe.csv", "stanford-bunny.obj", 0.4, 0.002, 5.077},
-    SharedProbePath{"liver-probe.csv", "VH_M_Liver.glb", 0.5, 0.002, 0.648},
-    SharedProbePath{"screw-probe.csv", "M3x10_screw.stl", 0.005, 0.0005, 3.859},
-    SharedProbePath{"cranium-probe.csv", "cranium_bone_iso075mm.ply", 0.001, 0.001, 0.411}),
+  testing::Values(SharedProbePath{"bunny-probe.csv", "stanford-bunny.obj", 0.4, 0.002, 5.077},
+                  SharedProbePath{"liver-probe.csv", "VH_M_Liver.glb", 0.5, 0.002, 0.648},
+                  SharedProbePath{"screw-probe.csv", "M3x10_screw.stl", 0.005, 0.0005, 3.859},
+                  SharedProbePath{"cranium-probe.csv", "cranium_bone_iso075mm.ply", 0.001, 0.001,
+                                  0.411}),
   [](const testing::TestParamInfo<SharedProbePath>& info) { return testName(info.param.path); });
 
 } // namespace

@@ -36,9 +36,9 @@ struct Stage
   std::unique_ptr<oracle::MeshOracle> oracle;
 
   explicit Stage(TriangleSoup soup)
-    : scene(scenes::makeScene(std::move(soup))), oracle(std::make_unique<oracle::MeshOracle>(*scene))
-  {
-  }
+    : scene(scenes::makeScene(std::move(soup)))
+    , oracle(std::make_unique<oracle::MeshOracle>(*scene))
+  {}
   Aabb bounds() const { return scene->objects.front().mesh.bounds(); }
 
   ScriptedOutcome run(const std::string& name, FingerPath path, bool keepTrace = false,
@@ -90,15 +90,15 @@ TEST(ScriptedProcedural, Plane)
   press.strokeLength = 0.1;
   press.speed = 0.1;
   stage.run("plane/press-stroke", makePressAndStrokePath(press, kRate));
-  stage.run("plane/slide", makeSlidePath({-0.09, 0.01, 0.5 * kRadius}, {0.09, -0.01, 0.5 * kRadius},
-                                         1.0, kRate));
+  stage.run("plane/slide",
+            makeSlidePath({-0.09, 0.01, 0.5 * kRadius}, {0.09, -0.01, 0.5 * kRadius}, 1.0, kRate));
   // The finger circles 2 mm under the plane; the proxy starts above it and follows on top.
   stage.run("plane/circle-under",
-            makeCirclePath({0, 0, -0.002}, {0, 0, 1}, {1, 0, 0}, 0.05, 1.0, 2.0, kRate), false,
-            {}, Vec3{0.05, 0, 0.01});
-  stage.run("plane/jab", makeJabPath(jabsAt({0.01, 0.01, 0}, {{0, 0, 1}, {1, 0, 1}, {0, -1, 2}},
-                                            0.02, 0.01),
-                                     kRate));
+            makeCirclePath({0, 0, -0.002}, {0, 0, 1}, {1, 0, 0}, 0.05, 1.0, 2.0, kRate), false, {},
+            Vec3{0.05, 0, 0.01});
+  stage.run(
+    "plane/jab",
+    makeJabPath(jabsAt({0.01, 0.01, 0}, {{0, 0, 1}, {1, 0, 1}, {0, -1, 2}}, 0.02, 0.01), kRate));
 }
 
 TEST(ScriptedProcedural, Box)
@@ -106,26 +106,26 @@ TEST(ScriptedProcedural, Box)
   const Stage stage(makeBox({0.03, 0.02, 0.01}));
   stage.runDefaultKinds("box");
   // 10 m/s straight through the box, past an edge and a corner: 10 mm per tick.
-  stage.run("box/through-at-10m/s",
-            concatenatePaths({makeSlidePath({-0.06, 0.0, 0.011}, {0.06, 0.0, -0.015}, 0.012, kRate),
-                              makeSlidePath({0.06, 0.0, -0.015}, {-0.05, 0.03, 0.02}, 0.012, kRate),
-                              makeSlidePath({-0.05, 0.03, 0.02}, {0.04, -0.03, -0.02}, 0.012,
-                                            kRate)},
-                             kRate));
+  stage.run(
+    "box/through-at-10m/s",
+    concatenatePaths({makeSlidePath({-0.06, 0.0, 0.011}, {0.06, 0.0, -0.015}, 0.012, kRate),
+                      makeSlidePath({0.06, 0.0, -0.015}, {-0.05, 0.03, 0.02}, 0.012, kRate),
+                      makeSlidePath({-0.05, 0.03, 0.02}, {0.04, -0.03, -0.02}, 0.012, kRate)},
+                     kRate));
 }
 
 TEST(ScriptedProcedural, ConcaveCorner)
 {
   const Stage stage(scenes::makeConcaveCorner(0.05));
   // Into the corner along the diagonal, then a circle whose plane cuts all three walls.
-  stage.run("corner/jab", makeJabPath(jabsAt({0, 0, 0}, {{1, 1, 1}, {1, 0.2, 0.5}, {0.3, 1, 0.4}},
-                                              0.03, 0.01),
-                                      kRate));
+  stage.run(
+    "corner/jab",
+    makeJabPath(jabsAt({0, 0, 0}, {{1, 1, 1}, {1, 0.2, 0.5}, {0.3, 1, 0.4}}, 0.03, 0.01), kRate));
   stage.run("corner/circle",
-            concatenatePaths({makeSlidePath({0.03, 0.03, 0.03}, {0.025, 0.005, 0.005}, 0.3, kRate),
-                              makeCirclePath({0.005, 0.005, 0.005}, {1, 1, 1}, {1, -1, 0}, 0.02,
-                                             2.0, 3.0, kRate)},
-                             kRate));
+            concatenatePaths(
+              {makeSlidePath({0.03, 0.03, 0.03}, {0.025, 0.005, 0.005}, 0.3, kRate),
+               makeCirclePath({0.005, 0.005, 0.005}, {1, 1, 1}, {1, -1, 0}, 0.02, 2.0, 3.0, kRate)},
+              kRate));
   PressAndStroke press;
   press.surfacePoint = {0.04, 0.001, 0.02};
   press.inward = {0, -1, 0};
@@ -145,14 +145,14 @@ TEST(ScriptedProcedural, SixtyDegreeGroove)
             makeSlidePath({-0.04, 0.0, -0.005}, {0.04, 0.002, -0.003}, 1.0, kRate), false, {},
             Vec3{-0.04, 0.0, 0.01});
   stage.run("groove/circle-around-line",
-            concatenatePaths({makeSlidePath({0.0, 0.0, 0.03}, {0.0, 0.012, 0.005}, 0.3, kRate),
-                              makeCirclePath({0.0, 0.0, 0.005}, {1, 0, 0}, {0, 1, 0}, 0.012, 2.0,
-                                             2.0, kRate)},
-                             kRate));
-  stage.run("groove/jab", makeJabPath(jabsAt({0.0, 0.0, 0.0}, {{0, 0, 1}, {0, 1, 2}, {0, -1, 2},
-                                                               {1, 0, 1}},
-                                             0.03, 0.01),
-                                      kRate));
+            concatenatePaths(
+              {makeSlidePath({0.0, 0.0, 0.03}, {0.0, 0.012, 0.005}, 0.3, kRate),
+               makeCirclePath({0.0, 0.0, 0.005}, {1, 0, 0}, {0, 1, 0}, 0.012, 2.0, 2.0, kRate)},
+              kRate));
+  stage.run(
+    "groove/jab",
+    makeJabPath(jabsAt({0.0, 0.0, 0.0}, {{0, 0, 1}, {0, 1, 2}, {0, -1, 2}, {1, 0, 1}}, 0.03, 0.01),
+                kRate));
 }
 
 TEST(ScriptedProcedural, PyramidApexAndFunnels)
@@ -161,10 +161,10 @@ TEST(ScriptedProcedural, PyramidApexAndFunnels)
     const Stage apex(scenes::makePyramid(5, 0.03, -0.03));
     apex.run("apex-5/jab", makeDefaultPath("jab", apex.bounds(), kRadius, kRate));
     apex.run("apex-5/circle-below",
-             concatenatePaths({makeSlidePath({0.0, 0.0, 0.02}, {0.005, 0.0, -0.004}, 0.3, kRate),
-                               makeCirclePath({0.0, 0.0, -0.004}, {0, 0, 1}, {1, 0, 0}, 0.005, 2.0,
-                                              2.0, kRate)},
-                              kRate));
+             concatenatePaths(
+               {makeSlidePath({0.0, 0.0, 0.02}, {0.005, 0.0, -0.004}, 0.3, kRate),
+                makeCirclePath({0.0, 0.0, -0.004}, {0, 0, 1}, {1, 0, 0}, 0.005, 2.0, 2.0, kRate)},
+               kRate));
   }
   for (int sides : {8, 16})
   {
@@ -176,10 +176,10 @@ TEST(ScriptedProcedural, PyramidApexAndFunnels)
                            kRate));
     // Below the apex, circling: the proxy stays in the funnel's bottom, touching many faces.
     funnel.run(name + "/circle-below",
-               concatenatePaths({makeSlidePath({0.0, 0.0, 0.02}, {0.004, 0.0, -0.01}, 0.3, kRate),
-                                 makeCirclePath({0.0, 0.0, -0.01}, {0, 0, 1}, {1, 0, 0}, 0.004,
-                                                3.0, 1.5, kRate)},
-                                kRate));
+               concatenatePaths(
+                 {makeSlidePath({0.0, 0.0, 0.02}, {0.004, 0.0, -0.01}, 0.3, kRate),
+                  makeCirclePath({0.0, 0.0, -0.01}, {0, 0, 1}, {1, 0, 0}, 0.004, 3.0, 1.5, kRate)},
+                 kRate));
   }
 }
 
@@ -187,18 +187,19 @@ TEST(ScriptedProcedural, ThinSheetsFromEitherSide)
 {
   for (const bool quad : {false, true})
   {
-    const Stage stage(quad ? scenes::makeQuad({-0.05, -0.05, 0}, {0.05, -0.05, 0},
-                                              {0.05, 0.05, 0}, {-0.05, 0.05, 0})
+    const Stage stage(quad ? scenes::makeQuad({-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0},
+                                              {-0.05, 0.05, 0})
                            : scenes::makeSheet(0.1));
     const std::string name = quad ? "sheet-quad" : "sheet-triangle";
     // 10 m/s jabs 20 mm through, from above and from below (the quad's at its shared diagonal).
-    stage.run(name + "/jab-above",
-              makeJabPath(jabsAt({0.0, 0.0, 0.0}, {{0, 0, 1}, {0.3, 0, 1}, {0, -0.4, 1}}, 0.02, 0.02),
-                          kRate));
-    stage.run(name + "/jab-below",
-              makeJabPath(jabsAt({0.005, 0.005, 0.0}, {{0, 0, -1}, {0.3, 0, -1}, {0, 0.4, -1}}, 0.02,
-                                 0.02),
-                          kRate));
+    stage.run(
+      name + "/jab-above",
+      makeJabPath(jabsAt({0.0, 0.0, 0.0}, {{0, 0, 1}, {0.3, 0, 1}, {0, -0.4, 1}}, 0.02, 0.02),
+                  kRate));
+    stage.run(
+      name + "/jab-below",
+      makeJabPath(jabsAt({0.005, 0.005, 0.0}, {{0, 0, -1}, {0.3, 0, -1}, {0, 0.4, -1}}, 0.02, 0.02),
+                  kRate));
     // Pressed 5 mm through and stroked off the edge and back under: it wraps around the edge.
     PressAndStroke press;
     press.surfacePoint = {0.0, 0.0, 0.0};
@@ -232,10 +233,10 @@ TEST(ScriptedProcedural, SoupWithGapsNarrowerThanTheProxy)
   press.speed = 0.1;
   stage.run("tiles/press-stroke", makePressAndStrokePath(press, kRate));
   stage.run("tiles/wander", makeDefaultPath("wander", stage.bounds(), kRadius, kRate));
-  stage.run("tiles/jab-at-gap-crossing",
-            makeJabPath(jabsAt({-0.0056, -0.0056, 0.0}, {{0, 0, 1}, {1, 1, 2}, {-1, 0.5, 2}}, 0.02,
-                               0.02),
-                        kRate));
+  stage.run(
+    "tiles/jab-at-gap-crossing",
+    makeJabPath(jabsAt({-0.0056, -0.0056, 0.0}, {{0, 0, 1}, {1, 1, 2}, {-1, 0.5, 2}}, 0.02, 0.02),
+                kRate));
 }
 
 TEST(ScriptedProcedural, OneKilometreOffsetBehavesTheSame)
@@ -335,7 +336,8 @@ TEST(ScriptedProcedural, IterationBudgetStaysFeasibleAndCatchesUp)
   EXPECT_EQ(budgeted.stats.penetrations, 0u);
   EXPECT_EQ(budgeted.stats.crossings, 0u);
   EXPECT_EQ(budgeted.stats.tunnels, 0u);
-  EXPECT_GT(budgeted.stats.budgetLimitedTicks, 0u) << "the budget never bit: the case tests nothing";
+  EXPECT_GT(budgeted.stats.budgetLimitedTicks, 0u)
+    << "the budget never bit: the case tests nothing";
   EXPECT_EQ(unbudgeted.stats.budgetLimitedTicks, 0u);
   ASSERT_EQ(budgeted.trace.size(), unbudgeted.trace.size());
   ASSERT_FALSE(budgeted.trace.empty());

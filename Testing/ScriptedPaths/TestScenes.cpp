@@ -122,8 +122,8 @@ TriangleSoup makeTiles(int n, double tile, double gap, bool duplicates)
   {
     // A tilted tile through the middle: intersecting triangles, as in real soups.
     const double h = 0.5 * tile;
-    parts.push_back(makeQuad({-h, -h, -0.3 * h}, {h, -h, 0.3 * h}, {h, h, 0.3 * h},
-                             {-h, h, -0.3 * h}));
+    parts.push_back(
+      makeQuad({-h, -h, -0.3 * h}, {h, -h, 0.3 * h}, {h, h, 0.3 * h}, {-h, h, -0.3 * h}));
   }
   return merge(parts);
 }

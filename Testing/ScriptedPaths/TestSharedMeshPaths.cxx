@@ -34,14 +34,16 @@ struct SharedMeshCase
   std::vector<std::string> kinds;
 };
 
-std::ostream& operator<<(std::ostream& out, const SharedMeshCase& c) { return out << c.file; }
+std::ostream& operator<<(std::ostream& out, const SharedMeshCase& c)
+{
+  return out << c.file;
+}
 
 const std::vector<std::string> kAllKinds = {"press-stroke", "jab", "wander", "slide", "circle"};
 const std::vector<std::string> kPressJabWander = {"press-stroke", "jab", "wander"};
 
 class SharedMeshPaths : public testing::TestWithParam<SharedMeshCase>
-{
-};
+{};
 
 TEST_P(SharedMeshPaths, InvariantsHoldOnEveryTick)
 {

@@ -26,7 +26,10 @@ std::uint64_t Random::next()
   return z ^ (z >> 31);
 }
 
-double Random::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double Random::uniform()
+{
+  return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
 double Random::logUniform(double lo, double hi)
 {
@@ -178,8 +181,8 @@ CaseSeeds caseSeeds(std::uint64_t defaultBase, int defaultCount)
   const char* text = std::getenv("PROXIMA_STRESS_SEED");
   if (text != nullptr && std::string(text) == "random")
   {
-    seeds.base = static_cast<std::uint64_t>(
-      std::chrono::steady_clock::now().time_since_epoch().count());
+    seeds.base =
+      static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
   }
   else if (text != nullptr && *text != '\0')
   {
@@ -251,10 +254,8 @@ oracle::InvariantStats runStressCase(const StressCase& c)
   try
   {
     writeMeshFile(meshFile, c.soup);
-    const FingerPath prefix =
-      prefixThroughTick(c.path, outcome.start, tick < 0 ? static_cast<long long>(outcome.stats.ticks)
-                                                        : tick,
-                        c.rate);
+    const FingerPath prefix = prefixThroughTick(
+      c.path, outcome.start, tick < 0 ? static_cast<long long>(outcome.stats.ticks) : tick, c.rate);
     writeFingerPathFile(pathFile, prefix);
   }
   catch (const std::exception& e)

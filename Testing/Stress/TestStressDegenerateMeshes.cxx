@@ -166,28 +166,28 @@ TEST(StressDegenerateMeshes, ZeroAreaAndDuplicatedTrianglesOnASphere)
       const auto next = static_cast<std::uint32_t>(soup.points.size());
       switch (random.integer(0, 5))
       {
-      case 0: // the same triangle again
-        soup.triangles.push_back({a, b, cc});
-        break;
-      case 1: // opposite winding
-        soup.triangles.push_back({a, cc, b});
-        break;
-      case 2: // a copy with its own points
-        soup.points.push_back(soup.points[a]);
-        soup.points.push_back(soup.points[b]);
-        soup.points.push_back(soup.points[cc]);
-        soup.triangles.push_back({next, next + 1, next + 2});
-        break;
-      case 3: // coincident corners: the edge (a, b) as a triangle
-        soup.triangles.push_back({a, a, b});
-        break;
-      case 4: // collinear corners: the edge's midpoint as the third
-        soup.points.push_back((soup.points[a] + soup.points[b]) * 0.5);
-        soup.triangles.push_back({a, next, b});
-        break;
-      default: // a point
-        soup.triangles.push_back({cc, cc, cc});
-        break;
+        case 0: // the same triangle again
+          soup.triangles.push_back({a, b, cc});
+          break;
+        case 1: // opposite winding
+          soup.triangles.push_back({a, cc, b});
+          break;
+        case 2: // a copy with its own points
+          soup.points.push_back(soup.points[a]);
+          soup.points.push_back(soup.points[b]);
+          soup.points.push_back(soup.points[cc]);
+          soup.triangles.push_back({next, next + 1, next + 2});
+          break;
+        case 3: // coincident corners: the edge (a, b) as a triangle
+          soup.triangles.push_back({a, a, b});
+          break;
+        case 4: // collinear corners: the edge's midpoint as the third
+          soup.points.push_back((soup.points[a] + soup.points[b]) * 0.5);
+          soup.triangles.push_back({a, next, b});
+          break;
+        default: // a point
+          soup.triangles.push_back({cc, cc, cc});
+          break;
       }
     }
     c.soup = std::move(soup);
@@ -197,8 +197,8 @@ TEST(StressDegenerateMeshes, ZeroAreaAndDuplicatedTrianglesOnASphere)
       bounds.expand(p);
     }
     std::vector<FingerPath> parts;
-    for (const std::string& kind : {std::string("press-stroke"), std::string("circle"),
-                                    std::string("jab")})
+    for (const std::string& kind :
+         {std::string("press-stroke"), std::string("circle"), std::string("jab")})
     {
       parts.push_back(makeDefaultPath(kind, bounds, c.proxy.radius, c.rate));
     }

@@ -80,8 +80,8 @@ TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
     // The oracle on a sample of ticks spread over every phase (1009 is prime to the period).
     if (tick % 1009 == 0)
     {
-      const double clearance = oracle.distance(result.proxy, 2.0 * parameters.radius) -
-                               parameters.radius;
+      const double clearance =
+        oracle.distance(result.proxy, 2.0 * parameters.radius) - parameters.radius;
       minClearance = std::min(minClearance, clearance);
       if (result.numContacts > 0)
       {
@@ -102,8 +102,8 @@ TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
   }
   std::cout << "[stress] drift: " << ticks << " ticks, proxy at each period's start within "
             << drift << " m of the second period's; sampled min clearance " << minClearance
-            << " m, max gap " << maxGap << " m, max residual " << maxResidual << " m; "
-            << capTicks << " ticks at the iteration cap\n";
+            << " m, max gap " << maxGap << " m, max residual " << maxResidual << " m; " << capTicks
+            << " ticks at the iteration cap\n";
   testing::Test::RecordProperty("drift_m", oracle::str(drift));
   EXPECT_LE(drift, 1e-9);
   EXPECT_EQ(failures, 0u);

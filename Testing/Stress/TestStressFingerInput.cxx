@@ -71,22 +71,15 @@ TEST(StressFingerInput, NaNAndInfinityAreRefused)
     {
       const auto tick = static_cast<std::uint64_t>(random.integer(1, ticks - 1));
       std::size_t hint = 0;
-      Vec3 finger = c.path.positionAt(c.path.startTime() + static_cast<double>(tick) / c.rate, hint);
+      Vec3 finger =
+        c.path.positionAt(c.path.startTime() + static_cast<double>(tick) / c.rate, hint);
       const double value = bad[random.integer(0, 3)];
       switch (random.integer(0, 3))
       {
-      case 0:
-        finger.x = value;
-        break;
-      case 1:
-        finger.y = value;
-        break;
-      case 2:
-        finger.z = value;
-        break;
-      default:
-        finger = {value, value, value};
-        break;
+        case 0: finger.x = value; break;
+        case 1: finger.y = value; break;
+        case 2: finger.z = value; break;
+        default: finger = {value, value, value}; break;
       }
       c.fingerOverrides[tick] = finger;
     }

@@ -81,7 +81,8 @@ TEST(StressPlanes, ApexesAndFunnelsOfFourToSixteenFaces)
     const int sides = random.integer(4, 16);
     const double base = 0.02;
     // A funnel (pit, height > 0) or an apex; slopes from nearly flat to steep.
-    const double height = (random.uniform() < 0.5 ? 1.0 : -1.0) * base * random.logUniform(0.01, 3.0);
+    const double height =
+      (random.uniform() < 0.5 ? 1.0 : -1.0) * base * random.logUniform(0.01, 3.0);
     c.name = (height > 0 ? "funnel-" : "apex-") + std::to_string(sides);
     std::vector<FingerPath> parts;
     // Jabs at the apex from random directions above, then a circle just under it.
@@ -179,8 +180,8 @@ TEST(StressPlanes, ConcaveCornersEnteredFromASphereOfDirections)
     jabs.overshoot = random.uniform(0.001, 0.01);
     jabs.speed = random.logUniform(0.05, 10.0);
     std::vector<FingerPath> parts{makeJabPath(jabs, c.rate)};
-    parts.push_back(makeCirclePath(inside * 0.001, inside, cross(inside, normals[0]), 0.004, 2.0,
-                                   1.0, c.rate));
+    parts.push_back(
+      makeCirclePath(inside * 0.001, inside, cross(inside, normals[0]), 0.004, 2.0, 1.0, c.rate));
     c.path = concatenatePaths(parts, c.rate);
     c.start = inside * 0.02;
   });

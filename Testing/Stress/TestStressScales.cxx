@@ -31,18 +31,10 @@ TriangleSoup someScene(Random& random, std::string& name)
 {
   switch (random.integer(0, 3))
   {
-  case 0:
-    name = "icosphere";
-    return makeIcosphere(3, 0.02);
-  case 1:
-    name = "box";
-    return makeBox({0.02, 0.015, 0.01});
-  case 2:
-    name = "corner";
-    return scenes::makeConcaveCorner(0.04);
-  default:
-    name = "tiles";
-    return scenes::makeTiles(4, 0.01, 0.0012, true);
+    case 0: name = "icosphere"; return makeIcosphere(3, 0.02);
+    case 1: name = "box"; return makeBox({0.02, 0.015, 0.01});
+    case 2: name = "corner"; return scenes::makeConcaveCorner(0.04);
+    default: name = "tiles"; return scenes::makeTiles(4, 0.01, 0.0012, true);
   }
 }
 
@@ -97,8 +89,7 @@ TEST(StressScales, ProxyRadiiFrom1e5To1e1Metres)
     std::snprintf(label, sizeof label, "%s/radius-%.1e-m", sphere ? "icosphere" : "box",
                   c.proxy.radius);
     c.name = label;
-    const FingerPath path = pathsFor(boundsOf(soup), c.proxy.radius, c.rate,
-                                     c.proxy.radius > 1e-3);
+    const FingerPath path = pathsFor(boundsOf(soup), c.proxy.radius, c.rate, c.proxy.radius > 1e-3);
     const Rotation rotation = Rotation::random(random);
     c.soup = transform(std::move(soup), rotation);
     c.path = transform(path, rotation);

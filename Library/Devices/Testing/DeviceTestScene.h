@@ -78,9 +78,9 @@ class DrivenDevice final : public HapticDevice
 {
 public:
   DrivenDevice(HapticDevice& device, std::function<void(double)> before)
-    : m_device(device), m_before(std::move(before))
-  {
-  }
+    : m_device(device)
+    , m_before(std::move(before))
+  {}
   DeviceSample read(double time) override
   {
     m_before(time);

@@ -15,7 +15,9 @@ namespace proxima::testing
 class FakeReportTransport final : public ReportTransport
 {
 public:
-  explicit FakeReportTransport(SpaceMouseEmulator& emulator) : m_emulator(emulator) {}
+  explicit FakeReportTransport(SpaceMouseEmulator& emulator)
+    : m_emulator(emulator)
+  {}
 
   TransportResult readReport(std::span<std::uint8_t> buffer, int /*timeout*/) override
   {
@@ -50,7 +52,9 @@ private:
 class FakeBulkTransport final : public BulkTransport
 {
 public:
-  explicit FakeBulkTransport(FalconEmulator& emulator) : m_emulator(emulator) {}
+  explicit FakeBulkTransport(FalconEmulator& emulator)
+    : m_emulator(emulator)
+  {}
 
   /// Each read returns at most this many bytes (a USB packet cut short, a slow bridge).
   std::size_t maxReadSize = 1024;

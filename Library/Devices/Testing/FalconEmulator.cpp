@@ -10,9 +10,10 @@ namespace proxima::testing
 
 FalconEmulator::FalconEmulator(std::vector<std::uint8_t> firmware, int homingFrames,
                                const DeltaGeometry& geometry)
-  : m_firmware(std::move(firmware)), m_homingFrames(homingFrames), m_kinematics(geometry)
-{
-}
+  : m_firmware(std::move(firmware))
+  , m_homingFrames(homingFrames)
+  , m_kinematics(geometry)
+{}
 
 void FalconEmulator::setGripPosition(const Vec3& position)
 {
@@ -24,8 +25,8 @@ void FalconEmulator::setGripPosition(const Vec3& position)
   std::array<std::int16_t, 3> counts{};
   for (std::size_t i = 0; i < 3; ++i)
   {
-    counts[i] = static_cast<std::int16_t>(
-      std::lround(((*angles)[i] - thetaAtZeroCounts) * countsPerRadian));
+    counts[i] =
+      static_cast<std::int16_t>(std::lround(((*angles)[i] - thetaAtZeroCounts) * countsPerRadian));
   }
   setEncoders(counts);
 }
@@ -90,45 +91,44 @@ void FalconEmulator::receive(const std::uint8_t* bytes, std::size_t size)
     const std::uint8_t byte = bytes[i];
     switch (m_stage)
     {
-    case Stage::PoweredOn:
-      break;
-    case Stage::Bootloader:
-      m_received.push_back(byte);
-      if (m_baud == ftdi::kBaud9600 && m_received == std::vector<std::uint8_t>{0x0a, 0x43, 0x0d})
-      {
-        for (int reply : {0x00, 0x0a, 0x44, 0x2c, 0x0d})
+      case Stage::PoweredOn: break;
+      case Stage::Bootloader:
+        m_received.push_back(byte);
+        if (m_baud == ftdi::kBaud9600 && m_received == std::vector<std::uint8_t>{0x0a, 0x43, 0x0d})
         {
-          m_outgoing.push_back(static_cast<std::uint8_t>(reply));
+          for (int reply : {0x00, 0x0a, 0x44, 0x2c, 0x0d})
+          {
+            m_outgoing.push_back(static_cast<std::uint8_t>(reply));
+          }
+          m_received.clear();
         }
-        m_received.clear();
-      }
-      else if (m_baud == ftdi::kBaudFirmwareUpload && !m_dtrHigh && byte == 0x40)
-      {
-        m_outgoing.push_back(0x41);
-        m_stage = Stage::Uploading;
-        m_uploaded.clear();
-        m_received.clear();
-      }
-      break;
-    case Stage::Uploading:
-      // The bootloader echoes every byte it takes.
-      m_uploaded.push_back(byte);
-      m_outgoing.push_back(byte);
-      break;
-    case Stage::Running:
-      m_received.push_back(byte);
-      if (m_received.front() != '<')
-      {
-        m_received.clear();
-      }
-      else if (m_received.size() == kFalconFrameSize)
-      {
-        FalconFrameBytes frame{};
-        std::copy(m_received.begin(), m_received.end(), frame.begin());
-        m_received.clear();
-        handleFrame(frame);
-      }
-      break;
+        else if (m_baud == ftdi::kBaudFirmwareUpload && !m_dtrHigh && byte == 0x40)
+        {
+          m_outgoing.push_back(0x41);
+          m_stage = Stage::Uploading;
+          m_uploaded.clear();
+          m_received.clear();
+        }
+        break;
+      case Stage::Uploading:
+        // The bootloader echoes every byte it takes.
+        m_uploaded.push_back(byte);
+        m_outgoing.push_back(byte);
+        break;
+      case Stage::Running:
+        m_received.push_back(byte);
+        if (m_received.front() != '<')
+        {
+          m_received.clear();
+        }
+        else if (m_received.size() == kFalconFrameSize)
+        {
+          FalconFrameBytes frame{};
+          std::copy(m_received.begin(), m_received.end(), frame.begin());
+          m_received.clear();
+          handleFrame(frame);
+        }
+        break;
     }
   }
 }

@@ -20,8 +20,8 @@ void appendAxisReport(std::vector<std::uint8_t>& d, std::uint8_t id, std::uint8_
 {
   // Report ID, Logical min -350 / max 350, Report Size 16, Report Count `count`, Input (Data,
   // Variable, Absolute).
-  const std::vector<std::uint8_t> items{0x85, id,   0x16, 0xa2, 0xfe, 0x26, 0x5e, 0x01,
-                                        0x75, 0x10, 0x95, count, 0x81, 0x02};
+  const std::vector<std::uint8_t> items{0x85, id,   0x16, 0xa2, 0xfe,  0x26, 0x5e,
+                                        0x01, 0x75, 0x10, 0x95, count, 0x81, 0x02};
   d.insert(d.end(), items.begin(), items.end());
 }
 } // namespace
@@ -49,9 +49,9 @@ std::vector<std::uint8_t> spaceMouseDescriptor(SpaceMouseLayout layout)
 }
 
 SpaceMouseEmulator::SpaceMouseEmulator(SpaceMouseLayout layout)
-  : m_layout(layout), m_descriptor(spaceMouseDescriptor(layout))
-{
-}
+  : m_layout(layout)
+  , m_descriptor(spaceMouseDescriptor(layout))
+{}
 
 void SpaceMouseEmulator::setAxes(const std::array<int, 3>& translation,
                                  const std::array<int, 3>& rotation)

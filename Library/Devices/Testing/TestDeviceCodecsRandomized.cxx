@@ -98,15 +98,17 @@ TEST(DeviceCodecsRandomized, FrameReaderReturnsOnlyFramesThatCameInARow)
         frame.info = static_cast<std::uint8_t>(random() % 0x80);
         const auto bytes = encodeFalconFrame(frame);
         const std::size_t keep = random() % 3 == 0 ? random() % 16 : 16;
-        stream.insert(stream.end(), bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(keep));
+        stream.insert(stream.end(), bytes.begin(),
+                      bytes.begin() + static_cast<std::ptrdiff_t>(keep));
       }
       else
       {
         const std::size_t noise = random() % 20;
         for (std::size_t i = 0; i < noise; ++i)
         {
-          stream.push_back(kind == 1 ? static_cast<std::uint8_t>(random())
-                                     : static_cast<std::uint8_t>(alphabet[random() % alphabet.size()]));
+          stream.push_back(kind == 1
+                             ? static_cast<std::uint8_t>(random())
+                             : static_cast<std::uint8_t>(alphabet[random() % alphabet.size()]));
         }
       }
     }
@@ -115,14 +117,14 @@ TEST(DeviceCodecsRandomized, FrameReaderReturnsOnlyFramesThatCameInARow)
     while (at < stream.size())
     {
       const std::size_t piece = std::min<std::size_t>(1 + random() % 40, stream.size() - at);
-      const auto frame =
-        reader.push(std::span<const std::uint8_t>(stream.data() + at, piece));
+      const auto frame = reader.push(std::span<const std::uint8_t>(stream.data() + at, piece));
       at += piece;
       if (frame)
       {
         const auto bytes = encodeFalconFrame(*frame);
-        const auto found = std::search(stream.begin(), stream.begin() + static_cast<std::ptrdiff_t>(at),
-                                       bytes.begin(), bytes.end());
+        const auto found =
+          std::search(stream.begin(), stream.begin() + static_cast<std::ptrdiff_t>(at),
+                      bytes.begin(), bytes.end());
         ASSERT_NE(found, stream.begin() + static_cast<std::ptrdiff_t>(at)) << "trial " << trial;
       }
     }

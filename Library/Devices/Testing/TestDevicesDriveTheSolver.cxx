@@ -124,10 +124,10 @@ TEST(DevicesDriveTheSolver, FalconOnItsEmulatorAndItsMotorCommands)
     {
       continue;
     }
-    const auto counts = falcon.countsFromAngles(*kinematics.inverse(
-      trace[i].finger - settings.worldOffset + falcon.neutral()));
-    const auto expected =
-      falcon.commandsFromTorques(kinematics.torques(falcon.anglesFromCounts(counts), trace[i].force));
+    const auto counts = falcon.countsFromAngles(
+      *kinematics.inverse(trace[i].finger - settings.worldOffset + falcon.neutral()));
+    const auto expected = falcon.commandsFromTorques(
+      kinematics.torques(falcon.anglesFromCounts(counts), trace[i].force));
     for (std::size_t joint = 0; joint < 3; ++joint)
     {
       EXPECT_NEAR(frames[i + 1].values[joint], expected[joint], 1.0) << "tick " << i;

@@ -36,14 +36,16 @@ std::vector<std::uint8_t> firmwareImage()
 class FalconDeviceTest : public ::testing::Test
 {
 protected:
-  FalconDeviceTest() : emulator(firmwareImage())
+  FalconDeviceTest()
+    : emulator(firmwareImage())
   {
     firmwarePath = (std::filesystem::temp_directory_path() /
                     ("proxima-falcon-firmware-" + std::to_string(::getpid()) + ".bin"))
                      .string();
     std::ofstream file(firmwarePath, std::ios::binary);
     const auto image = firmwareImage();
-    file.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
+    file.write(reinterpret_cast<const char*>(image.data()),
+               static_cast<std::streamsize>(image.size()));
   }
   ~FalconDeviceTest() override { std::remove(firmwarePath.c_str()); }
 
@@ -83,13 +85,21 @@ TEST_F(FalconDeviceTest, UploadsTheFirmwareInTheDocumentedOrder)
   // libnifalcon's FalconComm steps: purge, latency 16 ms, 8N1, 9600 baud, no flow control, RTS
   // low, DTR low, DTR high; then DTR low and the upload baud; then latency 1 ms, normal baud,
   // purge.
-  const std::vector<std::pair<std::uint8_t, std::uint16_t>> expected{
-    {kRequestReset, 1},      {kRequestReset, 2},          {kRequestLatencyTimer, 16},
-    {kRequestLineProperties, 8}, {kRequestBaudRate, 0x4138}, {kRequestFlowControl, 0},
-    {kRequestModemControl, 0x0200}, {kRequestModemControl, 0x0100},
-    {kRequestModemControl, 0x0101}, {kRequestModemControl, 0x0100}, {kRequestBaudRate, 0x15},
-    {kRequestLatencyTimer, 1},      {kRequestBaudRate, 0x02},      {kRequestReset, 1},
-    {kRequestReset, 2}};
+  const std::vector<std::pair<std::uint8_t, std::uint16_t>> expected{{kRequestReset, 1},
+                                                                     {kRequestReset, 2},
+                                                                     {kRequestLatencyTimer, 16},
+                                                                     {kRequestLineProperties, 8},
+                                                                     {kRequestBaudRate, 0x4138},
+                                                                     {kRequestFlowControl, 0},
+                                                                     {kRequestModemControl, 0x0200},
+                                                                     {kRequestModemControl, 0x0100},
+                                                                     {kRequestModemControl, 0x0101},
+                                                                     {kRequestModemControl, 0x0100},
+                                                                     {kRequestBaudRate, 0x15},
+                                                                     {kRequestLatencyTimer, 1},
+                                                                     {kRequestBaudRate, 0x02},
+                                                                     {kRequestReset, 1},
+                                                                     {kRequestReset, 2}};
   EXPECT_EQ(emulator.controlRequests(), expected);
 }
 
@@ -243,7 +253,8 @@ TEST_F(FalconDeviceTest, ShortReadsAreGatheredAndMalformedFramesRefused)
   ASSERT_TRUE(sample.valid);
   EXPECT_LT(distance(sample.position, Vec3{1.0, 2.0, 3.0} + offset), 1e-4);
   const std::uint64_t refusedBefore = device->frameReader().refusedFrames();
-  emulator.queueRaw({'<', 'A', 'A', 'Z', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', '>'});
+  emulator.queueRaw(
+    {'<', 'A', 'A', 'Z', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', 'A', '>'});
   for (int tick = 40; tick < 80; ++tick)
   {
     sample = device->read(tick * 0.001);

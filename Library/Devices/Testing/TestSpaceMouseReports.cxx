@@ -33,8 +33,7 @@ TEST(SpaceMouseReports, SplitLayoutTranslationAndRotation)
 TEST(SpaceMouseReports, SixAxisLayoutHasEverythingInReportOne)
 {
   SpaceMouseState state;
-  const Bytes report{0x01, 0x01, 0x00, 0x02, 0x00, 0x03, 0x00,
-                     0xff, 0xff, 0xfe, 0xff, 0x00, 0x80};
+  const Bytes report{0x01, 0x01, 0x00, 0x02, 0x00, 0x03, 0x00, 0xff, 0xff, 0xfe, 0xff, 0x00, 0x80};
   const auto result = applySpaceMouseReport(report, SpaceMouseLayout::SixAxisReport, state);
   EXPECT_TRUE(result.accepted);
   EXPECT_TRUE(result.rotation);
@@ -45,9 +44,8 @@ TEST(SpaceMouseReports, SixAxisLayoutHasEverythingInReportOne)
 TEST(SpaceMouseReports, ButtonsAreALittleEndianMask)
 {
   SpaceMouseState state;
-  EXPECT_TRUE(applySpaceMouseReport(Bytes{0x03, 0x05, 0x01}, SpaceMouseLayout::SplitReports,
-                                    state)
-                .accepted);
+  EXPECT_TRUE(
+    applySpaceMouseReport(Bytes{0x03, 0x05, 0x01}, SpaceMouseLayout::SplitReports, state).accepted);
   EXPECT_EQ(state.buttons, 0x0105u);
 }
 
@@ -62,8 +60,8 @@ TEST(SpaceMouseReports, ShortAndUnknownReportsAreRefusedAndChangeNothing)
   // Six bytes are enough for the split layout but short for the six-axis one.
   const Bytes sixBytes{0x01, 1, 0, 2, 0, 3, 0};
   EXPECT_FALSE(applySpaceMouseReport(sixBytes, SpaceMouseLayout::SixAxisReport, state).accepted);
-  EXPECT_FALSE(applySpaceMouseReport(Bytes{0x02, 1, 0}, SpaceMouseLayout::SplitReports, state)
-                 .accepted);
+  EXPECT_FALSE(
+    applySpaceMouseReport(Bytes{0x02, 1, 0}, SpaceMouseLayout::SplitReports, state).accepted);
   EXPECT_FALSE(applySpaceMouseReport(Bytes{0x03}, SpaceMouseLayout::SplitReports, state).accepted);
   result = applySpaceMouseReport(Bytes{0x17, 0, 0}, SpaceMouseLayout::SplitReports, state);
   EXPECT_FALSE(result.accepted);
@@ -83,10 +81,9 @@ TEST(SpaceMouseReports, LedReport)
 // Collection (Application) a1 01; report 1: Report ID 85 01, Report Size 16 75 10, Report Count
 // 3 95 03, Input 81 02; report 2 alike; report 3: Report Size 1 75 01, Count 16 95 10, Input;
 // End Collection c0.
-const Bytes kSplitDescriptor{0x05, 0x01, 0x09, 0x08, 0xa1, 0x01, 0x85, 0x01, 0x75, 0x10,
-                             0x95, 0x03, 0x81, 0x02, 0x85, 0x02, 0x75, 0x10, 0x95, 0x03,
-                             0x81, 0x02, 0x85, 0x03, 0x75, 0x01, 0x95, 0x10, 0x81, 0x02,
-                             0xc0};
+const Bytes kSplitDescriptor{0x05, 0x01, 0x09, 0x08, 0xa1, 0x01, 0x85, 0x01, 0x75, 0x10, 0x95,
+                             0x03, 0x81, 0x02, 0x85, 0x02, 0x75, 0x10, 0x95, 0x03, 0x81, 0x02,
+                             0x85, 0x03, 0x75, 0x01, 0x95, 0x10, 0x81, 0x02, 0xc0};
 
 TEST(SpaceMouseDescriptor, InputReportSizesFromTheItems)
 {
@@ -95,7 +92,8 @@ TEST(SpaceMouseDescriptor, InputReportSizesFromTheItems)
   ASSERT_TRUE(sizes) << error;
   using Sizes = std::vector<std::pair<std::uint8_t, std::size_t>>;
   EXPECT_EQ(*sizes, (Sizes{{1, 6}, {2, 6}, {3, 2}}));
-  EXPECT_EQ(spaceMouseLayoutFromDescriptor(kSplitDescriptor, error), SpaceMouseLayout::SplitReports);
+  EXPECT_EQ(spaceMouseLayoutFromDescriptor(kSplitDescriptor, error),
+            SpaceMouseLayout::SplitReports);
 }
 
 TEST(SpaceMouseDescriptor, SixAxisReportOne)

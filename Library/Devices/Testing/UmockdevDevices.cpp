@@ -35,8 +35,7 @@ struct Resolved
   UMockdevIoctlData* data = nullptr;
   Resolved(UMockdevIoctlData* parent, gsize offset, gsize size)
     : data(umockdev_ioctl_data_resolve(parent, offset, size, nullptr))
-  {
-  }
+  {}
   ~Resolved()
   {
     if (data != nullptr)
@@ -190,65 +189,63 @@ gboolean usbIoctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer user
   std::lock_guard lock(state->mutex);
   switch (request)
   {
-  case USBDEVFS_GET_CAPABILITIES:
-  {
-    Resolved caps(arg, 0, sizeof(guint32));
-    const guint32 value = USBDEVFS_CAP_BULK_CONTINUATION | USBDEVFS_CAP_NO_PACKET_SIZE_LIM |
-                          USBDEVFS_CAP_REAP_AFTER_DISCONNECT;
-    std::memcpy(caps.data->data, &value, sizeof value);
-    umockdev_ioctl_client_complete(client, 0, 0);
-    return TRUE;
-  }
-  case USBDEVFS_GETDRIVER:
-    // No kernel driver holds the interface.
-    umockdev_ioctl_client_complete(client, -1, ENODATA);
-    return TRUE;
-  case USBDEVFS_CLAIMINTERFACE:
-  case USBDEVFS_RELEASEINTERFACE:
-  case USBDEVFS_SETINTERFACE:
-  case USBDEVFS_SETCONFIGURATION:
-  case USBDEVFS_CLEAR_HALT:
-  case USBDEVFS_RESET:
-    umockdev_ioctl_client_complete(client, state->unplugged ? -1 : 0,
-                                   state->unplugged ? ENODEV : 0);
-    return TRUE;
-  case USBDEVFS_SUBMITURB:
-  {
-    if (state->unplugged)
+    case USBDEVFS_GET_CAPABILITIES:
     {
-      umockdev_ioctl_client_complete(client, -1, ENODEV);
+      Resolved caps(arg, 0, sizeof(guint32));
+      const guint32 value = USBDEVFS_CAP_BULK_CONTINUATION | USBDEVFS_CAP_NO_PACKET_SIZE_LIM |
+                            USBDEVFS_CAP_REAP_AFTER_DISCONNECT;
+      std::memcpy(caps.data->data, &value, sizeof value);
+      umockdev_ioctl_client_complete(client, 0, 0);
       return TRUE;
     }
-    // Kept (a reference) until reaped; umockdev syncs our changes back to the client then.
-    UMockdevIoctlData* urb = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_urb), nullptr);
-    state->submitted.push_back(urb);
-    umockdev_ioctl_client_complete(client, 0, 0);
-    return TRUE;
-  }
-  case USBDEVFS_REAPURB:
-  case USBDEVFS_REAPURBNDELAY:
-  {
-    if (state->submitted.empty())
+    case USBDEVFS_GETDRIVER:
+      // No kernel driver holds the interface.
+      umockdev_ioctl_client_complete(client, -1, ENODATA);
+      return TRUE;
+    case USBDEVFS_CLAIMINTERFACE:
+    case USBDEVFS_RELEASEINTERFACE:
+    case USBDEVFS_SETINTERFACE:
+    case USBDEVFS_SETCONFIGURATION:
+    case USBDEVFS_CLEAR_HALT:
+    case USBDEVFS_RESET:
+      umockdev_ioctl_client_complete(client, state->unplugged ? -1 : 0,
+                                     state->unplugged ? ENODEV : 0);
+      return TRUE;
+    case USBDEVFS_SUBMITURB:
     {
-      umockdev_ioctl_client_complete(client, -1, state->unplugged ? ENODEV : EAGAIN);
+      if (state->unplugged)
+      {
+        umockdev_ioctl_client_complete(client, -1, ENODEV);
+        return TRUE;
+      }
+      // Kept (a reference) until reaped; umockdev syncs our changes back to the client then.
+      UMockdevIoctlData* urb = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_urb), nullptr);
+      state->submitted.push_back(urb);
+      umockdev_ioctl_client_complete(client, 0, 0);
       return TRUE;
     }
-    UMockdevIoctlData* urb = state->submitted.front();
-    state->submitted.pop_front();
-    completeUrb(*state, urb);
-    Resolved pointer(arg, 0, sizeof(gpointer));
-    umockdev_ioctl_data_set_ptr(pointer.data, 0, urb);
-    umockdev_ioctl_client_complete(client, 0, 0);
-    g_object_unref(urb);
-    return TRUE;
-  }
-  case USBDEVFS_DISCARDURB:
-    // Every URB completes at its reap, so none is left to cancel.
-    umockdev_ioctl_client_complete(client, -1, EINVAL);
-    return TRUE;
-  default:
-    umockdev_ioctl_client_complete(client, -1, ENOTTY);
-    return TRUE;
+    case USBDEVFS_REAPURB:
+    case USBDEVFS_REAPURBNDELAY:
+    {
+      if (state->submitted.empty())
+      {
+        umockdev_ioctl_client_complete(client, -1, state->unplugged ? ENODEV : EAGAIN);
+        return TRUE;
+      }
+      UMockdevIoctlData* urb = state->submitted.front();
+      state->submitted.pop_front();
+      completeUrb(*state, urb);
+      Resolved pointer(arg, 0, sizeof(gpointer));
+      umockdev_ioctl_data_set_ptr(pointer.data, 0, urb);
+      umockdev_ioctl_client_complete(client, 0, 0);
+      g_object_unref(urb);
+      return TRUE;
+    }
+    case USBDEVFS_DISCARDURB:
+      // Every URB completes at its reap, so none is left to cancel.
+      umockdev_ioctl_client_complete(client, -1, EINVAL);
+      return TRUE;
+    default: umockdev_ioctl_client_complete(client, -1, ENOTTY); return TRUE;
   }
 }
 } // namespace
@@ -262,7 +259,8 @@ struct UmockdevBed::Impl
   UsbState usb;
 };
 
-UmockdevBed::UmockdevBed() : m_impl(std::make_unique<Impl>())
+UmockdevBed::UmockdevBed()
+  : m_impl(std::make_unique<Impl>())
 {
   m_impl->testbed = umockdev_testbed_new();
 }
@@ -292,8 +290,10 @@ bool UmockdevBed::active() const
 {
   // The testbed's root has a fresh sys/ folder; under the preload, /sys is that folder.
   const std::string root = takeString(umockdev_testbed_get_root_dir(m_impl->testbed));
-  struct stat real{};
-  struct stat seen{};
+  struct stat real
+  {};
+  struct stat seen
+  {};
   return stat((root + "/sys").c_str(), &real) == 0 && stat("/sys", &seen) == 0 &&
          real.st_ino == seen.st_ino && real.st_dev == seen.st_dev;
 }
@@ -328,19 +328,19 @@ void UmockdevBed::addHidraw(SpaceMouseEmulator& emulator, std::uint16_t vendorId
     bed, "usb", "usb1/1-1", nullptr, "idVendor", vendor, "idProduct", productText, "manufacturer",
     "3Dconnexion", "product", product.c_str(), "busnum", "1", "devnum", "3", nullptr, "DEVTYPE",
     "usb_device", nullptr));
-  const std::string interface = takeString(umockdev_testbed_add_device(
-    bed, "usb", "1-1:1.0", usb.c_str(), "bInterfaceNumber", "00", nullptr, "DEVTYPE",
-    "usb_interface", nullptr));
-  const std::string hid = takeString(umockdev_testbed_add_device(
-    bed, "hid", hidName, interface.c_str(), nullptr, "HID_ID", hidId, "HID_NAME",
-    product.c_str(), "HID_UNIQ", "", nullptr));
+  const std::string interface =
+    takeString(umockdev_testbed_add_device(bed, "usb", "1-1:1.0", usb.c_str(), "bInterfaceNumber",
+                                           "00", nullptr, "DEVTYPE", "usb_interface", nullptr));
+  const std::string hid = takeString(
+    umockdev_testbed_add_device(bed, "hid", hidName, interface.c_str(), nullptr, "HID_ID", hidId,
+                                "HID_NAME", product.c_str(), "HID_UNIQ", "", nullptr));
   std::vector<std::uint8_t> descriptor = emulator.reportDescriptor();
   umockdev_testbed_set_attribute_binary(bed, hid.c_str(), "report_descriptor", descriptor.data(),
                                         static_cast<gint>(descriptor.size()));
   // add_from_string (not add_device) so that the /dev node exists for the handler.
-  const std::string record = "P: " + hid.substr(4) +
-                             "/hidraw/hidraw0\nN: hidraw0\nE: SUBSYSTEM=hidraw\nE: DEVNAME=" +
-                             kHidrawNode + "\n";
+  const std::string record =
+    "P: " + hid.substr(4) +
+    "/hidraw/hidraw0\nN: hidraw0\nE: SUBSYSTEM=hidraw\nE: DEVNAME=" + kHidrawNode + "\n";
   if (!umockdev_testbed_add_from_string(bed, record.c_str(), &error))
   {
     const std::string message = error->message;
@@ -373,8 +373,7 @@ void UmockdevBed::addFalcon(FalconEmulator& emulator)
   {
     const std::string message = error->message;
     g_error_free(error);
-    throw std::runtime_error("umockdev cannot attach to " + std::string(kUsbNode) + ": " +
-                             message);
+    throw std::runtime_error("umockdev cannot attach to " + std::string(kUsbNode) + ": " + message);
   }
   // Device descriptor 0403:cb48 (bcdUSB 2.0, class per interface, 8-byte EP0), one
   // configuration with one vendor-class interface and bulk endpoints 0x81 IN and 0x02 OUT of 64
@@ -385,7 +384,8 @@ void UmockdevBed::addFalcon(FalconEmulator& emulator)
     "A: bConfigurationValue=1\\n\nA: busnum=1\\n\nA: devnum=2\\n\nA: speed=12\\n\n"
     "A: idVendor=0403\\n\nA: idProduct=cb48\\n\nA: manufacturer=NOVINT\\n\n"
     "A: product=FALCON HAPTIC\\n\n"
-    "H: descriptors=120100020000000803044" "8cb000601020301"
+    "H: descriptors=120100020000000803044"
+    "8cb000601020301"
     "09022000010100802d"
     "0904000002ffffff02"
     "07058102400000"

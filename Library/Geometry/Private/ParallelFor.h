@@ -43,8 +43,7 @@ class WorkerLocal
 public:
   explicit WorkerLocal(unsigned numThreads, const T& initial = T{})
     : m_values(resolveThreadCount(numThreads), initial)
-  {
-  }
+  {}
   T& local() { return m_values[currentWorker()]; }
   /// Every thread's value, in thread order, for Reduce.
   std::vector<T>& all() { return m_values; }

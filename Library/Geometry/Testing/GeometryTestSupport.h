@@ -44,7 +44,9 @@ inline std::string str(const TriangleCorners& t)
 class Random
 {
 public:
-  explicit Random(std::uint64_t seed) : m_engine(seed) {}
+  explicit Random(std::uint64_t seed)
+    : m_engine(seed)
+  {}
 
   double uniform(double lower, double upper)
   {
@@ -86,39 +88,47 @@ private:
 };
 
 /// A 3-vector in an extended precision T (long double or Quad), for the oracles only.
-template <class T> struct ExtVec
+template <class T>
+struct ExtVec
 {
   T x{};
   T y{};
   T z{};
 };
 
-template <class T> ExtVec<T> extend(const Vec3& v)
+template <class T>
+ExtVec<T> extend(const Vec3& v)
 {
   return {static_cast<T>(v.x), static_cast<T>(v.y), static_cast<T>(v.z)};
 }
-template <class T> ExtVec<T> operator+(const ExtVec<T>& a, const ExtVec<T>& b)
+template <class T>
+ExtVec<T> operator+(const ExtVec<T>& a, const ExtVec<T>& b)
 {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
-template <class T> ExtVec<T> operator-(const ExtVec<T>& a, const ExtVec<T>& b)
+template <class T>
+ExtVec<T> operator-(const ExtVec<T>& a, const ExtVec<T>& b)
 {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-template <class T> ExtVec<T> operator*(const ExtVec<T>& a, T s)
+template <class T>
+ExtVec<T> operator*(const ExtVec<T>& a, T s)
 {
   return {a.x * s, a.y * s, a.z * s};
 }
-template <class T> T dotExt(const ExtVec<T>& a, const ExtVec<T>& b)
+template <class T>
+T dotExt(const ExtVec<T>& a, const ExtVec<T>& b)
 {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
-template <class T> ExtVec<T> crossExt(const ExtVec<T>& a, const ExtVec<T>& b)
+template <class T>
+ExtVec<T> crossExt(const ExtVec<T>& a, const ExtVec<T>& b)
 {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-template <class T> struct OracleClosest
+template <class T>
+struct OracleClosest
 {
   T squaredDistance{};
   ExtVec<T> point;
@@ -214,7 +224,9 @@ inline double magnitude(std::initializer_list<Vec3> points)
 class FailureBudget
 {
 public:
-  explicit FailureBudget(int allowed = 8) : m_remaining(allowed) {}
+  explicit FailureBudget(int allowed = 8)
+    : m_remaining(allowed)
+  {}
   bool spend() { return m_remaining-- > 0; }
 
 private:
@@ -238,18 +250,12 @@ inline const char* name(TriangleShape shape)
 {
   switch (shape)
   {
-  case TriangleShape::Fat:
-    return "fat";
-  case TriangleShape::Needle:
-    return "needle";
-  case TriangleShape::Cap:
-    return "cap";
-  case TriangleShape::Collinear:
-    return "collinear";
-  case TriangleShape::Coincident:
-    return "coincident";
-  case TriangleShape::SinglePoint:
-    return "single point";
+    case TriangleShape::Fat: return "fat";
+    case TriangleShape::Needle: return "needle";
+    case TriangleShape::Cap: return "cap";
+    case TriangleShape::Collinear: return "collinear";
+    case TriangleShape::Coincident: return "coincident";
+    case TriangleShape::SinglePoint: return "single point";
   }
   return "?";
 }
@@ -278,53 +284,49 @@ inline TriangleCorners makeTriangle(Random& random, TriangleShape shape, double 
   t.b = offset + random.inCube(size);
   switch (shape)
   {
-  case TriangleShape::Fat:
-    t.c = offset + random.inCube(size);
-    break;
-  case TriangleShape::Needle:
-    t.c = t.a + random.direction() * (size / aspect);
-    break;
-  case TriangleShape::Cap:
-  {
-    const Vec3 ab = t.b - t.a;
-    t.c = t.a + ab * random.uniform(0.05, 0.95) + perpendicular(ab, random) * (norm(ab) / aspect);
-    break;
-  }
-  case TriangleShape::Collinear:
-  {
-    // Exactly collinear in double: corners on a grid fine enough for the size and coarse
-    // enough that every sum below is exact, along a direction of small integers.
-    const double grid = std::exp2(
-      std::floor(std::log2(std::fmax(size * 0x1p-20, maxAbsComponent(offset) * 0x1p-45))));
-    const Vec3 base = offset + random.inCube(size);
-    t.a = {std::round(base.x / grid) * grid, std::round(base.y / grid) * grid,
-           std::round(base.z / grid) * grid};
-    Vec3 direction;
-    while (direction == Vec3{})
+    case TriangleShape::Fat: t.c = offset + random.inCube(size); break;
+    case TriangleShape::Needle: t.c = t.a + random.direction() * (size / aspect); break;
+    case TriangleShape::Cap:
     {
-      direction = {double(random.integer(-7, 7)), double(random.integer(-7, 7)),
-                   double(random.integer(-7, 7))};
+      const Vec3 ab = t.b - t.a;
+      t.c = t.a + ab * random.uniform(0.05, 0.95) + perpendicular(ab, random) * (norm(ab) / aspect);
+      break;
     }
-    const Vec3 step = direction * (grid * std::exp2(std::floor(std::log2(size / grid)) - 4));
-    t.b = t.a + step * double(random.integer(-8, 8));
-    t.c = t.a + step * double(random.integer(-8, 8));
-    break;
-  }
-  case TriangleShape::Coincident:
-    if (random.chance(0.5))
+    case TriangleShape::Collinear:
     {
+      // Exactly collinear in double: corners on a grid fine enough for the size and coarse
+      // enough that every sum below is exact, along a direction of small integers.
+      const double grid = std::exp2(
+        std::floor(std::log2(std::fmax(size * 0x1p-20, maxAbsComponent(offset) * 0x1p-45))));
+      const Vec3 base = offset + random.inCube(size);
+      t.a = {std::round(base.x / grid) * grid, std::round(base.y / grid) * grid,
+             std::round(base.z / grid) * grid};
+      Vec3 direction;
+      while (direction == Vec3{})
+      {
+        direction = {double(random.integer(-7, 7)), double(random.integer(-7, 7)),
+                     double(random.integer(-7, 7))};
+      }
+      const Vec3 step = direction * (grid * std::exp2(std::floor(std::log2(size / grid)) - 4));
+      t.b = t.a + step * double(random.integer(-8, 8));
+      t.c = t.a + step * double(random.integer(-8, 8));
+      break;
+    }
+    case TriangleShape::Coincident:
+      if (random.chance(0.5))
+      {
+        t.c = t.a;
+      }
+      else
+      {
+        t.c = offset + random.inCube(size);
+        t.b = t.c;
+      }
+      break;
+    case TriangleShape::SinglePoint:
+      t.b = t.a;
       t.c = t.a;
-    }
-    else
-    {
-      t.c = offset + random.inCube(size);
-      t.b = t.c;
-    }
-    break;
-  case TriangleShape::SinglePoint:
-    t.b = t.a;
-    t.c = t.a;
-    break;
+      break;
   }
   // Rotate the corner order so that no shape always puts its defect on the same corner.
   const int rotation = random.integer(0, 2);

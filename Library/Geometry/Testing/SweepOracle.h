@@ -13,7 +13,8 @@
 namespace proxima::test
 {
 
-template <class T> class SweepOracle
+template <class T>
+class SweepOracle
 {
 public:
   /// Golden-section steps and bisection steps enough to reach T's precision on [0, 1].
@@ -21,8 +22,11 @@ public:
   static constexpr int kBisectionSteps = sizeof(T) > 12 ? 115 : 66;
 
   SweepOracle(const Vec3& start, const Vec3& motion, const TriangleCorners& triangle)
-      : m_start(extend<T>(start)), m_motion(extend<T>(motion)), m_a(extend<T>(triangle.a)),
-        m_b(extend<T>(triangle.b)), m_c(extend<T>(triangle.c))
+    : m_start(extend<T>(start))
+    , m_motion(extend<T>(motion))
+    , m_a(extend<T>(triangle.a))
+    , m_b(extend<T>(triangle.b))
+    , m_c(extend<T>(triangle.c))
   {
     findMinimum();
   }

@@ -114,24 +114,19 @@ std::string checkClosestPoint(const Vec3& p, const TriangleCorners& t, WorstErro
     failures += " weights give " + str(reproduced) + " not the point " + str(r.point) + ";";
   }
   // The feature names the corners that carry weight.
-  const bool featureConsistent = [&]
-  {
+  const bool featureConsistent = [&] {
     switch (r.feature)
     {
-    case TriangleFeature::VertexA:
-      return r.weights[0] == 1.0 && r.weights[1] == 0.0 && r.weights[2] == 0.0;
-    case TriangleFeature::VertexB:
-      return r.weights[1] == 1.0 && r.weights[0] == 0.0 && r.weights[2] == 0.0;
-    case TriangleFeature::VertexC:
-      return r.weights[2] == 1.0 && r.weights[0] == 0.0 && r.weights[1] == 0.0;
-    case TriangleFeature::EdgeAB:
-      return r.weights[2] == 0.0;
-    case TriangleFeature::EdgeBC:
-      return r.weights[0] == 0.0;
-    case TriangleFeature::EdgeCA:
-      return r.weights[1] == 0.0;
-    case TriangleFeature::Face:
-      return true;
+      case TriangleFeature::VertexA:
+        return r.weights[0] == 1.0 && r.weights[1] == 0.0 && r.weights[2] == 0.0;
+      case TriangleFeature::VertexB:
+        return r.weights[1] == 1.0 && r.weights[0] == 0.0 && r.weights[2] == 0.0;
+      case TriangleFeature::VertexC:
+        return r.weights[2] == 1.0 && r.weights[0] == 0.0 && r.weights[1] == 0.0;
+      case TriangleFeature::EdgeAB: return r.weights[2] == 0.0;
+      case TriangleFeature::EdgeBC: return r.weights[0] == 0.0;
+      case TriangleFeature::EdgeCA: return r.weights[1] == 0.0;
+      case TriangleFeature::Face: return true;
     }
     return false;
   }();
@@ -149,31 +144,28 @@ Vec3 makeQueryPoint(Random& random, const TriangleCorners& t, double size)
 {
   switch (random.integer(0, 6))
   {
-  case 0:
-    return pointOnTriangle(random, t);
-  case 1:
-  {
-    const Vec3 corners[3] = {t.a, t.b, t.c};
-    const int i = random.integer(0, 2);
-    return corners[i] + (corners[(i + 1) % 3] - corners[i]) * random.uniform(0.0, 1.0);
-  }
-  case 2:
-  {
-    const Vec3 corners[3] = {t.a, t.b, t.c};
-    return corners[random.integer(0, 2)];
-  }
-  case 3:
-  {
-    // Just off the face (or off whatever direction is handy when the triangle is flat).
-    const Vec3 n = normalizedOrZero(cross(t.b - t.a, t.c - t.a));
-    const Vec3 away = n == Vec3{} ? random.direction() : n;
-    return pointOnTriangle(random, t) +
-           away * (size * random.logUniform(-12.0, 0.0) * (random.chance(0.5) ? 1.0 : -1.0));
-  }
-  case 4:
-    return (t.a + t.b + t.c) * (1.0 / 3.0) + random.direction() * (100.0 * size);
-  default:
-    return (t.a + t.b + t.c) * (1.0 / 3.0) + random.inCube(2.0 * size);
+    case 0: return pointOnTriangle(random, t);
+    case 1:
+    {
+      const Vec3 corners[3] = {t.a, t.b, t.c};
+      const int i = random.integer(0, 2);
+      return corners[i] + (corners[(i + 1) % 3] - corners[i]) * random.uniform(0.0, 1.0);
+    }
+    case 2:
+    {
+      const Vec3 corners[3] = {t.a, t.b, t.c};
+      return corners[random.integer(0, 2)];
+    }
+    case 3:
+    {
+      // Just off the face (or off whatever direction is handy when the triangle is flat).
+      const Vec3 n = normalizedOrZero(cross(t.b - t.a, t.c - t.a));
+      const Vec3 away = n == Vec3{} ? random.direction() : n;
+      return pointOnTriangle(random, t) +
+             away * (size * random.logUniform(-12.0, 0.0) * (random.chance(0.5) ? 1.0 : -1.0));
+    }
+    case 4: return (t.a + t.b + t.c) * (1.0 / 3.0) + random.direction() * (100.0 * size);
+    default: return (t.a + t.b + t.c) * (1.0 / 3.0) + random.inCube(2.0 * size);
   }
 }
 

@@ -46,8 +46,7 @@ using PolytopeDistance =
 /// Exact distance between the convex hulls of two point sets, rounded to double at the end.
 double exactHullDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 {
-  auto toPoints = [](const std::vector<Vec3>& set)
-  {
+  auto toPoints = [](const std::vector<Vec3>& set) {
     std::vector<ExactHomogeneous::Point_3> points;
     for (const Vec3& p : set)
     {
@@ -71,19 +70,12 @@ double exactSimplexDistance(const std::vector<Vec3>& w)
   const Vec3 o{};
   switch (w.size())
   {
-  case 1:
-    return norm(w[0]);
-  case 2:
-    return std::sqrt(exactSquaredDistance(o, w[0], w[1], w[1]));
-  case 3:
-    return std::sqrt(exactSquaredDistance(o, w[0], w[1], w[2]));
-  default:
-    break;
+    case 1: return norm(w[0]);
+    case 2: return std::sqrt(exactSquaredDistance(o, w[0], w[1], w[1]));
+    case 3: return std::sqrt(exactSquaredDistance(o, w[0], w[1], w[2]));
+    default: break;
   }
-  const auto e = [&](int i)
-  {
-    return toExact(w[i]);
-  };
+  const auto e = [&](int i) { return toExact(w[i]); };
   const ExactKernel::Point_3 origin = toExact(o);
   const CGAL::Orientation whole = CGAL::orientation(e(0), e(1), e(2), e(3));
   if (whole != CGAL::COPLANAR)
@@ -91,9 +83,9 @@ double exactSimplexDistance(const std::vector<Vec3>& w)
     const CGAL::Orientation parts[4] = {
       CGAL::orientation(origin, e(1), e(2), e(3)), CGAL::orientation(e(0), origin, e(2), e(3)),
       CGAL::orientation(e(0), e(1), origin, e(3)), CGAL::orientation(e(0), e(1), e(2), origin)};
-    if (std::all_of(std::begin(parts), std::end(parts),
-                    [&](CGAL::Orientation part)
-                    { return part == whole || part == CGAL::COPLANAR; }))
+    if (std::all_of(std::begin(parts), std::end(parts), [&](CGAL::Orientation part) {
+          return part == whole || part == CGAL::COPLANAR;
+        }))
     {
       return 0.0;
     }
@@ -184,8 +176,7 @@ GjkCheck runAndCheck(const std::vector<Vec3>& a, const std::vector<Vec3>& b, Gjk
   std::vector<double> weightsB(b.size(), 0.0);
   accumulateGjkWeights(simplex, weightsA.data(), weightsB.data());
   auto checkWeights = [&](const std::vector<Vec3>& set, const std::vector<double>& weights,
-                          const Vec3& nearest, const char* which)
-  {
+                          const Vec3& nearest, const char* which) {
     double sum = 0.0;
     Vec3 combination{};
     for (std::size_t i = 0; i < set.size(); ++i)
@@ -232,20 +223,16 @@ std::vector<Vec3> makeSet(Random& random, int count, const Vec3& center, double 
   {
     switch (shape)
     {
-    case SetShape::General:
-      set.push_back(center + random.inCube(size));
-      break;
-    case SetShape::Coincident:
-      set.push_back(center);
-      break;
-    case SetShape::Collinear:
-      set.push_back(center + Vec3{1, 2, 3} * (size * 0.125 * random.integer(-8, 8)));
-      break;
-    case SetShape::Coplanar:
-      // The plane z = center.z: coplanar exactly, whatever the rounding of the other axes.
-      set.push_back(Vec3{center.x + random.uniform(-size, size),
-                         center.y + random.uniform(-size, size), center.z});
-      break;
+      case SetShape::General: set.push_back(center + random.inCube(size)); break;
+      case SetShape::Coincident: set.push_back(center); break;
+      case SetShape::Collinear:
+        set.push_back(center + Vec3{1, 2, 3} * (size * 0.125 * random.integer(-8, 8)));
+        break;
+      case SetShape::Coplanar:
+        // The plane z = center.z: coplanar exactly, whatever the rounding of the other axes.
+        set.push_back(Vec3{center.x + random.uniform(-size, size),
+                           center.y + random.uniform(-size, size), center.z});
+        break;
     }
   }
   return set;

@@ -67,7 +67,8 @@ struct FailureTally
 class BruteForce
 {
 public:
-  explicit BruteForce(const TriangleMesh& mesh) : m_mesh(mesh)
+  explicit BruteForce(const TriangleMesh& mesh)
+    : m_mesh(mesh)
   {
     m_boxes.resize(mesh.numTriangles());
     for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
@@ -228,8 +229,7 @@ void compareWithBruteForce(const TriangleMesh& mesh, const SphereTree& tree, Ran
   auto scratch = std::make_unique<SphereTreeScratch>();
   const double edge = std::fmax(medianEdgeLength(mesh), 1e-9 * mesh.diagonal());
   FailureBudget budget(6);
-  auto fail = [&](int query, const std::string& what)
-  {
+  auto fail = [&](int query, const std::string& what) {
     ++tally.counts[what.substr(0, what.find(' '))];
     if (budget.spend())
     {
@@ -364,8 +364,7 @@ void checkInvariants(const TriangleMesh& mesh, const SphereTree& tree,
 {
   FailureBudget budget(6);
   std::string kind = "invariant(structure)";
-  auto fail = [&](const std::string& what)
-  {
+  auto fail = [&](const std::string& what) {
     ++tally.counts[kind];
     if (budget.spend())
     {
@@ -400,8 +399,7 @@ void checkInvariants(const TriangleMesh& mesh, const SphereTree& tree,
   // each node the leaf spheres under it by a post-order accumulation.
   std::vector<std::uint32_t> subtreeEnd(nodes.size(), 0);
   std::function<std::uint32_t(std::uint32_t, std::uint32_t)> visit =
-    [&](std::uint32_t index, std::uint32_t depth) -> std::uint32_t
-  {
+    [&](std::uint32_t index, std::uint32_t depth) -> std::uint32_t {
     deepest = std::max(deepest, depth);
     const SphereTreeNode& node = nodes[index];
     if (node.numLeafSpheres > 0)

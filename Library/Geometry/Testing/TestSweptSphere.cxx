@@ -178,7 +178,8 @@ std::string checkTouching(const SweepResult& k, const SweepOracle<T>& oracle, do
 
 /// Runs the kernel on one case and checks it against the oracle in precision T, following the
 /// documented rule of sweepSphereTriangleWithSkin (which with skin 0 is sweepSphereTriangle).
-template <class T> std::string checkSweep(const SweepCase& c, SweepStats& stats)
+template <class T>
+std::string checkSweep(const SweepCase& c, SweepStats& stats)
 {
   const SweepResult k =
     c.skin > 0.0 ? sweepSphereTriangleWithSkin(c.start, c.motion, c.radius, c.skin, c.triangle)
@@ -234,12 +235,9 @@ Vec3 pointOnFeature(Random& random, const TriangleCorners& t)
   const int i = random.integer(0, 2);
   switch (random.integer(0, 2))
   {
-  case 0:
-    return corners[i];
-  case 1:
-    return corners[i] + (corners[(i + 1) % 3] - corners[i]) * random.uniform(0.0, 1.0);
-  default:
-    return pointOnTriangle(random, t);
+    case 0: return corners[i];
+    case 1: return corners[i] + (corners[(i + 1) % 3] - corners[i]) * random.uniform(0.0, 1.0);
+    default: return pointOnTriangle(random, t);
   }
 }
 
@@ -254,42 +252,42 @@ SweepCase makeSweepCase(Random& random, TriangleShape shape, double size, const 
   const TriangleCorners& t = c.triangle;
   switch (kind)
   {
-  case 0: // anywhere
-  {
-    c.start = (t.a + t.b + t.c) * (1.0 / 3.0) + random.inCube(2.0 * size);
-    c.motion = random.direction() * (size * random.logUniform(-2.0, 0.7));
-    break;
-  }
-  case 1: // aimed so that the path passes about one radius from a feature
-  {
-    const Vec3 target = pointOnFeature(random, t);
-    const Vec3 direction = random.direction();
-    const Vec3 aim =
-      target + perpendicular(direction, random) * (c.radius * random.uniform(0.0, 1.2));
-    const double length = size * random.logUniform(-2.0, 0.5);
-    c.start = aim - direction * (length * random.uniform(0.05, 1.2));
-    c.motion = direction * length;
-    break;
-  }
-  case 2: // grazing: a line tangent to the sphere about a feature point, to within 1e-9
-  {
-    const Vec3 target = pointOnFeature(random, t);
-    const Vec3 direction = random.direction();
-    const double offBy = random.chance(0.5) ? 0.0 : random.uniform(-1e-9, 1e-9);
-    const Vec3 aim = target + perpendicular(direction, random) * (c.radius * (1.0 + offBy));
-    const double length = size * random.logUniform(-2.0, 0.5);
-    c.start = aim - direction * (length * random.uniform(0.05, 1.2));
-    c.motion = direction * length;
-    break;
-  }
-  default: // starting within or on the radius, moving any way
-  {
-    const Vec3 target = pointOnFeature(random, t);
-    const double depth = random.chance(0.3) ? 1.0 : random.uniform(0.0, 1.0);
-    c.start = target + random.direction() * (c.radius * depth);
-    c.motion = random.direction() * (size * random.logUniform(-2.0, 0.5));
-    break;
-  }
+    case 0: // anywhere
+    {
+      c.start = (t.a + t.b + t.c) * (1.0 / 3.0) + random.inCube(2.0 * size);
+      c.motion = random.direction() * (size * random.logUniform(-2.0, 0.7));
+      break;
+    }
+    case 1: // aimed so that the path passes about one radius from a feature
+    {
+      const Vec3 target = pointOnFeature(random, t);
+      const Vec3 direction = random.direction();
+      const Vec3 aim =
+        target + perpendicular(direction, random) * (c.radius * random.uniform(0.0, 1.2));
+      const double length = size * random.logUniform(-2.0, 0.5);
+      c.start = aim - direction * (length * random.uniform(0.05, 1.2));
+      c.motion = direction * length;
+      break;
+    }
+    case 2: // grazing: a line tangent to the sphere about a feature point, to within 1e-9
+    {
+      const Vec3 target = pointOnFeature(random, t);
+      const Vec3 direction = random.direction();
+      const double offBy = random.chance(0.5) ? 0.0 : random.uniform(-1e-9, 1e-9);
+      const Vec3 aim = target + perpendicular(direction, random) * (c.radius * (1.0 + offBy));
+      const double length = size * random.logUniform(-2.0, 0.5);
+      c.start = aim - direction * (length * random.uniform(0.05, 1.2));
+      c.motion = direction * length;
+      break;
+    }
+    default: // starting within or on the radius, moving any way
+    {
+      const Vec3 target = pointOnFeature(random, t);
+      const double depth = random.chance(0.3) ? 1.0 : random.uniform(0.0, 1.0);
+      c.start = target + random.direction() * (c.radius * depth);
+      c.motion = random.direction() * (size * random.logUniform(-2.0, 0.5));
+      break;
+    }
   }
   return c;
 }

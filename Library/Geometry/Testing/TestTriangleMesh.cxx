@@ -64,53 +64,53 @@ TEST(TriangleMesh, RefusesEachDefectNamingWhereItIs)
     std::string expectedText;
     switch (defect)
     {
-    case 0:
-      soup.points[where][random.integer(0, 2)] = random.chance(0.5) ? nan : -inf;
-      expectedKind = MeshError::Kind::NonFiniteCoordinate;
-      expectedText = "point " + std::to_string(where);
-      break;
-    case 1:
-    {
-      const auto bad = numPoints + static_cast<std::uint32_t>(random.integer(0, 5));
-      soup.triangles[whichTriangle][random.integer(0, 2)] =
-        random.chance(0.2) ? std::numeric_limits<std::uint32_t>::max() : bad;
-      expectedKind = MeshError::Kind::IndexOutOfRange;
-      expectedText = "triangle " + std::to_string(whichTriangle);
-      break;
-    }
-    case 2:
-      soup.triangles.clear();
-      expectedKind = MeshError::Kind::NoTriangles;
-      expectedText = "no triangles";
-      break;
-    case 3:
-      soup.points[where].x = inf;
-      expectedKind = MeshError::Kind::NonFiniteCoordinate;
-      expectedText = "point " + std::to_string(where);
-      break;
-    case 4:
-      soup.pointNormals.pop_back();
-      expectedKind = MeshError::Kind::AttributeSizeMismatch;
-      expectedText = std::to_string(numPoints - 1);
-      break;
-    case 5:
-      soup.texCoords.push_back({0, 0});
-      expectedKind = MeshError::Kind::AttributeSizeMismatch;
-      expectedText = std::to_string(numPoints + 1);
-      break;
-    default:
-      if (random.chance(0.5))
+      case 0:
+        soup.points[where][random.integer(0, 2)] = random.chance(0.5) ? nan : -inf;
+        expectedKind = MeshError::Kind::NonFiniteCoordinate;
+        expectedText = "point " + std::to_string(where);
+        break;
+      case 1:
       {
-        soup.pointNormals[where].z = nan;
-        expectedText = "normal " + std::to_string(where);
+        const auto bad = numPoints + static_cast<std::uint32_t>(random.integer(0, 5));
+        soup.triangles[whichTriangle][random.integer(0, 2)] =
+          random.chance(0.2) ? std::numeric_limits<std::uint32_t>::max() : bad;
+        expectedKind = MeshError::Kind::IndexOutOfRange;
+        expectedText = "triangle " + std::to_string(whichTriangle);
+        break;
       }
-      else
-      {
-        soup.texCoords[where].v = inf;
-        expectedText = "coordinate " + std::to_string(where);
-      }
-      expectedKind = MeshError::Kind::NonFiniteAttribute;
-      break;
+      case 2:
+        soup.triangles.clear();
+        expectedKind = MeshError::Kind::NoTriangles;
+        expectedText = "no triangles";
+        break;
+      case 3:
+        soup.points[where].x = inf;
+        expectedKind = MeshError::Kind::NonFiniteCoordinate;
+        expectedText = "point " + std::to_string(where);
+        break;
+      case 4:
+        soup.pointNormals.pop_back();
+        expectedKind = MeshError::Kind::AttributeSizeMismatch;
+        expectedText = std::to_string(numPoints - 1);
+        break;
+      case 5:
+        soup.texCoords.push_back({0, 0});
+        expectedKind = MeshError::Kind::AttributeSizeMismatch;
+        expectedText = std::to_string(numPoints + 1);
+        break;
+      default:
+        if (random.chance(0.5))
+        {
+          soup.pointNormals[where].z = nan;
+          expectedText = "normal " + std::to_string(where);
+        }
+        else
+        {
+          soup.texCoords[where].v = inf;
+          expectedText = "coordinate " + std::to_string(where);
+        }
+        expectedKind = MeshError::Kind::NonFiniteAttribute;
+        break;
     }
     TriangleMesh mesh;
     MeshError error;

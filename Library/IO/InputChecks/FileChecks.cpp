@@ -59,8 +59,8 @@ std::string readFileHead(const std::string& path, std::size_t count)
 std::string trimmedHead(const std::string& head)
 {
   std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
-  while (start < head.size() && (head[start] == ' ' || head[start] == '\t' ||
-                                 head[start] == '\r' || head[start] == '\n'))
+  while (start < head.size() &&
+         (head[start] == ' ' || head[start] == '\t' || head[start] == '\r' || head[start] == '\n'))
   {
     ++start;
   }

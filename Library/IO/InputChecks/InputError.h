@@ -13,9 +13,10 @@ class InputError : public std::runtime_error
 {
 public:
   InputError(const std::string& path, const std::string& defect)
-    : std::runtime_error(path + ": " + oneLine(defect)), m_path(path), m_defect(oneLine(defect))
-  {
-  }
+    : std::runtime_error(path + ": " + oneLine(defect))
+    , m_path(path)
+    , m_defect(oneLine(defect))
+  {}
 
   /// The file as the caller named it.
   const std::string& path() const { return m_path; }

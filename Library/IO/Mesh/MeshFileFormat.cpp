@@ -48,18 +48,12 @@ const char* meshFileFormatName(MeshFileFormat format)
 {
   switch (format)
   {
-  case MeshFileFormat::Stl:
-    return "stl";
-  case MeshFileFormat::Obj:
-    return "obj";
-  case MeshFileFormat::Ply:
-    return "ply";
-  case MeshFileFormat::Vtp:
-    return "vtp";
-  case MeshFileFormat::Gltf:
-    return "gltf";
-  case MeshFileFormat::Off:
-    return "off";
+    case MeshFileFormat::Stl: return "stl";
+    case MeshFileFormat::Obj: return "obj";
+    case MeshFileFormat::Ply: return "ply";
+    case MeshFileFormat::Vtp: return "vtp";
+    case MeshFileFormat::Gltf: return "gltf";
+    case MeshFileFormat::Off: return "off";
   }
   return "unknown";
 }

@@ -44,31 +44,23 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
   vtkSmartPointer<vtkPolyData> data;
   switch (*format)
   {
-  case MeshFileFormat::Off:
-    data = detail::readOffWithOpenMesh(path);
-    break;
-  case MeshFileFormat::Ply:
-    data = detail::readPly(path, fileSize);
-    break;
-  case MeshFileFormat::Obj:
-    data = detail::readObj(path);
-    break;
-  case MeshFileFormat::Vtp:
-    // vtkXMLPolyDataReader leaks its points on a Points array without three components.
-    detail::checkVtpPoints(path);
-    data = detail::readWithVtk(path, *format);
-    break;
-  case MeshFileFormat::Gltf:
-  {
-    // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first,
-    // and then VTK reads the checked document's geometry, not the file itself.
-    const detail::GltfGeometryFile geometry = detail::checkGltfAndCopyGeometry(path, fileSize);
-    data = detail::readGltfWithVtk(geometry.path(), path);
-    break;
-  }
-  default:
-    data = detail::readWithVtk(path, *format);
-    break;
+    case MeshFileFormat::Off: data = detail::readOffWithOpenMesh(path); break;
+    case MeshFileFormat::Ply: data = detail::readPly(path, fileSize); break;
+    case MeshFileFormat::Obj: data = detail::readObj(path); break;
+    case MeshFileFormat::Vtp:
+      // vtkXMLPolyDataReader leaks its points on a Points array without three components.
+      detail::checkVtpPoints(path);
+      data = detail::readWithVtk(path, *format);
+      break;
+    case MeshFileFormat::Gltf:
+    {
+      // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first,
+      // and then VTK reads the checked document's geometry, not the file itself.
+      const detail::GltfGeometryFile geometry = detail::checkGltfAndCopyGeometry(path, fileSize);
+      data = detail::readGltfWithVtk(geometry.path(), path);
+      break;
+    }
+    default: data = detail::readWithVtk(path, *format); break;
   }
   return polyDataToSoup(data, path, scale);
 }

@@ -124,36 +124,35 @@ void writeMeshFile(const std::string& path, const TriangleSoup& soup)
   vtkSmartPointer<vtkPolyData> data = toPolyData(soup);
   switch (*format)
   {
-  case MeshFileFormat::Obj:
-  {
-    vtkNew<vtkOBJWriter> writer;
-    runWriter(writer.Get(), data, path);
-    return;
-  }
-  case MeshFileFormat::Stl:
-  {
-    vtkNew<vtkSTLWriter> writer;
-    writer->SetFileTypeToBinary();
-    runWriter(writer.Get(), data, path);
-    return;
-  }
-  case MeshFileFormat::Ply:
-  {
-    vtkNew<vtkPLYWriter> writer;
-    writer->SetFileTypeToBinary();
-    runWriter(writer.Get(), data, path);
-    return;
-  }
-  case MeshFileFormat::Vtp:
-  {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetDataModeToBinary();
-    runWriter(writer.Get(), data, path);
-    return;
-  }
-  case MeshFileFormat::Gltf:
-  case MeshFileFormat::Off:
-    break;
+    case MeshFileFormat::Obj:
+    {
+      vtkNew<vtkOBJWriter> writer;
+      runWriter(writer.Get(), data, path);
+      return;
+    }
+    case MeshFileFormat::Stl:
+    {
+      vtkNew<vtkSTLWriter> writer;
+      writer->SetFileTypeToBinary();
+      runWriter(writer.Get(), data, path);
+      return;
+    }
+    case MeshFileFormat::Ply:
+    {
+      vtkNew<vtkPLYWriter> writer;
+      writer->SetFileTypeToBinary();
+      runWriter(writer.Get(), data, path);
+      return;
+    }
+    case MeshFileFormat::Vtp:
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetDataModeToBinary();
+      runWriter(writer.Get(), data, path);
+      return;
+    }
+    case MeshFileFormat::Gltf:
+    case MeshFileFormat::Off: break;
   }
 }
 

@@ -179,7 +179,8 @@ TriangleSoup polyDataToSoup(vtkPolyData* data, const std::string& path, double s
     it->GetCurrentCell(size, ids);
     if (size == 3)
     {
-      soup.triangles.push_back({static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]),
+      soup.triangles.push_back({static_cast<std::uint32_t>(ids[0]),
+                                static_cast<std::uint32_t>(ids[1]),
                                 static_cast<std::uint32_t>(ids[2])});
     }
   }

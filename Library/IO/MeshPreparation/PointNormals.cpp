@@ -66,9 +66,9 @@ void validate(const TriangleSoup& soup, double featureAngleDegrees)
   }
   if (!soup.texCoords.empty() && soup.texCoords.size() != soup.points.size())
   {
-    throw std::invalid_argument("withFeatureAngleNormals: " + std::to_string(soup.texCoords.size()) +
-                                " texture coordinates for " + std::to_string(soup.points.size()) +
-                                " points");
+    throw std::invalid_argument(
+      "withFeatureAngleNormals: " + std::to_string(soup.texCoords.size()) +
+      " texture coordinates for " + std::to_string(soup.points.size()) + " points");
   }
 }
 
@@ -88,7 +88,9 @@ struct PointTriangles
 class QuietOpenMeshErrors
 {
 public:
-  QuietOpenMeshErrors() : m_lock(mutex()), m_wasEnabled(::omerr().is_enabled())
+  QuietOpenMeshErrors()
+    : m_lock(mutex())
+    , m_wasEnabled(::omerr().is_enabled())
   {
     ::omerr().disable();
   }
@@ -241,7 +243,8 @@ TriangleSoup withFeatureAngleNormals(const TriangleSoup& soup, double featureAng
   for (std::size_t t = 0; t < numTriangles; ++t)
   {
     const auto& triangle = soup.triangles[t];
-    const Vec3 p[3] = {soup.points[triangle[0]], soup.points[triangle[1]], soup.points[triangle[2]]};
+    const Vec3 p[3] = {soup.points[triangle[0]], soup.points[triangle[1]],
+                       soup.points[triangle[2]]};
     const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
     if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
     {

@@ -10,7 +10,8 @@
 namespace proxima
 {
 
-TraceWriter::TraceWriter(const std::string& path) : m_path(path)
+TraceWriter::TraceWriter(const std::string& path)
+  : m_path(path)
 {
   m_file = std::fopen(path.c_str(), "w");
   if (m_file == nullptr)
@@ -37,10 +38,10 @@ void TraceWriter::write(const HapticState& r)
   std::fprintf(m_file,
                "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%lld,"
                "%d,%u\n",
-               static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y,
-               r.finger.z, r.proxy.x, r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z,
-               r.numContacts, r.iterations, static_cast<long long>(r.solveNanoseconds),
-               r.contactObject, static_cast<unsigned>(tickFlags(r)));
+               static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y, r.finger.z,
+               r.proxy.x, r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z, r.numContacts,
+               r.iterations, static_cast<long long>(r.solveNanoseconds), r.contactObject,
+               static_cast<unsigned>(tickFlags(r)));
 }
 
 void TraceWriter::close()

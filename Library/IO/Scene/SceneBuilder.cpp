@@ -43,12 +43,9 @@ const char* normalsSourceName(NormalsSource source)
 {
   switch (source)
   {
-  case NormalsSource::None:
-    return "none";
-  case NormalsSource::File:
-    return "file";
-  case NormalsSource::Computed:
-    return "computed";
+    case NormalsSource::None: return "none";
+    case NormalsSource::File: return "file";
+    case NormalsSource::Computed: return "computed";
   }
   return "none";
 }
@@ -102,8 +99,8 @@ LoadedScene buildScene(const SceneDescription& description, const SphereTreeOpti
     material.viscosity = object.material.viscosity;
     for (const SceneTexture& texture : object.material.textures)
     {
-      material.textures.push_back(TextureMap{imageFor(texture, images), texture.role,
-                                             texture.amplitude});
+      material.textures.push_back(
+        TextureMap{imageFor(texture, images), texture.role, texture.amplitude});
     }
     info.shaded = material.shading;
 

@@ -70,39 +70,39 @@ std::string readWholeFile(const std::string& path)
 class RepeatedKeyCheck
 {
 public:
-  explicit RepeatedKeyCheck(const std::string& path) : m_path(path) {}
+  explicit RepeatedKeyCheck(const std::string& path)
+    : m_path(path)
+  {}
 
   bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed)
   {
     using Event = Json::parse_event_t;
     switch (event)
     {
-    case Event::object_start:
-    case Event::array_start:
-    case Event::value:
-      if (!m_frames.empty() && m_frames.back().array)
+      case Event::object_start:
+      case Event::array_start:
+      case Event::value:
+        if (!m_frames.empty() && m_frames.back().array)
+        {
+          ++m_frames.back().index;
+        }
+        if (event != Event::value)
+        {
+          m_frames.push_back(Frame{event == Event::array_start, -1, {}, {}});
+        }
+        break;
+      case Event::key:
       {
-        ++m_frames.back().index;
+        Frame& frame = m_frames.back();
+        frame.key = parsed.get<std::string>();
+        if (!frame.keys.insert(frame.key).second)
+        {
+          throw InputError(m_path, location() + ": the key appears twice in the same object");
+        }
+        break;
       }
-      if (event != Event::value)
-      {
-        m_frames.push_back(Frame{event == Event::array_start, -1, {}, {}});
-      }
-      break;
-    case Event::key:
-    {
-      Frame& frame = m_frames.back();
-      frame.key = parsed.get<std::string>();
-      if (!frame.keys.insert(frame.key).second)
-      {
-        throw InputError(m_path, location() + ": the key appears twice in the same object");
-      }
-      break;
-    }
-    case Event::object_end:
-    case Event::array_end:
-      m_frames.pop_back();
-      break;
+      case Event::object_end:
+      case Event::array_end: m_frames.pop_back(); break;
     }
     return true;
   }
@@ -252,9 +252,9 @@ class SceneReader
 {
 public:
   explicit SceneReader(const std::string& path)
-    : m_path(path), m_folder(fs::path(path).parent_path())
-  {
-  }
+    : m_path(path)
+    , m_folder(fs::path(path).parent_path())
+  {}
 
   SceneDescription read(const Json& root)
   {
@@ -322,9 +322,9 @@ private:
         }
         list += (list.empty() ? "" : ", ") + std::string(candidate);
       }
-      fail(child(where, cutShort(key, 40)), nearest.empty()
-                                ? "unknown key (the keys here are " + list + ")"
-                                : "unknown key (did you mean \"" + std::string(nearest) + "\"?)");
+      fail(child(where, cutShort(key, 40)),
+           nearest.empty() ? "unknown key (the keys here are " + list + ")"
+                           : "unknown key (did you mean \"" + std::string(nearest) + "\"?)");
     }
   }
 
@@ -425,8 +425,8 @@ private:
     object.mesh = filePath(require(value, "mesh", where), child(where, "mesh"));
     if (const Json* scale = find(value, "scale"))
     {
-      object.scale = number(*scale, child(where, "scale"), "a number > 0",
-                            [](double v) { return v > 0.0; });
+      object.scale =
+        number(*scale, child(where, "scale"), "a number > 0", [](double v) { return v > 0.0; });
     }
     if (const Json* pose = find(value, "pose"))
     {
@@ -487,8 +487,8 @@ private:
     if (!(std::abs(length - 1.0) <= kQuaternionNormTolerance))
     {
       std::ostringstream defect;
-      defect << "must be a unit quaternion [w, x, y, z] (norm within "
-             << kQuaternionNormTolerance << " of 1), got norm " << length;
+      defect << "must be a unit quaternion [w, x, y, z] (norm within " << kQuaternionNormTolerance
+             << " of 1), got norm " << length;
       fail(at, defect.str());
     }
     return UnitQuaternion::normalized(q[0], q[1], q[2], q[3]);
@@ -548,9 +548,8 @@ private:
     texture.image = filePath(require(value, "image", where), child(where, "image"));
     constexpr TextureRole kRoles[] = {TextureRole::Bump, TextureRole::Friction,
                                       TextureRole::Viscosity, TextureRole::Stiffness};
-    texture.role =
-      kRoles[choice(require(value, "role", where), child(where, "role"),
-                    {"bump", "friction", "viscosity", "stiffness"})];
+    texture.role = kRoles[choice(require(value, "role", where), child(where, "role"),
+                                 {"bump", "friction", "viscosity", "stiffness"})];
     const Json* amplitude = find(value, "amplitude");
     if (texture.role == TextureRole::Bump)
     {
@@ -559,15 +558,16 @@ private:
         fail(where, "missing the required key \"amplitude\" (metres of height per unit of image "
                     "value, for a bump map)");
       }
-      texture.amplitude = number(*amplitude, child(where, "amplitude"),
-                                 "a number other than 0 (metres)",
-                                 [](double v) { return v != 0.0; });
+      texture.amplitude =
+        number(*amplitude, child(where, "amplitude"), "a number other than 0 (metres)",
+               [](double v) { return v != 0.0; });
     }
     else if (amplitude != nullptr)
     {
-      const std::string role = texture.role == TextureRole::Friction
-                                 ? "friction"
-                                 : (texture.role == TextureRole::Viscosity ? "viscosity" : "stiffness");
+      const std::string role =
+        texture.role == TextureRole::Friction
+          ? "friction"
+          : (texture.role == TextureRole::Viscosity ? "viscosity" : "stiffness");
       fail(child(where, "amplitude"),
            "is for bump maps only: a " + role +
              " map scales the material's coefficient by the image value");

@@ -33,8 +33,8 @@ struct ScenePose
 
   bool isIdentity() const
   {
-    return translation == Vec3{} && rotation.w == 1.0 && rotation.x == 0.0 &&
-           rotation.y == 0.0 && rotation.z == 0.0;
+    return translation == Vec3{} && rotation.w == 1.0 && rotation.x == 0.0 && rotation.y == 0.0 &&
+           rotation.z == 0.0;
   }
 };
 

@@ -7,11 +7,11 @@ const char* textureChannelName(TextureChannel channel)
 {
   switch (channel)
   {
-  case TextureChannel::Luminance: return "luminance";
-  case TextureChannel::Red: return "red";
-  case TextureChannel::Green: return "green";
-  case TextureChannel::Blue: return "blue";
-  case TextureChannel::Alpha: return "alpha";
+    case TextureChannel::Luminance: return "luminance";
+    case TextureChannel::Red: return "red";
+    case TextureChannel::Green: return "green";
+    case TextureChannel::Blue: return "blue";
+    case TextureChannel::Alpha: return "alpha";
   }
   return "unknown";
 }

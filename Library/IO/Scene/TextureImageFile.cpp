@@ -140,53 +140,53 @@ ChannelPlan planChannels(const std::string& path, const OIIO::ImageSpec& spec,
   ChannelPlan plan;
   switch (channel)
   {
-  case TextureChannel::Luminance:
-    if (grey)
+    case TextureChannel::Luminance:
+      if (grey)
+      {
+        plan.indices[0] = colour[0];
+        plan.weights[0] = 1.0;
+        plan.count = 1;
+      }
+      else if (rgb)
+      {
+        // Rec. 709 (and sRGB) luminance weights, applied to the stored values as they are.
+        const double weights[3] = {0.2126, 0.7152, 0.0722};
+        for (int k = 0; k < 3; ++k)
+        {
+          plan.indices[k] = colour[k];
+          plan.weights[k] = weights[k];
+        }
+        plan.count = 3;
+      }
+      else
+      {
+        refuse("single grey channel and no red, green and blue channels");
+      }
+      break;
+    case TextureChannel::Red:
+    case TextureChannel::Green:
+    case TextureChannel::Blue:
     {
-      plan.indices[0] = colour[0];
+      // By name where the image names it (an EXR of R and G only), else by position in RGB.
+      const int k = channel == TextureChannel::Red ? 0 : channel == TextureChannel::Green ? 1 : 2;
+      plan.indices[0] = named[k] >= 0 ? named[k] : rgb ? colour[std::size_t(k)] : -1;
+      if (plan.indices[0] < 0)
+      {
+        refuse(std::string(textureChannelName(channel)) + " channel");
+      }
       plan.weights[0] = 1.0;
       plan.count = 1;
+      break;
     }
-    else if (rgb)
-    {
-      // Rec. 709 (and sRGB) luminance weights, applied to the stored values as they are.
-      const double weights[3] = {0.2126, 0.7152, 0.0722};
-      for (int k = 0; k < 3; ++k)
+    case TextureChannel::Alpha:
+      if (alpha < 0)
       {
-        plan.indices[k] = colour[k];
-        plan.weights[k] = weights[k];
+        refuse("alpha channel");
       }
-      plan.count = 3;
-    }
-    else
-    {
-      refuse("single grey channel and no red, green and blue channels");
-    }
-    break;
-  case TextureChannel::Red:
-  case TextureChannel::Green:
-  case TextureChannel::Blue:
-  {
-    // By name where the image names it (an EXR of R and G only), else by position in RGB.
-    const int k = channel == TextureChannel::Red ? 0 : channel == TextureChannel::Green ? 1 : 2;
-    plan.indices[0] = named[k] >= 0 ? named[k] : rgb ? colour[std::size_t(k)] : -1;
-    if (plan.indices[0] < 0)
-    {
-      refuse(std::string(textureChannelName(channel)) + " channel");
-    }
-    plan.weights[0] = 1.0;
-    plan.count = 1;
-    break;
-  }
-  case TextureChannel::Alpha:
-    if (alpha < 0)
-    {
-      refuse("alpha channel");
-    }
-    plan.indices[0] = alpha;
-    plan.weights[0] = 1.0;
-    plan.count = 1;
-    break;
+      plan.indices[0] = alpha;
+      plan.weights[0] = 1.0;
+      plan.count = 1;
+      break;
   }
   return plan;
 }

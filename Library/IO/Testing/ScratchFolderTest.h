@@ -16,7 +16,9 @@ class ScratchFolderTest : public testing::Test
 {
 protected:
   /// `prefix` starts the folder's name, e.g. "proxima-io-".
-  explicit ScratchFolderTest(std::string prefix) : m_prefix(std::move(prefix)) {}
+  explicit ScratchFolderTest(std::string prefix)
+    : m_prefix(std::move(prefix))
+  {}
 
   void SetUp() override
   {

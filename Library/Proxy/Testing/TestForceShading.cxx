@@ -127,8 +127,8 @@ void print(const char* name, const CircleRun& run)
   std::cout << "[figure6] " << name << ": mean error " << run.meanErrorDegrees << " deg, max "
             << run.maxErrorDegrees << " deg, largest jump between ticks " << run.maxJumpDegrees
             << " deg, " << run.contactTicks << " contact ticks, min clearance " << run.minClearance
-            << " m, work on the finger over the turn " << run.loopWork
-            << " J (mean spring energy " << run.meanSpringEnergy << " J)\n";
+            << " m, work on the finger over the turn " << run.loopWork << " J (mean spring energy "
+            << run.meanSpringEnergy << " J)\n";
 }
 
 TEST(ForceShadingFigure6, ShadedForceFollowsTheRoundCylinder)
@@ -213,9 +213,10 @@ TEST(ForceShadingCrevasse, TwoShadedCylindersHoldTheProxyInTheirCrevasse)
     worstOffset = std::max(worstOffset, distance(r.proxy, expected));
     twoContacts += r.numContacts == 2 ? 1 : 0;
   }
-  std::cout << "[crevasse] worst force direction error " << worstAngle << " deg, worst proxy offset "
-            << worstOffset << " m from the round cylinders' crevasse, two contacts on "
-            << twoContacts << " of " << ticks << " ticks\n";
+  std::cout << "[crevasse] worst force direction error " << worstAngle
+            << " deg, worst proxy offset " << worstOffset
+            << " m from the round cylinders' crevasse, two contacts on " << twoContacts << " of "
+            << ticks << " ticks\n";
   // A 64-gon of radius 2 cm lies within 24 um of its circle: the proxy within that of p*, and
   // the force within a degree of the round case.
   EXPECT_LT(worstOffset, 5e-5);

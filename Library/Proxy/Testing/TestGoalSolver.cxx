@@ -45,11 +45,11 @@ struct Worst
   int cases = 0;
   void print(const std::string& name) const
   {
-    std::cout << "[goal] " << name << ": " << cases << " cases, worst |x - x*|/|v| "
-              << displacement << ", worst infeasibility/|v| " << infeasibility
-              << ", worst force residual " << force << ", worst active-plane slack/|v| " << slack
-              << ", worst sum(mu)/|v| " << depthRatio << " (conditioning up to " << conditioning
-              << "), exact fallbacks " << fallbacks << "\n";
+    std::cout << "[goal] " << name << ": " << cases << " cases, worst |x - x*|/|v| " << displacement
+              << ", worst infeasibility/|v| " << infeasibility << ", worst force residual " << force
+              << ", worst active-plane slack/|v| " << slack << ", worst sum(mu)/|v| " << depthRatio
+              << " (conditioning up to " << conditioning << "), exact fallbacks " << fallbacks
+              << "\n";
     testing::Test::RecordProperty(name + "_worst_displacement", oracle::str(displacement));
   }
 };
@@ -154,10 +154,11 @@ bool checkGoal(const Vec3& v, const std::vector<Vec3>& normals, Worst& worst,
   }
   else if (solution.numActive == 3)
   {
-    conditioning = 1.0 / std::max(std::fabs(dot(normals[solution.active[0]],
-                                                 cross(normals[solution.active[1]],
-                                                       normals[solution.active[2]]))),
-                                  1e-300);
+    conditioning =
+      1.0 /
+      std::max(std::fabs(dot(normals[solution.active[0]],
+                             cross(normals[solution.active[1]], normals[solution.active[2]]))),
+               1e-300);
   }
   worst.conditioning = std::max(worst.conditioning, conditioning);
   worst.depthRatio = std::max(worst.depthRatio, sumDepth / scale);
@@ -166,8 +167,8 @@ bool checkGoal(const Vec3& v, const std::vector<Vec3>& normals, Worst& worst,
   if (forceError > kRelative)
   {
     ADD_FAILURE() << "forces do not reproduce finger - goal: |v - x + sum mu n| = "
-                  << norm(residual) << " (numActive " << solution.numActive << ", x = "
-                  << oracle::str(x) << ", x* = " << oracle::str(exact) << ") for "
+                  << norm(residual) << " (numActive " << solution.numActive
+                  << ", x = " << oracle::str(x) << ", x* = " << oracle::str(exact) << ") for "
                   << describe(v, normals);
     ok = false;
   }
@@ -364,13 +365,14 @@ TEST(GoalSolver, FingerAboveSomePlanes)
     for (int i = 0; i < below; ++i)
     {
       // u . n < 0: between 95 and 175 degrees from the finger direction.
-      normals.push_back(tilted(u, (95.0 + 80.0 * uniform(engine)) * kPi / 180.0,
-                               2 * kPi * uniform(engine)));
+      normals.push_back(
+        tilted(u, (95.0 + 80.0 * uniform(engine)) * kPi / 180.0, 2 * kPi * uniform(engine)));
     }
     for (int i = 0; i < above; ++i)
     {
       // u . n >= 0: between 10 and 90 degrees, the last exactly 90 (the finger in the plane).
-      const double degrees = i + 1 == above && trial % 5 == 0 ? 90.0 : 10.0 + 80.0 * uniform(engine);
+      const double degrees =
+        i + 1 == above && trial % 5 == 0 ? 90.0 : 10.0 + 80.0 * uniform(engine);
       normals.push_back(tilted(u, degrees * kPi / 180.0, 2 * kPi * uniform(engine)));
     }
     std::shuffle(normals.begin(), normals.end(), engine);

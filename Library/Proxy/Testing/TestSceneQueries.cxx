@@ -110,8 +110,7 @@ const std::vector<NamedScene>& scenes()
       made.push_back(NamedScene{name, std::move(scene), radius});
     };
     add("icosphere", {makeIcosphere(3, 0.05)}, 0.004);
-    add("box-and-grid", {makeBox({0.02, 0.02, 0.01}, {0.0, 0.0, 0.012}), makeGrid(0.1, 40)},
-        0.003);
+    add("box-and-grid", {makeBox({0.02, 0.02, 0.01}, {0.0, 0.0, 0.012}), makeGrid(0.1, 40)}, 0.003);
     add("doubled-icosphere", {doubled(makeIcosphere(2, 0.05))}, 0.005);
     add("two-identical-objects", {makeIcosphere(2, 0.05), makeIcosphere(2, 0.05)}, 0.005);
     const std::string folder = PROXIMA_SHARED_MESHES;
@@ -155,7 +154,8 @@ const std::vector<NamedScene>& scenes()
 class BruteForce
 {
 public:
-  explicit BruteForce(const CollisionScene& scene) : m_scene(scene)
+  explicit BruteForce(const CollisionScene& scene)
+    : m_scene(scene)
   {
     for (const CollisionObject& object : scene.objects)
     {
@@ -281,9 +281,9 @@ class TreeQueries
 {
 public:
   explicit TreeQueries(const CollisionScene& scene)
-    : m_scene(scene), m_scratch(std::make_unique<SphereTreeScratch>())
-  {
-  }
+    : m_scene(scene)
+    , m_scratch(std::make_unique<SphereTreeScratch>())
+  {}
 
   bool firstContact(const SweepQuery& q, SceneContact& out)
   {
@@ -308,8 +308,8 @@ public:
     {
       const CollisionObject& object = m_scene.objects[o];
       NearbyTriangle buffer[CandidateCache::kCapacity];
-      const std::uint32_t found = object.tree.gatherWithin(
-        object.mesh, p, maxDistance, buffer, CandidateCache::kCapacity, *m_scratch);
+      const std::uint32_t found = object.tree.gatherWithin(object.mesh, p, maxDistance, buffer,
+                                                           CandidateCache::kCapacity, *m_scratch);
       EXPECT_LE(found, CandidateCache::kCapacity);
       for (std::uint32_t i = 0; i < std::min<std::uint32_t>(found, CandidateCache::kCapacity); ++i)
       {
@@ -347,8 +347,7 @@ public:
     : m_scene(scene)
     , m_scratch(std::make_unique<SphereTreeScratch>())
     , m_cache(std::make_unique<CandidateCache>())
-  {
-  }
+  {}
 
   bool firstContact(const SweepQuery& q, SceneContact& out)
   {
@@ -434,9 +433,10 @@ class QueryPoints
 {
 public:
   QueryPoints(const CollisionScene& scene, double radius, unsigned seed)
-    : m_scene(scene), m_radius(radius), m_random(seed)
-  {
-  }
+    : m_scene(scene)
+    , m_radius(radius)
+    , m_random(seed)
+  {}
 
   Vec3 point()
   {
@@ -477,15 +477,14 @@ constexpr int kQueriesPerScene = 300;
 
 std::string describe(const SceneContact& c)
 {
-  return c.hit ? "t " + std::to_string(c.t) + " object " + std::to_string(c.object) +
-                   " triangle " + std::to_string(c.triangle)
+  return c.hit ? "t " + std::to_string(c.t) + " object " + std::to_string(c.object) + " triangle " +
+                   std::to_string(c.triangle)
                : "no hit";
 }
 
 template <typename Queries>
 class SceneQueries : public ::testing::Test
-{
-};
+{};
 
 class ImplementationNames
 {
@@ -527,12 +526,12 @@ TYPED_TEST(SceneQueries, FirstContactOfASweepMatchesBruteForce)
       const SceneContact expected = brute.firstContact(q);
       hits += expected.hit ? 1 : 0;
       // A tie: the same contact time on another triangle (a duplicate, or a second object).
-      ties += expected.hit && (named.name == "doubled-icosphere" ||
-                               named.name == "two-identical-objects")
-                ? 1
-                : 0;
-      EXPECT_TRUE(got.hit == expected.hit && got.t == expected.t &&
-                  got.object == expected.object && got.triangle == expected.triangle)
+      ties +=
+        expected.hit && (named.name == "doubled-icosphere" || named.name == "two-identical-objects")
+          ? 1
+          : 0;
+      EXPECT_TRUE(got.hit == expected.hit && got.t == expected.t && got.object == expected.object &&
+                  got.triangle == expected.triangle)
         << named.name << " sweep " << i << ": got " << describe(got) << ", brute force "
         << describe(expected);
     }

@@ -47,8 +47,14 @@ void* operator new(std::size_t size)
   }
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
 
 namespace proxima
 {
@@ -86,7 +92,10 @@ long double wrapped(double coordinate)
   return r < 0 ? r + 1.0L : r;
 }
 
-long double tent(long double z) { return std::max(0.0L, 1.0L - std::fabs(z)); }
+long double tent(long double z)
+{
+  return std::max(0.0L, 1.0L - std::fabs(z));
+}
 long double tentSlope(long double z)
 {
   return std::fabs(z) >= 1.0L ? 0.0L : (z > 0 ? -1.0L : 1.0L);
@@ -150,8 +159,7 @@ TEST(TextureImage, RefusesBadConstruction)
   EXPECT_THROW(TextureImage(2, 2, {1, 2, 3}), std::invalid_argument);
   EXPECT_THROW(TextureImage(2, 2, {1, 2, 3, 4, 5}), std::invalid_argument);
   // 70000^2 overflows 32 bits: the size check must not wrap around.
-  EXPECT_THROW(TextureImage(70000, 70000, std::vector<float>(4)),
-               std::invalid_argument);
+  EXPECT_THROW(TextureImage(70000, 70000, std::vector<float>(4)), std::invalid_argument);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
   EXPECT_THROW(TextureImage(2, 2, {1, nan, 3, 4}), std::invalid_argument);
@@ -235,14 +243,23 @@ TEST(TextureImage, SampleMatchesOracle)
       double u, v;
       switch (n % 4)
       {
-      case 0: u = unit(rng); v = unit(rng); break;
-      case 1: u = few(rng); v = few(rng); break;
-      case 2: u = far(rng); v = far(rng); break;
-      default:
-        // On and next to cell boundaries and tile edges, where the wrap and the cell change.
-        u = (std::floor(unit(rng) * width) + 0.5) / width + few(rng) * 1e-12;
-        v = std::floor(few(rng)) + few(rng) * 1e-15;
-        break;
+        case 0:
+          u = unit(rng);
+          v = unit(rng);
+          break;
+        case 1:
+          u = few(rng);
+          v = few(rng);
+          break;
+        case 2:
+          u = far(rng);
+          v = far(rng);
+          break;
+        default:
+          // On and next to cell boundaries and tile edges, where the wrap and the cell change.
+          u = (std::floor(unit(rng) * width) + 0.5) / width + few(rng) * 1e-12;
+          v = std::floor(few(rng)) + few(rng) * 1e-15;
+          break;
       }
       const double expected = double(oracle(image, u, v).value);
       const double value = texture.sample(u, v);
@@ -286,7 +303,7 @@ TEST(TextureImage, GradientMatchesOracleAndDifferences)
 {
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> few(-3.0, 3.0);
-  constexpr double kStep = 1e-4;  // texel widths
+  constexpr double kStep = 1e-4;   // texel widths
   constexpr double kMargin = 2e-4; // texel widths from a kink
   double worstOracle = 0.0;
   double worstDifference = 0.0;
@@ -309,8 +326,8 @@ TEST(TextureImage, GradientMatchesOracleAndDifferences)
       const OracleAnswer expected = oracle(image, u, v);
       const double perU = image.scale * width;
       const double perV = image.scale * height;
-      const double oracleError =
-        std::max(std::fabs(du - double(expected.du)) / perU, std::fabs(dv - double(expected.dv)) / perV);
+      const double oracleError = std::max(std::fabs(du - double(expected.du)) / perU,
+                                          std::fabs(dv - double(expected.dv)) / perV);
       const double hu = kStep / width;
       const double hv = kStep / height;
       const double differenceU = (texture.sample(u + hu, v) - texture.sample(u - hu, v)) / (2 * hu);
@@ -319,12 +336,12 @@ TEST(TextureImage, GradientMatchesOracleAndDifferences)
         std::max(std::fabs(du - differenceU) / perU, std::fabs(dv - differenceV) / perV);
       worstOracle = std::max(worstOracle, oracleError);
       worstDifference = std::max(worstDifference, differenceError);
-      ASSERT_LE(oracleError, 1e-12) << width << "x" << height << " at (" << u << ", " << v
-                                    << "): (" << du << ", " << dv << ") vs oracle ("
-                                    << double(expected.du) << ", " << double(expected.dv) << ")";
-      ASSERT_LE(differenceError, 1e-8) << width << "x" << height << " at (" << u << ", " << v
-                                       << "): (" << du << ", " << dv << ") vs differences ("
-                                       << differenceU << ", " << differenceV << ")";
+      ASSERT_LE(oracleError, 1e-12)
+        << width << "x" << height << " at (" << u << ", " << v << "): (" << du << ", " << dv
+        << ") vs oracle (" << double(expected.du) << ", " << double(expected.dv) << ")";
+      ASSERT_LE(differenceError, 1e-8)
+        << width << "x" << height << " at (" << u << ", " << v << "): (" << du << ", " << dv
+        << ") vs differences (" << differenceU << ", " << differenceV << ")";
     }
   }
   std::cout << "gradient: " << trials << " points drawn, worst error " << worstOracle
@@ -351,10 +368,10 @@ TEST(TextureImage, ExtremeCoordinatesGiveFiniteAnswers)
   const double big = std::numeric_limits<double>::max();
   const double tiny = std::numeric_limits<double>::denorm_min();
   const double eps = std::numeric_limits<double>::epsilon();
-  const std::vector<double> coordinates = {0.0, -0.0, tiny, -tiny, 1e-300, -1e-300, eps / 4,
-                                           -eps / 4, 1.0 - eps / 2, -1.0 + eps / 2, 1.0, -1.0,
-                                           0x1p52 + 0.5, 0x1p53, 0x1p53 + 2, -0x1p60, 1e300,
-                                           -1e300, big, -big, inf, -inf, nan, -nan};
+  const std::vector<double> coordinates = {
+    0.0,           -0.0,           tiny, -tiny, 1e-300,       -1e-300, eps / 4,    -eps / 4,
+    1.0 - eps / 2, -1.0 + eps / 2, 1.0,  -1.0,  0x1p52 + 0.5, 0x1p53,  0x1p53 + 2, -0x1p60,
+    1e300,         -1e300,         big,  -big,  inf,          -inf,    nan,        -nan};
   std::mt19937_64 rng(5);
   for (const auto& [width, height] : kSizes)
   {

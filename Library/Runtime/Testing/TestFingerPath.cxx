@@ -54,8 +54,8 @@ TEST(FingerPath, AnyHintGivesTheSameAnswer)
   {
     std::size_t fresh = 0;
     const Vec3 expected = path.positionAt(t, fresh);
-    for (std::size_t hint : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3},
-                             std::size_t{1000}})
+    for (std::size_t hint :
+         {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{1000}})
     {
       std::size_t h = hint;
       EXPECT_EQ(path.positionAt(t, h), expected) << "t " << t << " hint " << hint;

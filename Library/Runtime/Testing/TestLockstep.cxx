@@ -44,7 +44,10 @@ LockstepRun runOnce(const CollisionScene& scene, const FingerPath& path, double 
   return run;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(double a, double b)
+{
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 bool sameBits(const Vec3& a, const Vec3& b)
 {
   return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);

@@ -31,11 +31,11 @@ std::size_t rowsFasterThan(const FingerPath& path, double limit)
   std::size_t count = 0;
   for (std::size_t i = 1; i < path.size(); ++i)
   {
-    count += distance(path.positions[i], path.positions[i - 1]) /
-                   (path.times[i] - path.times[i - 1]) >
-                 limit
-               ? 1
-               : 0;
+    count +=
+      distance(path.positions[i], path.positions[i - 1]) / (path.times[i] - path.times[i - 1]) >
+          limit
+        ? 1
+        : 0;
   }
   return count;
 }
@@ -73,8 +73,8 @@ TEST(PathGenerators, SlideIsStraightAtConstantSpeed)
   const double speed = distance(from, to) / 1.25;
   for (std::size_t i = 1; i < path.size(); ++i)
   {
-    const double v = distance(path.positions[i], path.positions[i - 1]) /
-                     (path.times[i] - path.times[i - 1]);
+    const double v =
+      distance(path.positions[i], path.positions[i - 1]) / (path.times[i] - path.times[i - 1]);
     ASSERT_NEAR(v, speed, 1e-9 * speed) << i;
   }
 }

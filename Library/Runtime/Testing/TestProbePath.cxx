@@ -38,7 +38,10 @@ TriangleMesh tiltedSphere()
 }
 
 // How far a point is inside the analytic sphere (negative outside).
-double depthInSphere(const Vec3& p) { return kSphereRadius - distance(p, kSphereCenter); }
+double depthInSphere(const Vec3& p)
+{
+  return kSphereRadius - distance(p, kSphereCenter);
+}
 
 // The facets lie inside the round sphere by up to about edge^2 / (6 R): 9 um for 20,480 facets
 // of a 5 cm sphere; the oracle allows a little over twice that.
@@ -127,8 +130,10 @@ TEST(ProbePath, OnATiltedSphereEveryPhaseKeepsItsRanges)
       {
         ++pressedRows;
         pressSideSum += path.positions[i] - kSphereCenter;
-        ASSERT_GE(depth, defaults.pressDepthMin - kFacetTolerance) << "seed " << seed << " row " << i;
-        ASSERT_LE(depth, defaults.pressDepthMax + kFacetTolerance) << "seed " << seed << " row " << i;
+        ASSERT_GE(depth, defaults.pressDepthMin - kFacetTolerance)
+          << "seed " << seed << " row " << i;
+        ASSERT_LE(depth, defaults.pressDepthMax + kFacetTolerance)
+          << "seed " << seed << " row " << i;
       }
       if (phase == ProbePhase::Approach && previous != ProbePhase::Approach)
       {
@@ -140,13 +145,14 @@ TEST(ProbePath, OnATiltedSphereEveryPhaseKeepsItsRanges)
       }
       if (phase == ProbePhase::Stroke && previous == ProbePhase::Stroke)
       {
-        const double speed = distance(path.positions[i], path.positions[i - 1]) /
-                             (path.times[i] - path.times[i - 1]);
+        const double speed =
+          distance(path.positions[i], path.positions[i - 1]) / (path.times[i] - path.times[i - 1]);
         ASSERT_GE(speed, defaults.strokeSpeedMin * (1 - 2e-3)) << seed << " " << i;
         ASSERT_LE(speed, defaults.strokeSpeedMax * (1 + 2e-3)) << seed << " " << i;
         strokeLength += distance(path.positions[i], path.positions[i - 1]);
       }
-      if (phase == ProbePhase::Stroke && (i + 1 == path.size() || p.phases[i + 1] != ProbePhase::Stroke))
+      if (phase == ProbePhase::Stroke &&
+          (i + 1 == path.size() || p.phases[i + 1] != ProbePhase::Stroke))
       {
         // On a smooth sphere no stroke is cut short (by more than one step of 0.5 mm at most).
         ++strokes;

@@ -20,7 +20,7 @@ ServoParameters testParameters()
   parameters.stiffness = 1000.0;
   parameters.maxForce = 10.0;
   parameters.watchdogTimeout = 0.005;
-  parameters.fadeTime = 0.01; // ten ticks at 1 kHz
+  parameters.fadeTime = 0.01;        // ten ticks at 1 kHz
   parameters.forceRateLimit = 100.0; // 0.1 N a tick at 1 kHz
   parameters.sceneChangeWindow = 0.02;
   return parameters;

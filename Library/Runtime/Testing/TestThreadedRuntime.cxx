@@ -68,7 +68,10 @@ bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds l
   return condition();
 }
 
-bool sameBits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const Vec3& a, const Vec3& b)
+{
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 RuntimeSettings quietSettings(double rate)
 {
@@ -269,8 +272,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
     haveSkull = true;
   }
   catch (const InputError&)
-  {
-  }
+  {}
 #endif
   if (!haveSkull)
   {

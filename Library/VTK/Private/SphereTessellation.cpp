@@ -23,13 +23,19 @@ class TessellateSpheres
 public:
   TessellateSpheres(const std::vector<Sphere>& spheres, int resolution, double* points,
                     vtkIdType* connectivity, double* radii)
-    : m_spheres(spheres), m_around(resolution), m_rings(ringsFor(resolution)),
-      m_points(points), m_connectivity(connectivity), m_radii(radii)
-  {
-  }
+    : m_spheres(spheres)
+    , m_around(resolution)
+    , m_rings(ringsFor(resolution))
+    , m_points(points)
+    , m_connectivity(connectivity)
+    , m_radii(radii)
+  {}
 
   vtkIdType pointsPerSphere() const { return 2 + static_cast<vtkIdType>(m_rings - 1) * m_around; }
-  vtkIdType trianglesPerSphere() const { return 2 * static_cast<vtkIdType>(m_rings - 1) * m_around; }
+  vtkIdType trianglesPerSphere() const
+  {
+    return 2 * static_cast<vtkIdType>(m_rings - 1) * m_around;
+  }
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {

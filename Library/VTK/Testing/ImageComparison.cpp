@@ -66,8 +66,7 @@ ImageComparison compareWithBaseline(vtkRenderWindow* window, const std::string& 
   actual->GetDimensions(actualSize);
   baseline->GetDimensions(baselineSize);
   if (actualSize[0] != baselineSize[0] || actualSize[1] != baselineSize[1] ||
-      baseline->GetNumberOfScalarComponents() < 3 ||
-      baseline->GetScalarType() != VTK_UNSIGNED_CHAR)
+      baseline->GetNumberOfScalarComponents() < 3 || baseline->GetScalarType() != VTK_UNSIGNED_CHAR)
   {
     writePng(actual, actualPath);
     std::ostringstream message;

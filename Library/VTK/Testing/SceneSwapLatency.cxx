@@ -102,8 +102,8 @@ int main(int argc, char** argv)
   data->GetBounds(bounds);
   // The finger rests above the mesh, in free space.
   proxima::FingerPath path;
-  path.append(0.0, {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-                    bounds[5] + 0.01});
+  path.append(0.0,
+              {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), bounds[5] + 0.01});
   renderer->SetFingerPath(path);
   const auto firstStart = Clock::now();
   if (mode == "background")
@@ -131,7 +131,9 @@ int main(int argc, char** argv)
     (1024.0 * 1024.0);
 
   std::cout << "{\n  \"mesh\": \"" << argv[1] << "\",\n  \"triangles\": " << soup.triangles.size()
-            << ",\n  \"mode\": \"" << mode << "\",\n  \"copies\": " << copies << ",\n  \"edited\": " << edited << ",\n  \"filter_total_ms\": " << filterMs << ",\n  \"filter_tree_build_ms\": " << treeMs
+            << ",\n  \"mode\": \"" << mode << "\",\n  \"copies\": " << copies
+            << ",\n  \"edited\": " << edited << ",\n  \"filter_total_ms\": " << filterMs
+            << ",\n  \"filter_tree_build_ms\": " << treeMs
             << ",\n  \"start_to_first_live_ms\": " << firstMs
             << ",\n  \"object_mib\": " << objectMiB << ",\n  \"repeats\": [\n";
   for (int r = 0; r < repeats; ++r)
@@ -173,9 +175,9 @@ int main(int argc, char** argv)
               << ", \"scene_build_ms\": " << scene->GetLastBuildMilliseconds()
               << ", \"published_to_live_ms\": " << ms(published, live)
               << ", \"modified_to_live_ms\": " << ms(modified, live)
-              << ", \"rss_mib\": " << statusMiB("VmRSS") << ", \"peak_rss_mib\": "
-              << statusMiB("VmHWM") << "}"
-              << (r + 1 < repeats ? "," : "") << "\n";
+              << ", \"rss_mib\": " << statusMiB("VmRSS")
+              << ", \"peak_rss_mib\": " << statusMiB("VmHWM") << "}" << (r + 1 < repeats ? "," : "")
+              << "\n";
   }
   const proxima::LoopStatistics servo = renderer->GetServoStatistics();
   std::cout << "  ],\n  \"servo_ticks\": " << servo.ticks

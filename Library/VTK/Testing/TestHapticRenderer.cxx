@@ -117,9 +117,9 @@ TEST(HapticRenderer, PrintSelfStatesTheDocumentedDefaults)
   vtkNew<vtkHapticRenderer> renderer;
   std::ostringstream out;
   renderer->Print(out);
-  for (const char* line : {"ServoRate: 4000", "ProxyRate: 0", "ProxyRadius: 0.001",
-                           "Stiffness: 1000", "MaxForce: 10", "MaxIterations: 256",
-                           "RealtimeScheduling: Off", "Skin: 0"})
+  for (const char* line :
+       {"ServoRate: 4000", "ProxyRate: 0", "ProxyRadius: 0.001", "Stiffness: 1000", "MaxForce: 10",
+        "MaxIterations: 256", "RealtimeScheduling: Off", "Skin: 0"})
   {
     EXPECT_NE(out.str().find(line), std::string::npos) << line << " in\n" << out.str();
   }

@@ -73,8 +73,9 @@ TEST_F(TwoObjects, PlacesObjectsByScaleThenPose)
   EXPECT_FALSE(snapshot->objects[1].material.hasFriction());
   // The output is the placed surface, every triangle tagged with its object.
   vtkPolyData* output = scene->GetOutput();
-  EXPECT_EQ(output->GetNumberOfCells(),
-            static_cast<vtkIdType>(snapshot->objects[0].mesh.numTriangles() + placed.numTriangles()));
+  EXPECT_EQ(
+    output->GetNumberOfCells(),
+    static_cast<vtkIdType>(snapshot->objects[0].mesh.numTriangles() + placed.numTriangles()));
   EXPECT_EQ(output->GetCellData()->GetArray("ObjectId")->GetTuple1(output->GetNumberOfCells() - 1),
             1.0);
 }

@@ -139,8 +139,7 @@ TEST(RepresentationImages, StickingContactShowsAClosedCone)
 {
   const CollisionScene scene = sceneOf(makeGrid(0.04, 8), frictional());
   // Press 2 mm in, then lean 0.4 mm sideways: tan = 0.2, inside the static cone (0.6).
-  const FingerPath path =
-    linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.0004, 0, -0.002}}, 0.2);
+  const FingerPath path = linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.0004, 0, -0.002}}, 0.2);
   const HapticState state = stateWhere(scene, path, [](const HapticState&) { return false; });
   ASSERT_EQ(state.numContacts, 1);
   EXPECT_TRUE(state.stuck);
@@ -154,8 +153,7 @@ TEST(RepresentationImages, SlippingContactShowsAnOpenCone)
   // Press in, then drag 8 mm. With mu_s above mu_d the proxy sticks and slips in turn (each slip
   // leaves the finger on the dynamic cone, inside the static one): take the first slip of the
   // drag's second half.
-  const FingerPath path =
-    linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.008, 0, -0.002}}, 0.2);
+  const FingerPath path = linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.008, 0, -0.002}}, 0.2);
   const HapticState state = stateWhere(scene, path, [](const HapticState& s) {
     return s.time > 0.3 && s.numContacts == 1 && !s.stuck;
   });

@@ -72,8 +72,8 @@ TEST(StateRepresentation, StickingConeIsClosedAtTheStaticAngle)
   ASSERT_TRUE(cone->GetVisibility());
   vtkPolyData* geometry = geometryOf(cone);
   int apexPoints = 0;
-  const double angle = largestAngle(geometry, state.contacts[0].point, state.contacts[0].normal,
-                                    apexPoints);
+  const double angle =
+    largestAngle(geometry, state.contacts[0].point, state.contacts[0].normal, apexPoints);
   EXPECT_EQ(apexPoints, 1);
   EXPECT_NEAR(angle, std::atan(0.6), 1e-9);
   // Closed: a cap polygon beside the side triangles.

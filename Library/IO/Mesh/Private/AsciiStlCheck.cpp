@@ -15,21 +15,26 @@ namespace
 class WordStream
 {
 public:
-  explicit WordStream(const std::string& path) : m_path(path), m_stream(path, std::ios::binary) {}
+  explicit WordStream(const std::string& path)
+    : m_path(path)
+    , m_stream(path, std::ios::binary)
+  {}
 
   /// The next word, or an empty string at the end of the file.
   std::string next()
   {
     while (true)
     {
-      while (m_position < m_line.size() && std::isspace(static_cast<unsigned char>(m_line[m_position])))
+      while (m_position < m_line.size() &&
+             std::isspace(static_cast<unsigned char>(m_line[m_position])))
       {
         ++m_position;
       }
       if (m_position < m_line.size())
       {
         const std::size_t start = m_position;
-        while (m_position < m_line.size() && !std::isspace(static_cast<unsigned char>(m_line[m_position])))
+        while (m_position < m_line.size() &&
+               !std::isspace(static_cast<unsigned char>(m_line[m_position])))
         {
           ++m_position;
         }
@@ -49,7 +54,8 @@ public:
 
   [[noreturn]] void fail(const std::string& defect) const
   {
-    throw InputError(m_path, "not a valid ASCII STL file: line " + std::to_string(m_lineNumber) + ": " + defect);
+    throw InputError(m_path, "not a valid ASCII STL file: line " + std::to_string(m_lineNumber) +
+                               ": " + defect);
   }
 
 private:
@@ -154,7 +160,8 @@ void checkAsciiStl(const std::string& path)
       }
       if (!is(word, "solid"))
       {
-        words.fail("expected 'solid' or the end of the file after 'endsolid', found " + shown(word));
+        words.fail("expected 'solid' or the end of the file after 'endsolid', found " +
+                   shown(word));
       }
       words.skipLine();
       continue;

@@ -46,36 +46,33 @@ void checkSignature(const std::string& path, MeshFileFormat format, std::uintmax
 {
   switch (format)
   {
-  case MeshFileFormat::Stl:
-    checkStl(path, fileSize);
-    return;
-  case MeshFileFormat::Ply:
-    if (readFileHead(path, 4).rfind("ply", 0) != 0)
+    case MeshFileFormat::Stl: checkStl(path, fileSize); return;
+    case MeshFileFormat::Ply:
+      if (readFileHead(path, 4).rfind("ply", 0) != 0)
+      {
+        throw InputError(path, "not a PLY file (it does not start with 'ply')");
+      }
+      return;
+    case MeshFileFormat::Vtp:
     {
-      throw InputError(path, "not a PLY file (it does not start with 'ply')");
+      const std::string head = trimmedHead(readFileHead(path, 64));
+      if (head.rfind("<?xml", 0) != 0 && head.rfind("<VTKFile", 0) != 0)
+      {
+        throw InputError(path, "not a VTK XML file (it does not start with '<?xml' or '<VTKFile')");
+      }
+      return;
     }
-    return;
-  case MeshFileFormat::Vtp:
-  {
-    const std::string head = trimmedHead(readFileHead(path, 64));
-    if (head.rfind("<?xml", 0) != 0 && head.rfind("<VTKFile", 0) != 0)
+    case MeshFileFormat::Gltf:
     {
-      throw InputError(path, "not a VTK XML file (it does not start with '<?xml' or '<VTKFile')");
+      const std::string head = readFileHead(path, 64);
+      if (head.rfind("glTF", 0) != 0 && trimmedHead(head).rfind("{", 0) != 0)
+      {
+        throw InputError(path, "not a glTF file (neither the binary 'glTF' magic nor JSON)");
+      }
+      return;
     }
-    return;
-  }
-  case MeshFileFormat::Gltf:
-  {
-    const std::string head = readFileHead(path, 64);
-    if (head.rfind("glTF", 0) != 0 && trimmedHead(head).rfind("{", 0) != 0)
-    {
-      throw InputError(path, "not a glTF file (neither the binary 'glTF' magic nor JSON)");
-    }
-    return;
-  }
-  case MeshFileFormat::Obj:
-  case MeshFileFormat::Off:
-    return;
+    case MeshFileFormat::Obj:
+    case MeshFileFormat::Off: return;
   }
 }
 

@@ -30,9 +30,10 @@ class GltfChecker
 {
 public:
   GltfChecker(const std::string& path, const Json& document, std::optional<std::uint64_t> binChunk)
-    : m_path(path), m_document(document), m_binChunk(binChunk)
-  {
-  }
+    : m_path(path)
+    , m_document(document)
+    , m_binChunk(binChunk)
+  {}
 
   void run()
   {
@@ -105,8 +106,9 @@ private:
   }
 
   /// An index field that must point into the document's array `target` (when present).
-  std::optional<std::uint64_t> indexField(const Json& object, const char* key, const std::string& where,
-                                          const char* target, bool required = false) const
+  std::optional<std::uint64_t> indexField(const Json& object, const char* key,
+                                          const std::string& where, const char* target,
+                                          bool required = false) const
   {
     if (!required && object.find(key) == object.end())
     {
@@ -168,14 +170,16 @@ private:
       }
       if (length > kLargestVtkInt)
       {
-        fail(where + " announces " + std::to_string(length) + " bytes (VTK's loader reads up to 2^31 - 1)");
+        fail(where + " announces " + std::to_string(length) +
+             " bytes (VTK's loader reads up to 2^31 - 1)");
       }
       m_bufferLengths.push_back(length);
     }
   }
 
   /// How many bytes buffer `index` really has.
-  std::uint64_t availableBytes(const Json& buffer, std::size_t index, const std::string& where) const
+  std::uint64_t availableBytes(const Json& buffer, std::size_t index,
+                               const std::string& where) const
   {
     const auto uri = buffer.find("uri");
     if (uri == buffer.end())
@@ -228,8 +232,8 @@ private:
     for (std::size_t i = comma + 1; i < uri.size(); ++i)
     {
       const char c = uri[i];
-      const bool symbol = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                          c == '+' || c == '/';
+      const bool symbol = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ||
+                          (c >= '0' && c <= '9') || c == '+' || c == '/';
       if (symbol && padding == 0)
       {
         ++symbols;
@@ -240,7 +244,8 @@ private:
       }
       else
       {
-        fail(where + ": its base64 data has a bad character at offset " + std::to_string(i - comma - 1));
+        fail(where + ": its base64 data has a bad character at offset " +
+             std::to_string(i - comma - 1));
       }
     }
     if ((symbols + padding) % 4 != 0)
@@ -270,13 +275,15 @@ private:
       const std::uint64_t stride = unsignedField(view, "byteStride", where, 0);
       if (view.contains("byteStride") && (stride < 4 || stride > 252 || stride % 4 != 0))
       {
-        fail(where + ": byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
+        fail(where + ": byteStride " + std::to_string(stride) +
+             " is not a multiple of 4 from 4 to 252");
       }
       // VTK's loader drops a view with another target, and every later view's index shifts.
       const std::uint64_t target = unsignedField(view, "target", where, kArrayBuffer);
       if (target != kArrayBuffer && target != kElementArrayBuffer)
       {
-        fail(where + ": target " + std::to_string(target) + " is neither 34962 (vertices) nor 34963 (indices)");
+        fail(where + ": target " + std::to_string(target) +
+             " is neither 34962 (vertices) nor 34963 (indices)");
       }
     }
   }
@@ -285,17 +292,16 @@ private:
   {
     switch (type)
     {
-    case 5120: // BYTE
-    case 5121: // UNSIGNED_BYTE
-      return 1;
-    case 5122: // SHORT
-    case 5123: // UNSIGNED_SHORT
-      return 2;
-    case 5125: // UNSIGNED_INT
-    case 5126: // FLOAT
-      return 4;
-    default:
-      return 0;
+      case 5120: // BYTE
+      case 5121: // UNSIGNED_BYTE
+        return 1;
+      case 5122: // SHORT
+      case 5123: // UNSIGNED_SHORT
+        return 2;
+      case 5125: // UNSIGNED_INT
+      case 5126: // FLOAT
+        return 4;
+      default: return 0;
     }
   }
 
@@ -357,19 +363,20 @@ private:
       {
         fail(where + " (byteOffset " + std::to_string(offset) + ", " + std::to_string(count) +
              " elements of " + std::to_string(elementBytes) + " bytes, stride " +
-             std::to_string(stride) + ") reaches beyond bufferView " + std::to_string(view) + " of " +
-             std::to_string(viewLength) + " bytes");
+             std::to_string(stride) + ") reaches beyond bufferView " + std::to_string(view) +
+             " of " + std::to_string(viewLength) + " bytes");
       }
       // VTK's loader drops an accessor whose bounds do not match its type, and every later
       // accessor's index then names the one after it (fuzzing: a read of an accessor past the end).
       for (const char* bound : {"min", "max"})
       {
         const auto values = accessor.find(bound);
-        if (values != accessor.end() &&
-            !(values->is_array() && values->size() == components &&
-              std::all_of(values->begin(), values->end(), [](const Json& v) { return v.is_number(); })))
+        if (values != accessor.end() && !(values->is_array() && values->size() == components &&
+                                          std::all_of(values->begin(), values->end(),
+                                                      [](const Json& v) { return v.is_number(); })))
         {
-          fail(where + ": " + bound + " is not an array of " + std::to_string(components) + " numbers");
+          fail(where + ": " + bound + " is not an array of " + std::to_string(components) +
+               " numbers");
         }
       }
       m_accessors.push_back({component, components, count});
@@ -407,8 +414,9 @@ private:
     const std::uint64_t mode = unsignedField(primitive, "mode", where, 4);
     if (mode != 4)
     {
-      fail(where + " has mode " + std::to_string(mode) +
-           " (only triangles, mode 4, are read; 0-3 are points and lines, 5 and 6 strips and fans)");
+      fail(
+        where + " has mode " + std::to_string(mode) +
+        " (only triangles, mode 4, are read; 0-3 are points and lines, 5 and 6 strips and fans)");
     }
     const auto attributes = primitive.find("attributes");
     if (attributes == primitive.end() || !attributes->is_object())
@@ -436,8 +444,8 @@ private:
     if (const auto indices = indexField(primitive, "indices", where, "accessors"))
     {
       const AccessorShape& shape = m_accessors[*indices];
-      if (shape.components != 1 ||
-          (shape.componentType != 5121 && shape.componentType != 5123 && shape.componentType != 5125))
+      if (shape.components != 1 || (shape.componentType != 5121 && shape.componentType != 5123 &&
+                                    shape.componentType != 5125))
       {
         fail(where + ": its indices accessor is not of unsigned byte, short or int SCALAR");
       }
@@ -451,7 +459,8 @@ private:
   }
 
   /// Every attribute names an accessor with one element per vertex.
-  void checkAttributes(const Json& attributes, std::uint64_t vertices, const std::string& where) const
+  void checkAttributes(const Json& attributes, std::uint64_t vertices,
+                       const std::string& where) const
   {
     for (auto it = attributes.begin(); it != attributes.end(); ++it)
     {
@@ -547,7 +556,8 @@ private:
       for (std::size_t c = 0; c < channels.size(); ++c)
       {
         const Json& channel = item(channels, c, where + " channel");
-        if (unsignedField(channel, "sampler", where + " channel " + std::to_string(c)) >= samplers.size())
+        if (unsignedField(channel, "sampler", where + " channel " + std::to_string(c)) >=
+            samplers.size())
         {
           fail(where + " channel " + std::to_string(c) + " refers to a sampler it does not have");
         }
@@ -669,19 +679,22 @@ GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_
     const std::string header = readBytes(stream, 0, 20);
     if (header.size() < 20)
     {
-      throw InputError(path, "not a valid GLB file: too short for its 12-byte header and a chunk header (" +
-                               std::to_string(fileSize) + " bytes)");
+      throw InputError(
+        path, "not a valid GLB file: too short for its 12-byte header and a chunk header (" +
+                std::to_string(fileSize) + " bytes)");
     }
     const std::uint32_t version = littleEndian32(header.data() + 4);
     const std::uint32_t length = littleEndian32(header.data() + 8);
     if (version != 2)
     {
-      throw InputError(path, "not a valid GLB file: version " + std::to_string(version) + " (only 2 is read)");
+      throw InputError(path, "not a valid GLB file: version " + std::to_string(version) +
+                               " (only 2 is read)");
     }
     if (length != fileSize)
     {
-      throw InputError(path, "not a valid GLB file: its header announces " + std::to_string(length) +
-                               " bytes but the file has " + std::to_string(fileSize));
+      throw InputError(path, "not a valid GLB file: its header announces " +
+                               std::to_string(length) + " bytes but the file has " +
+                               std::to_string(fileSize));
     }
     const std::uint64_t jsonLength = littleEndian32(header.data() + 12);
     if (littleEndian32(header.data() + 16) != kChunkJson)
@@ -690,8 +703,9 @@ GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_
     }
     if (jsonLength == 0 || 20 + jsonLength > length)
     {
-      throw InputError(path, "not a valid GLB file: its JSON chunk of " + std::to_string(jsonLength) +
-                               " bytes does not fit in the file's " + std::to_string(length));
+      throw InputError(path, "not a valid GLB file: its JSON chunk of " +
+                               std::to_string(jsonLength) + " bytes does not fit in the file's " +
+                               std::to_string(length));
     }
     text = readBytes(stream, 20, jsonLength);
     chunksAfterJson = 20 + jsonLength;
@@ -709,9 +723,9 @@ GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_
       const std::uint64_t chunkLength = littleEndian32(chunk.data());
       if (chunkLength > length - offset - 8)
       {
-        throw InputError(path, "not a valid GLB file: its chunk at byte " + std::to_string(offset) + " of " +
-                                 std::to_string(chunkLength) + " bytes does not fit in the file's " +
-                                 std::to_string(length));
+        throw InputError(path, "not a valid GLB file: its chunk at byte " + std::to_string(offset) +
+                                 " of " + std::to_string(chunkLength) +
+                                 " bytes does not fit in the file's " + std::to_string(length));
       }
       if (offset == 20 + jsonLength && littleEndian32(chunk.data() + 4) == kChunkBin)
       {
@@ -737,7 +751,8 @@ GltfGeometryFile checkGltfAndCopyGeometry(const std::string& path, std::uintmax_
   catch (const Json::exception&)
   {
     // A number too large for any type (out_of_range 406) and the like.
-    throw InputError(path, "not a valid glTF file: the JSON does not parse (a number out of range)");
+    throw InputError(path,
+                     "not a valid glTF file: the JSON does not parse (a number out of range)");
   }
   GltfChecker(path, document, binChunk).run();
   return GltfGeometryFile(path, document, chunksAfterJson);

@@ -18,8 +18,8 @@ using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
 /// The parts of a glTF document that the geometry of its default scene is made of.
-constexpr const char* kGeometryKeys[] = {"asset", "scene", "scenes", "nodes", "meshes", "skins",
-                                         "accessors", "bufferViews", "buffers"};
+constexpr const char* kGeometryKeys[] = {"asset", "scene",     "scenes",      "nodes",  "meshes",
+                                         "skins", "accessors", "bufferViews", "buffers"};
 
 /// Calls `edit` on every object of the array `key` of `holder`, if it has one.
 template <class Edit>
@@ -64,7 +64,8 @@ Json geometryOnly(const Json& document, const fs::path& sourceFolder)
   // The copy lives elsewhere: a buffer file is named by where it is, not relative to the copy.
   forEachIn(copy, "buffers", [&](Json& buffer) {
     const auto uri = buffer.find("uri");
-    if (uri != buffer.end() && uri->is_string() && uri->get_ref<const std::string&>().rfind("data:", 0) != 0)
+    if (uri != buffer.end() && uri->is_string() &&
+        uri->get_ref<const std::string&>().rfind("data:", 0) != 0)
     {
       *uri = fs::absolute(sourceFolder / uri->get<std::string>()).lexically_normal().string();
     }
@@ -85,8 +86,8 @@ std::string temporaryPath(bool binary)
 {
   static std::atomic<unsigned> counter{0};
   char name[64];
-  std::snprintf(name, sizeof(name), "proxima-vtk-%010d-%010u%s", static_cast<int>(::getpid()), counter++,
-                binary ? ".glb" : ".gltf");
+  std::snprintf(name, sizeof(name), "proxima-vtk-%010d-%010u%s", static_cast<int>(::getpid()),
+                counter++, binary ? ".glb" : ".gltf");
   return (fs::temp_directory_path() / name).string();
 }
 } // namespace
@@ -107,7 +108,8 @@ GltfGeometryFile::GltfGeometryFile(const std::string& sourcePath, const Json& do
     json.resize((json.size() + 3) / 4 * 4, ' '); // GLB chunks are 4-byte aligned
     if (12 + 8 + json.size() + chunksSize > 0xffffffffu)
     {
-      throw std::runtime_error(sourcePath + ": the GLB copy for VTK's glTF loader would exceed 4 GiB");
+      throw std::runtime_error(sourcePath +
+                               ": the GLB copy for VTK's glTF loader would exceed 4 GiB");
     }
     out.write("glTF", 4);
     writeWord(out, 2);
@@ -130,7 +132,8 @@ GltfGeometryFile::GltfGeometryFile(const std::string& sourcePath, const Json& do
   {
     std::error_code ignored;
     fs::remove(m_path, ignored);
-    throw std::runtime_error(m_path + ": cannot write the copy of " + sourcePath + " that VTK's glTF loader reads");
+    throw std::runtime_error(m_path + ": cannot write the copy of " + sourcePath +
+                             " that VTK's glTF loader reads");
   }
 }
 

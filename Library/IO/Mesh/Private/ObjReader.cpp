@@ -137,9 +137,9 @@ enum class CellKind : std::uint8_t
 
 struct ParsedObj
 {
-  std::vector<double> vertices; // xyz
+  std::vector<double> vertices;  // xyz
   std::vector<double> texCoords; // uv
-  std::vector<double> normals;  // xyz
+  std::vector<double> normals;   // xyz
   std::vector<Corner> corners;
   std::vector<std::uint32_t> cellSizes;
   std::vector<CellKind> cellKinds;
@@ -235,7 +235,8 @@ ParsedObj parse(const std::string& path)
         {
           const std::size_t slash = reference.find('/');
           const std::string_view part = reference.substr(0, slash);
-          reference = slash == std::string_view::npos ? std::string_view() : reference.substr(slash + 1);
+          reference =
+            slash == std::string_view::npos ? std::string_view() : reference.substr(slash + 1);
           if (part.empty() && kind > 0)
           {
             continue;
@@ -275,7 +276,8 @@ ParsedObj parse(const std::string& path)
         }
         if (corner[0] == 0)
         {
-          throw InputError(path, at(lineNumber) + "'" + std::string(words[w]) + "' names no vertex");
+          throw InputError(path,
+                           at(lineNumber) + "'" + std::string(words[w]) + "' names no vertex");
         }
         obj.usesTexCoords = obj.usesTexCoords || corner[1] != 0;
         obj.usesNormals = obj.usesNormals || corner[2] != 0;
@@ -285,8 +287,8 @@ ParsedObj parse(const std::string& path)
       if (size > 0)
       {
         obj.cellSizes.push_back(size);
-        obj.cellKinds.push_back(keyword == "f" ? CellKind::Face
-                                               : (keyword == "l" ? CellKind::Line : CellKind::Point));
+        obj.cellKinds.push_back(
+          keyword == "f" ? CellKind::Face : (keyword == "l" ? CellKind::Line : CellKind::Point));
       }
     }
     // Every other statement (o, g, s, usemtl, mtllib, curves...) carries no triangle geometry.
@@ -302,8 +304,9 @@ ParsedObj parse(const std::string& path)
     if (static_cast<std::uint64_t>(largest[kind].index) > totals[kind])
     {
       throw InputError(path, at(largest[kind].line) + kKindNames[kind] + " index " +
-                               std::to_string(largest[kind].index) + " is out of range (the file has " +
-                               std::to_string(totals[kind]) + " " + kKindPlurals[kind] + ")");
+                               std::to_string(largest[kind].index) +
+                               " is out of range (the file has " + std::to_string(totals[kind]) +
+                               " " + kKindPlurals[kind] + ")");
     }
   }
   return obj;
@@ -360,8 +363,9 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
   for (vtkIdType i = 0; i < numVertices; ++i)
   {
     const auto vertex = static_cast<std::uint32_t>(i + 1);
-    const std::array<std::uint32_t, 2> attributes =
-      withAttributes ? attributesOf[static_cast<std::size_t>(i)] : std::array<std::uint32_t, 2>{0u, 0u};
+    const std::array<std::uint32_t, 2> attributes = withAttributes
+                                                      ? attributesOf[static_cast<std::size_t>(i)]
+                                                      : std::array<std::uint32_t, 2>{0u, 0u};
     appendPoint(vertex, attributes[0], attributes[1]);
   }
   std::vector<vtkIdType> pointOfCorner(obj.corners.size());

@@ -60,8 +60,10 @@ public:
   /// coordinates OpenMesh already reads exactly.
   SoupImporter(const std::istream& stream, std::uint64_t expectedVertices,
                std::uint64_t expectedFaces, const std::vector<Position>* positionsInDouble)
-    : m_stream(stream), m_expectedVertices(expectedVertices), m_expectedFaces(expectedFaces),
-      m_positionsInDouble(positionsInDouble)
+    : m_stream(stream)
+    , m_expectedVertices(expectedVertices)
+    , m_expectedFaces(expectedFaces)
+    , m_positionsInDouble(positionsInDouble)
   {
     m_points->SetDataTypeToDouble();
   }
@@ -117,10 +119,7 @@ public:
     }
     return addVertex(p[0], p[1], p[2]);
   }
-  VertexHandle add_vertex(const OpenMesh::Vec3d& p) override
-  {
-    return addVertex(p[0], p[1], p[2]);
-  }
+  VertexHandle add_vertex(const OpenMesh::Vec3d& p) override { return addVertex(p[0], p[1], p[2]); }
   VertexHandle add_vertex() override { return addVertex(0.0, 0.0, 0.0); }
 
   FaceHandle add_face(const VHandles& indices) override
@@ -143,7 +142,8 @@ public:
       }
       m_ids.push_back(static_cast<vtkIdType>(index));
     }
-    vtkCellArray* cells = m_ids.size() >= 3 ? m_polys.Get() : (m_ids.size() == 2 ? m_lines.Get() : m_verts.Get());
+    vtkCellArray* cells =
+      m_ids.size() >= 3 ? m_polys.Get() : (m_ids.size() == 2 ? m_lines.Get() : m_verts.Get());
     if (!m_ids.empty())
     {
       cells->InsertNextCell(static_cast<vtkIdType>(m_ids.size()), m_ids.data());
@@ -255,9 +255,8 @@ private:
     if (vh.idx() >= 0 && static_cast<std::size_t>(vh.idx()) < m_normalValues.size())
     {
       m_hasNormals = true;
-      m_normalValues[static_cast<std::size_t>(vh.idx())] = {static_cast<float>(x),
-                                                            static_cast<float>(y),
-                                                            static_cast<float>(z)};
+      m_normalValues[static_cast<std::size_t>(vh.idx())] = {
+        static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
     }
   }
 
@@ -310,7 +309,8 @@ OffHeader readHeader(const std::string& path)
   {
     throw InputError(path, "garbled OFF header (BINARY must follow OFF alone on the first line)");
   }
-  if (!header.binary && rest != std::string::npos && std::isdigit(static_cast<unsigned char>(first[rest])))
+  if (!header.binary && rest != std::string::npos &&
+      std::isdigit(static_cast<unsigned char>(first[rest])))
   {
     // OpenMesh takes the whole first line as the header and would read the first vertex as the
     // counts.
@@ -388,7 +388,8 @@ std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const 
   // the colour's first number as the next face's vertex count, so that is where a file with face
   // colours and no C fails, and the message says why.
   const bool faceColours = prefix.find('C') != std::string::npos;
-  const std::string colourHint = faceColours ? "" : "; if the faces carry colours, the header must be COFF";
+  const std::string colourHint =
+    faceColours ? "" : "; if the faces carry colours, the header must be COFF";
   std::vector<Position> positions;
   for (std::uint64_t v = 0; v < header.numVertices; ++v)
   {
@@ -401,8 +402,9 @@ std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const 
       {
         // Not left to OpenMesh: past the end of its stream it goes on to the faces with a vertex
         // count it never read (found by fuzzing: "OFF\n446104461 4 7" and nothing more).
-        throw InputError(path, "cannot read the coordinates of vertex " + std::to_string(v) + " (of " +
-                                 std::to_string(header.numVertices) + "): malformed or truncated data");
+        throw InputError(path, "cannot read the coordinates of vertex " + std::to_string(v) +
+                                 " (of " + std::to_string(header.numVertices) +
+                                 "): malformed or truncated data");
       }
     }
     positions.push_back(position);
@@ -410,8 +412,8 @@ std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const 
   }
   for (std::uint64_t f = 0; f < header.numFaces; ++f)
   {
-    const std::string where = "cannot read face " + std::to_string(f) + " (of " +
-                              std::to_string(header.numFaces) + "): ";
+    const std::string where =
+      "cannot read face " + std::to_string(f) + " (of " + std::to_string(header.numFaces) + "): ";
     long long valence = 0;
     if (!(stream >> valence))
     {
@@ -426,8 +428,9 @@ std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const 
         static_cast<std::uint64_t>(valence) > header.numVertices)
     {
       throw InputError(path, where + "a vertex count of " + std::to_string(valence) +
-                               " (it must be from 1 to the file's " + std::to_string(header.numVertices) +
-                               " vertices, at most " + std::to_string(kMaxFaceValence) + ")" + colourHint);
+                               " (it must be from 1 to the file's " +
+                               std::to_string(header.numVertices) + " vertices, at most " +
+                               std::to_string(kMaxFaceValence) + ")" + colourHint);
     }
     long long read = 0;
     long long index = 0;

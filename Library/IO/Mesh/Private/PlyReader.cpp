@@ -44,10 +44,12 @@ enum class ScalarType
 ScalarType scalarType(const std::string& name)
 {
   static const std::map<std::string, ScalarType> types = {
-    {"char", ScalarType::Int8},      {"int8", ScalarType::Int8},     {"uchar", ScalarType::UInt8},
-    {"uint8", ScalarType::UInt8},    {"short", ScalarType::Int16},   {"int16", ScalarType::Int16},
-    {"ushort", ScalarType::UInt16},  {"uint16", ScalarType::UInt16}, {"int", ScalarType::Int32},
-    {"int32", ScalarType::Int32},    {"uint", ScalarType::UInt32},   {"uint32", ScalarType::UInt32},
+    {"char", ScalarType::Int8},      {"int8", ScalarType::Int8},
+    {"uchar", ScalarType::UInt8},    {"uint8", ScalarType::UInt8},
+    {"short", ScalarType::Int16},    {"int16", ScalarType::Int16},
+    {"ushort", ScalarType::UInt16},  {"uint16", ScalarType::UInt16},
+    {"int", ScalarType::Int32},      {"int32", ScalarType::Int32},
+    {"uint", ScalarType::UInt32},    {"uint32", ScalarType::UInt32},
     {"float", ScalarType::Float32},  {"float32", ScalarType::Float32},
     {"double", ScalarType::Float64}, {"float64", ScalarType::Float64}};
   const auto found = types.find(name);
@@ -58,20 +60,15 @@ std::size_t scalarSize(ScalarType type)
 {
   switch (type)
   {
-  case ScalarType::Int8:
-  case ScalarType::UInt8:
-    return 1;
-  case ScalarType::Int16:
-  case ScalarType::UInt16:
-    return 2;
-  case ScalarType::Int32:
-  case ScalarType::UInt32:
-  case ScalarType::Float32:
-    return 4;
-  case ScalarType::Float64:
-    return 8;
-  case ScalarType::Unknown:
-    break;
+    case ScalarType::Int8:
+    case ScalarType::UInt8: return 1;
+    case ScalarType::Int16:
+    case ScalarType::UInt16: return 2;
+    case ScalarType::Int32:
+    case ScalarType::UInt32:
+    case ScalarType::Float32: return 4;
+    case ScalarType::Float64: return 8;
+    case ScalarType::Unknown: break;
   }
   return 0;
 }
@@ -177,7 +174,8 @@ Header parseHeader(const std::string& path, const std::string& bytes)
       std::string count;
       words >> element.name >> count;
       const auto result = std::from_chars(count.data(), count.data() + count.size(), element.count);
-      if (element.name.empty() || result.ec != std::errc() || result.ptr != count.data() + count.size())
+      if (element.name.empty() || result.ec != std::errc() ||
+          result.ptr != count.data() + count.size())
       {
         fail("malformed element line '" + line + "'");
       }
@@ -201,8 +199,8 @@ Header parseHeader(const std::string& path, const std::string& bytes)
         property.countType = scalarType(countType);
         property.type = scalarType(itemType);
         if (property.countType == ScalarType::Unknown || property.type == ScalarType::Unknown ||
-            property.countType == ScalarType::Float32 || property.countType == ScalarType::Float64 ||
-            property.name.empty())
+            property.countType == ScalarType::Float32 ||
+            property.countType == ScalarType::Float64 || property.name.empty())
         {
           fail("malformed list property '" + line + "'");
         }
@@ -247,9 +245,11 @@ class DataCursor
 {
 public:
   DataCursor(const std::string& path, const std::string& bytes, const Header& header)
-    : m_path(path), m_bytes(bytes), m_position(header.dataOffset), m_encoding(header.encoding)
-  {
-  }
+    : m_path(path)
+    , m_bytes(bytes)
+    , m_position(header.dataOffset)
+    , m_encoding(header.encoding)
+  {}
 
   /// Bytes not read yet: every value still to come takes at least one.
   std::size_t remaining() const { return m_bytes.size() - m_position; }
@@ -273,7 +273,8 @@ public:
     unsigned char raw[8];
     std::memcpy(raw, m_bytes.data() + m_position, size);
     m_position += size;
-    const bool swap = (m_encoding == Encoding::BinaryBigEndian) != (std::endian::native == std::endian::big);
+    const bool swap =
+      (m_encoding == Encoding::BinaryBigEndian) != (std::endian::native == std::endian::big);
     if (swap)
     {
       for (std::size_t i = 0; i < size / 2; ++i)
@@ -283,32 +284,23 @@ public:
     }
     switch (type)
     {
-    case ScalarType::Int8:
-      return static_cast<double>(static_cast<std::int8_t>(raw[0]));
-    case ScalarType::UInt8:
-      return static_cast<double>(raw[0]);
-    case ScalarType::Int16:
-      return static_cast<double>(load<std::int16_t>(raw));
-    case ScalarType::UInt16:
-      return static_cast<double>(load<std::uint16_t>(raw));
-    case ScalarType::Int32:
-      return static_cast<double>(load<std::int32_t>(raw));
-    case ScalarType::UInt32:
-      return static_cast<double>(load<std::uint32_t>(raw));
-    case ScalarType::Float32:
-      return static_cast<double>(load<float>(raw));
-    case ScalarType::Float64:
-      return load<double>(raw);
-    case ScalarType::Unknown:
-      break;
+      case ScalarType::Int8: return static_cast<double>(static_cast<std::int8_t>(raw[0]));
+      case ScalarType::UInt8: return static_cast<double>(raw[0]);
+      case ScalarType::Int16: return static_cast<double>(load<std::int16_t>(raw));
+      case ScalarType::UInt16: return static_cast<double>(load<std::uint16_t>(raw));
+      case ScalarType::Int32: return static_cast<double>(load<std::int32_t>(raw));
+      case ScalarType::UInt32: return static_cast<double>(load<std::uint32_t>(raw));
+      case ScalarType::Float32: return static_cast<double>(load<float>(raw));
+      case ScalarType::Float64: return load<double>(raw);
+      case ScalarType::Unknown: break;
     }
     return 0.0;
   }
 
   [[noreturn]] void failHere(const std::string& defect) const
   {
-    throw InputError(m_path, "PLY element '" + m_element->name + "' item " + std::to_string(m_item) +
-                               ": " + defect);
+    throw InputError(m_path, "PLY element '" + m_element->name + "' item " +
+                               std::to_string(m_item) + ": " + defect);
   }
 
 private:
@@ -322,7 +314,8 @@ private:
 
   double readAscii(ScalarType type)
   {
-    while (m_position < m_bytes.size() && std::isspace(static_cast<unsigned char>(m_bytes[m_position])))
+    while (m_position < m_bytes.size() &&
+           std::isspace(static_cast<unsigned char>(m_bytes[m_position])))
     {
       ++m_position;
     }
@@ -342,7 +335,8 @@ private:
     if (type == ScalarType::Float32 || type == ScalarType::Float64)
     {
       const auto result = std::from_chars(first, last, value);
-      if (result.ptr != last || (result.ec != std::errc() && result.ec != std::errc::result_out_of_range))
+      if (result.ptr != last ||
+          (result.ec != std::errc() && result.ec != std::errc::result_out_of_range))
       {
         failHere("cannot read '" + std::string(first, last) + "' as a number");
       }
@@ -407,19 +401,22 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fil
   {
     throw InputError(path, "PLY header has no vertex element with x, y and z");
   }
-  const int indicesProperty = faceElement ? findFirst(*faceElement, {"vertex_indices", "vertex_index"}) : -1;
-  if (indicesProperty < 0 || !faceElement->properties[static_cast<std::size_t>(indicesProperty)].isList)
+  const int indicesProperty =
+    faceElement ? findFirst(*faceElement, {"vertex_indices", "vertex_index"}) : -1;
+  if (indicesProperty < 0 ||
+      !faceElement->properties[static_cast<std::size_t>(indicesProperty)].isList)
   {
-    throw InputError(path, "no triangles (the PLY header has no face element with a vertex_indices list)");
+    throw InputError(
+      path, "no triangles (the PLY header has no face element with a vertex_indices list)");
   }
   // Reject counts the file cannot hold before reserving memory for them (a garbled header).
   const std::uint64_t dataBytes = bytes.size() - header.dataOffset;
   if (vertexElement->count > dataBytes || faceElement->count > dataBytes)
   {
-    throw InputError(path, "truncated: the PLY header announces " + std::to_string(vertexElement->count) +
-                             " vertices and " + std::to_string(faceElement->count) +
-                             " faces, more than the file's " + std::to_string(dataBytes) +
-                             " bytes of data can hold");
+    throw InputError(path, "truncated: the PLY header announces " +
+                             std::to_string(vertexElement->count) + " vertices and " +
+                             std::to_string(faceElement->count) + " faces, more than the file's " +
+                             std::to_string(dataBytes) + " bytes of data can hold");
   }
 
   const int x = vertexElement->find("x");
@@ -501,31 +498,34 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fil
             {
               throw InputError(path, "face " + std::to_string(item) + " refers to vertex " +
                                        std::to_string(static_cast<long long>(value)) +
-                                       ", out of range (the file has " + std::to_string(numVertices) +
-                                       " vertices)");
+                                       ", out of range (the file has " +
+                                       std::to_string(numVertices) + " vertices)");
             }
             ids[k] = static_cast<vtkIdType>(value);
           }
         }
         if (keep && !ids.empty())
         {
-          vtkCellArray* cells = ids.size() >= 3 ? polys.Get() : (ids.size() == 2 ? lines.Get() : verts.Get());
+          vtkCellArray* cells =
+            ids.size() >= 3 ? polys.Get() : (ids.size() == 2 ? lines.Get() : verts.Get());
           cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
         }
       }
       if (isVertex)
       {
         const auto id = static_cast<vtkIdType>(item);
-        points->SetPoint(id, values[static_cast<std::size_t>(x)], values[static_cast<std::size_t>(y)],
-                         values[static_cast<std::size_t>(z)]);
+        points->SetPoint(id, values[static_cast<std::size_t>(x)],
+                         values[static_cast<std::size_t>(y)], values[static_cast<std::size_t>(z)]);
         if (hasNormals)
         {
-          normals->SetTuple3(id, values[static_cast<std::size_t>(nx)], values[static_cast<std::size_t>(ny)],
+          normals->SetTuple3(id, values[static_cast<std::size_t>(nx)],
+                             values[static_cast<std::size_t>(ny)],
                              values[static_cast<std::size_t>(nz)]);
         }
         if (hasTexCoords)
         {
-          texCoords->SetTuple2(id, values[static_cast<std::size_t>(u)], values[static_cast<std::size_t>(v)]);
+          texCoords->SetTuple2(id, values[static_cast<std::size_t>(u)],
+                               values[static_cast<std::size_t>(v)]);
         }
       }
     }

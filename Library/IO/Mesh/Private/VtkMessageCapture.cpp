@@ -53,7 +53,10 @@ public:
   static CapturingOutputWindow* New();
   vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow)
 
-  void setPrevious(vtkOutputWindow* previous) { m_previous = previous; }
+    void setPrevious(vtkOutputWindow* previous)
+  {
+    m_previous = previous;
+  }
 
   void DisplayText(const char* text) override { forward(text, &vtkOutputWindow::DisplayText); }
   void DisplayErrorText(const char* text) override
@@ -176,7 +179,8 @@ bool VtkMessageCapture::hasErrors() const
 std::string VtkMessageCapture::bestMessage() const
 {
   auto isPipeline = [](const VtkMessage& m) {
-    return m.source == "vtkCompositeDataPipeline" || m.source == "vtkStreamingDemandDrivenPipeline" ||
+    return m.source == "vtkCompositeDataPipeline" ||
+           m.source == "vtkStreamingDemandDrivenPipeline" ||
            m.source == "vtkDemandDrivenPipeline" || m.source == "vtkExecutive";
   };
   for (const VtkMessage& message : m_messages)

@@ -12,7 +12,6 @@
 #include <vtkSTLReader.h>
 #include <vtkXMLPolyDataReader.h>
 
-
 namespace proxima::detail
 {
 namespace
@@ -56,8 +55,8 @@ vtkSmartPointer<vtkPolyData> readSingle(const std::string& path, const char* for
   throwIfFailed(path, capture, isEmpty(output), formatName);
   if (reader->GetErrorCode() != 0)
   {
-    throw InputError(path, std::string("cannot read the file as ") + formatName + " (VTK error code " +
-                             std::to_string(reader->GetErrorCode()) + ")");
+    throw InputError(path, std::string("cannot read the file as ") + formatName +
+                             " (VTK error code " + std::to_string(reader->GetErrorCode()) + ")");
   }
   return output;
 }
@@ -104,21 +103,19 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat
 {
   switch (format)
   {
-  case MeshFileFormat::Stl:
-    return readSingle<vtkSTLReader>(path, "STL");
+    case MeshFileFormat::Stl: return readSingle<vtkSTLReader>(path, "STL");
 
-  case MeshFileFormat::Vtp:
-    return readSingle<vtkXMLPolyDataReader>(path, "VTK XML poly data");
-  case MeshFileFormat::Gltf: // only its checked copy, through readGltfWithVtk
-  case MeshFileFormat::Obj:
-  case MeshFileFormat::Ply:
-  case MeshFileFormat::Off:
-    break; // our own readers, see MeshReader.cpp
+    case MeshFileFormat::Vtp: return readSingle<vtkXMLPolyDataReader>(path, "VTK XML poly data");
+    case MeshFileFormat::Gltf: // only its checked copy, through readGltfWithVtk
+    case MeshFileFormat::Obj:
+    case MeshFileFormat::Ply:
+    case MeshFileFormat::Off: break; // our own readers, see MeshReader.cpp
   }
   throw InputError(path, "internal: this format is not read through VTK");
 }
 
-vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath)
+vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath,
+                                             const std::string& userPath)
 {
   return readGltf(vtkPath, userPath);
 }

@@ -19,6 +19,7 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat
 /// glTF: every mesh of the default scene, node transforms applied, appended into one poly data,
 /// read from `vtkPath` (the checked copy of GltfGeometryFile.h, never the user's file), with the
 /// errors as readWithVtk's but naming `userPath`, the file the user gave.
-vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath);
+vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath,
+                                             const std::string& userPath);
 
 } // namespace proxima::detail

@@ -14,9 +14,8 @@ namespace
 const VtkMeshReaders& readers()
 {
   // Loaded once, by the first caller (a function-local static is initialised thread-safely).
-  static const VtkMeshReaders* const table =
-    reinterpret_cast<const VtkMeshReaders* (*)()>(
-      moduleEntry(PROXIMA_MODULE_PROXIMA_VTK_MESH_READERS, kVtkMeshReadersEntry))();
+  static const VtkMeshReaders* const table = reinterpret_cast<const VtkMeshReaders* (*)()>(
+    moduleEntry(PROXIMA_MODULE_PROXIMA_VTK_MESH_READERS, kVtkMeshReadersEntry))();
   return *table;
 }
 } // namespace
@@ -26,7 +25,8 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat
   return readers().readWithVtk(path, format);
 }
 
-vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath, const std::string& userPath)
+vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath,
+                                             const std::string& userPath)
 {
   return readers().readGltfWithVtk(vtkPath, userPath);
 }

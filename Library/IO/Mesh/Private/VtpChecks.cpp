@@ -55,7 +55,8 @@ bool attribute(const std::string& tag, const std::string& name, std::string& val
 void checkVtpPoints(const std::string& path)
 {
   std::ifstream stream(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(stream)),
+                         std::istreambuf_iterator<char>());
   // Appended binary data after <AppendedData> is not XML; the elements are all before it.
   const std::size_t appended = text.find("<AppendedData");
   const std::size_t limit = appended == std::string::npos ? text.size() : appended;
@@ -65,8 +66,8 @@ void checkVtpPoints(const std::string& path)
   {
     const std::size_t arrayStart = text.find("<DataArray", at);
     const std::size_t close = text.find("</Points", at);
-    const std::string where = "not a valid VTK XML poly data file: the <Points> element " +
-                              std::to_string(piece);
+    const std::string where =
+      "not a valid VTK XML poly data file: the <Points> element " + std::to_string(piece);
     if (arrayStart == std::string::npos || (close != std::string::npos && close < arrayStart))
     {
       throw InputError(path, where + " has no DataArray");

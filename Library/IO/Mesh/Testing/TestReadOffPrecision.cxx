@@ -33,7 +33,8 @@ std::vector<proxima::Vec3> positionsByStrtod(const std::string& path)
   std::string word[3];
   for (std::size_t v = 0; v < numVertices && file >> word[0] >> word[1] >> word[2]; ++v)
   {
-    positions.push_back({std::strtod(word[0].c_str(), nullptr), std::strtod(word[1].c_str(), nullptr),
+    positions.push_back({std::strtod(word[0].c_str(), nullptr),
+                         std::strtod(word[1].c_str(), nullptr),
                          std::strtod(word[2].c_str(), nullptr)});
   }
   EXPECT_EQ(positions.size(), numVertices) << path;
@@ -74,7 +75,9 @@ void expectSamePositions(const std::vector<proxima::Vec3>& read,
 class ReadOffPrecision : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  ReadOffPrecision() : ScratchFolderTest("proxima-io-off-") {}
+  ReadOffPrecision()
+    : ScratchFolderTest("proxima-io-off-")
+  {}
 };
 
 TEST_F(ReadOffPrecision, CoordinatesEqualTheTextParsedInDouble)

@@ -33,8 +33,7 @@ std::string sharedPath(const char* file)
 }
 
 class ReadSharedMesh : public testing::TestWithParam<SharedMesh>
-{
-};
+{};
 
 TEST_P(ReadSharedMesh, TriangleCountAndSizeMatchProvenance)
 {

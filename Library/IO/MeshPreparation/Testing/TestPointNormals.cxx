@@ -123,8 +123,8 @@ Oracle oracleNormals(const TriangleSoup& soup, double featureAngleDegrees, bool 
           continue;
         }
         const int j = cornerAt(f, point);
-        const double weight =
-          angleBetween(corner(f, (j + 1) % 3) - corner(f, j), corner(f, (j + 2) % 3) - corner(f, j));
+        const double weight = angleBetween(corner(f, (j + 1) % 3) - corner(f, j),
+                                           corner(f, (j + 2) % 3) - corner(f, j));
         sum += unitFaceNormal(f) * weight;
         weights += weight;
       }
@@ -150,8 +150,8 @@ Oracle oracleNormals(const TriangleSoup& soup, double featureAngleDegrees, bool 
         {
           continue;
         }
-        const double d = proxima::squaredDistance(
-          centroid, (corner(f, 0) + corner(f, 1) + corner(f, 2)) / 3.0);
+        const double d =
+          proxima::squaredDistance(centroid, (corner(f, 0) + corner(f, 1) + corner(f, 2)) / 3.0);
         if (d < nearest)
         {
           nearest = d;
@@ -208,7 +208,8 @@ void expectMatchesOracle(const TriangleSoup& soup, const TriangleSoup& result,
         EXPECT_EQ(result.texCoords[after].u, soup.texCoords[before].u);
         EXPECT_EQ(result.texCoords[after].v, soup.texCoords[before].v);
       }
-      const double difference = maxDifference(result.pointNormals[after], oracle.cornerNormals[3 * t + k]);
+      const double difference =
+        maxDifference(result.pointNormals[after], oracle.cornerNormals[3 * t + k]);
       if (difference > 1e-12)
       {
         ++failures;
@@ -240,9 +241,9 @@ TEST(PointNormals, BoxAt30DegreesHas24PointsWithAxisAlignedNormals)
   for (std::size_t t = 0; t < result.triangles.size(); ++t)
   {
     const auto& tri = result.triangles[t];
-    const Vec3 face = proxima::normalizedOrZero(
-      proxima::cross(result.points[tri[1]] - result.points[tri[0]],
-                     result.points[tri[2]] - result.points[tri[0]]));
+    const Vec3 face =
+      proxima::normalizedOrZero(proxima::cross(result.points[tri[1]] - result.points[tri[0]],
+                                               result.points[tri[2]] - result.points[tri[0]]));
     for (std::uint32_t index : tri)
     {
       const Vec3& n = result.pointNormals[index];
@@ -267,8 +268,8 @@ TEST(PointNormals, BoxAtBothEndsOfTheRange)
   for (std::size_t i = 0; i < smooth.points.size(); ++i)
   {
     const Vec3& p = smooth.points[i];
-    const Vec3 diagonal = Vec3{p.x > 0 ? 1.0 : -1.0, p.y > 0 ? 1.0 : -1.0, p.z > 0 ? 1.0 : -1.0} /
-                          std::sqrt(3.0);
+    const Vec3 diagonal =
+      Vec3{p.x > 0 ? 1.0 : -1.0, p.y > 0 ? 1.0 : -1.0, p.z > 0 ? 1.0 : -1.0} / std::sqrt(3.0);
     EXPECT_LE(maxDifference(smooth.pointNormals[i], diagonal), 1e-12) << "point " << i;
   }
   for (double angle : kAngles)
@@ -376,10 +377,11 @@ TEST(PointNormals, RandomSoupsAgreeWithBruteForce)
 TEST(PointNormals, ZeroAreaTrianglesBorrowFromTheNearestNeighbour)
 {
   TriangleSoup soup;
-  soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {5, 0, 0}, {6, 0, 0}, {7, 0, 0}};
-  soup.triangles = {{0, 1, 2}, // floor, normal +z
-                    {0, 4, 3}, // wall x = 0, normal -x
-                    {0, 0, 1}, // zero area on the floor's edge: nearer the floor
+  soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                 {0, 0, 1}, {5, 0, 0}, {6, 0, 0}, {7, 0, 0}};
+  soup.triangles = {{0, 1, 2},  // floor, normal +z
+                    {0, 4, 3},  // wall x = 0, normal -x
+                    {0, 0, 1},  // zero area on the floor's edge: nearer the floor
                     {5, 6, 7}}; // zero area, alone: +z at every corner
   const TriangleSoup result = proxima::withFeatureAngleNormals(soup, 30.0);
   expectMatchesOracle(soup, result, 30.0, true);
@@ -437,9 +439,9 @@ TEST(PointNormals, TextureCoordinatesFollowEverySplit)
 TEST(PointNormals, BadInputThrows)
 {
   const TriangleSoup box = proxima::makeBox({1, 1, 1});
-  for (double angle : {-1.0, -1e-300, 180.0000001, 360.0, std::nan(""),
-                       std::numeric_limits<double>::infinity(),
-                       -std::numeric_limits<double>::infinity()})
+  for (double angle :
+       {-1.0, -1e-300, 180.0000001, 360.0, std::nan(""), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()})
   {
     EXPECT_THROW(proxima::withFeatureAngleNormals(box, angle), std::invalid_argument) << angle;
   }
@@ -552,7 +554,8 @@ TEST_P(SharedMeshNormals, CornersStayWithinTheAngleAndMatchTheOracle)
     used += n > 0 ? 1 : 0;
     split += n > 1 ? 1 : 0;
   }
-  const double gained = static_cast<double>(result.points.size() - used) / static_cast<double>(used);
+  const double gained =
+    static_cast<double>(result.points.size() - used) / static_cast<double>(used);
   std::cout << c.file << " at " << c.featureAngleDegrees << " degrees: " << soup.points.size()
             << " points in the file, " << used << " used, " << result.points.size()
             << " after splitting (+" << 100.0 * gained << "%; " << split << " points split), "
@@ -573,20 +576,20 @@ TEST_P(SharedMeshNormals, CornersStayWithinTheAngleAndMatchTheOracle)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-  Shared, SharedMeshNormals,
-  testing::Values(SharedCase{"fandisk.off", 30.0}, SharedCase{"M3x10_screw.stl", 30.0},
-                  SharedCase{"stanford-bunny.obj", 60.0}),
-  [](const testing::TestParamInfo<SharedCase>& info) {
-    std::string name = info.param.file;
-    for (char& ch : name)
-    {
-      if (!std::isalnum(static_cast<unsigned char>(ch)))
-      {
-        ch = '_';
-      }
-    }
-    return name;
-  });
+INSTANTIATE_TEST_SUITE_P(Shared, SharedMeshNormals,
+                         testing::Values(SharedCase{"fandisk.off", 30.0},
+                                         SharedCase{"M3x10_screw.stl", 30.0},
+                                         SharedCase{"stanford-bunny.obj", 60.0}),
+                         [](const testing::TestParamInfo<SharedCase>& info) {
+                           std::string name = info.param.file;
+                           for (char& ch : name)
+                           {
+                             if (!std::isalnum(static_cast<unsigned char>(ch)))
+                             {
+                               ch = '_';
+                             }
+                           }
+                           return name;
+                         });
 
 } // namespace

@@ -42,7 +42,10 @@ std::uint32_t bigEndian(const unsigned char* bytes)
          (std::uint32_t(bytes[2]) << 8) | std::uint32_t(bytes[3]);
 }
 
-bool isLetter(unsigned char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isLetter(unsigned char c)
+{
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
 
 } // namespace
 

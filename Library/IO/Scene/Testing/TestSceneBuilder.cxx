@@ -193,8 +193,8 @@ TEST_F(SceneBuilder, PosesMovePointsAndTurnNormals)
 
 TEST_F(SceneBuilder, WithoutAPoseTheFileIsKeptBitForBit)
 {
-  const LoadedScene loaded = proxima::loadSceneFile(
-    write("plain.json", R"({"objects": [{"mesh": "meshes/sphere.obj"}]})"));
+  const LoadedScene loaded =
+    proxima::loadSceneFile(write("plain.json", R"({"objects": [{"mesh": "meshes/sphere.obj"}]})"));
   const TriangleSoup soup = sphere();
   const proxima::TriangleMesh& mesh = loaded.scene->objects[0].mesh;
   ASSERT_EQ(mesh.numPoints(), soup.points.size());
@@ -256,9 +256,9 @@ TEST_F(SceneBuilder, TexturesOnAMeshWithoutTextureCoordinates)
     {"mesh": "meshes/sphere.obj",
      "material": {"textures": [{"image": "bumps.png", "role": "bump", "amplitude": 0.0001}]}}]})");
   std::string path;
-  EXPECT_EQ(refusal(scene, &path),
-            scene + ": objects[1].material.textures: the mesh " + pathOf("meshes/sphere.obj") +
-              " has no texture coordinates, which texture maps need");
+  EXPECT_EQ(refusal(scene, &path), scene + ": objects[1].material.textures: the mesh " +
+                                     pathOf("meshes/sphere.obj") +
+                                     " has no texture coordinates, which texture maps need");
   EXPECT_EQ(path, scene);
 }
 
@@ -285,9 +285,10 @@ TEST_F(SceneBuilder, TexturesOnAMeshWithoutTextureCoordinatesInADescriptionMadeI
 TEST_F(SceneBuilder, AMissingMeshIsTheMeshReadersError)
 {
   std::string path;
-  const std::string message = refusal(
-    write("missing.json", R"({"objects": [{"mesh": "meshes/box.obj"}, {"mesh": "meshes/gone.stl"}]})"),
-    &path);
+  const std::string message =
+    refusal(write("missing.json",
+                  R"({"objects": [{"mesh": "meshes/box.obj"}, {"mesh": "meshes/gone.stl"}]})"),
+            &path);
   EXPECT_EQ(path, pathOf("meshes/gone.stl"));
   EXPECT_TRUE(message.starts_with(pathOf("meshes/gone.stl") + ": cannot open the file")) << message;
 }
@@ -305,9 +306,10 @@ TEST_F(SceneBuilder, ABadMeshIsTheMeshReadersError)
 TEST_F(SceneBuilder, AMissingImageIsTheImageReadersError)
 {
   std::string path;
-  const std::string message = refusal(write("noimage.json", R"({"objects": [{"mesh": "meshes/box.obj",
+  const std::string message =
+    refusal(write("noimage.json", R"({"objects": [{"mesh": "meshes/box.obj",
     "material": {"textures": [{"image": "absent.png", "role": "bump", "amplitude": 0.001}]}}]})"),
-                                      &path);
+            &path);
   EXPECT_EQ(path, pathOf("absent.png"));
   EXPECT_TRUE(message.starts_with(pathOf("absent.png") + ": cannot open")) << message;
 }

@@ -25,8 +25,9 @@ using proxima::TextureRole;
 class SceneFile : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  SceneFile() : ScratchFolderTest("proxima-scene-") {}
-
+  SceneFile()
+    : ScratchFolderTest("proxima-scene-")
+  {}
 
   /// Expects readSceneFile(path) to throw an InputError whose one-line message is
   /// "<path>: <expected>" exactly.
@@ -68,10 +69,9 @@ protected:
   /// A scene of one object `{"mesh": "m.obj", <extra>}`.
   std::string oneObject(const std::string& name, const std::string& extra) const
   {
-    return write(name, R"({"objects": [{"mesh": "m.obj")" + (extra.empty() ? "" : ", " + extra) +
-                         "}]}");
+    return write(name,
+                 R"({"objects": [{"mesh": "m.obj")" + (extra.empty() ? "" : ", " + extra) + "}]}");
   }
-
 };
 
 TEST_F(SceneFile, EveryKeyRoundTripsIntoTheDescription)
@@ -191,17 +191,25 @@ TEST_F(SceneFile, ScenePathWithoutFolderKeepsRelativeMeshPaths)
 
 TEST_F(SceneFile, MissingFile)
 {
-  expectRefused((m_dir / "absent.json").string(), "cannot open the file (No such file or directory)");
+  expectRefused((m_dir / "absent.json").string(),
+                "cannot open the file (No such file or directory)");
 }
 
-TEST_F(SceneFile, Directory) { expectRefused(m_dir.string(), "is a directory, not a scene file"); }
+TEST_F(SceneFile, Directory)
+{
+  expectRefused(m_dir.string(), "is a directory, not a scene file");
+}
 
-TEST_F(SceneFile, EmptyFile) { expectRefused(write("empty.json", ""), "the file is empty"); }
+TEST_F(SceneFile, EmptyFile)
+{
+  expectRefused(write("empty.json", ""), "the file is empty");
+}
 
 TEST_F(SceneFile, NotJsonSaysLineAndColumn)
 {
-  expectRefusedStartingWith(write("truncated.json", "{\n  \"objects\": [\n    {\"mesh\": \"m.obj\"},\n"),
-                            "not valid JSON: line 4, column 1: syntax error");
+  expectRefusedStartingWith(
+    write("truncated.json", "{\n  \"objects\": [\n    {\"mesh\": \"m.obj\"},\n"),
+    "not valid JSON: line 4, column 1: syntax error");
 }
 
 TEST_F(SceneFile, AMeshFileIsNotJson)
@@ -319,8 +327,9 @@ TEST_F(SceneFile, TranslationWithAString)
 TEST_F(SceneFile, RotationWithBothForms)
 {
   expectRefused(
-    oneObject("both.json",
-              R"("pose": {"rotation": {"axis_angle_deg": [0, 0, 1, 90], "quaternion": [1, 0, 0, 0]}})"),
+    oneObject(
+      "both.json",
+      R"("pose": {"rotation": {"axis_angle_deg": [0, 0, 1, 90], "quaternion": [1, 0, 0, 0]}})"),
     R"(objects[0].pose.rotation: takes only one of "axis_angle_deg" and "quaternion")");
 }
 
@@ -332,9 +341,10 @@ TEST_F(SceneFile, RotationWithNeitherForm)
 
 TEST_F(SceneFile, RotationAboutAZeroAxis)
 {
-  expectRefused(oneObject("axis0.json", R"("pose": {"rotation": {"axis_angle_deg": [0, 0, 0, 90]}})"),
-                "objects[0].pose.rotation.axis_angle_deg: the axis (the first three numbers) must "
-                "not be zero");
+  expectRefused(
+    oneObject("axis0.json", R"("pose": {"rotation": {"axis_angle_deg": [0, 0, 0, 90]}})"),
+    "objects[0].pose.rotation.axis_angle_deg: the axis (the first three numbers) must "
+    "not be zero");
 }
 
 TEST_F(SceneFile, AxisAngleOfThreeNumbers)
@@ -399,8 +409,9 @@ TEST_F(SceneFile, ShadingNotAMode)
 
 TEST_F(SceneFile, MisspeltMaterialKey)
 {
-  expectRefused(oneObject("fricton.json", R"("material": {"static_fricton": 0.5})"),
-                R"(objects[0].material.static_fricton: unknown key (did you mean "static_friction"?))");
+  expectRefused(
+    oneObject("fricton.json", R"("material": {"static_fricton": 0.5})"),
+    R"(objects[0].material.static_fricton: unknown key (did you mean "static_friction"?))");
 }
 
 // Textures.
@@ -428,10 +439,10 @@ TEST_F(SceneFile, TextureRoleNotKnown)
 
 TEST_F(SceneFile, BumpWithoutAmplitude)
 {
-  expectRefused(oneObject("noamp.json",
-                          R"("material": {"textures": [{"image": "a.png", "role": "bump"}]})"),
-                R"(objects[0].material.textures[0]: missing the required key "amplitude" )"
-                R"((metres of height per unit of image value, for a bump map))");
+  expectRefused(
+    oneObject("noamp.json", R"("material": {"textures": [{"image": "a.png", "role": "bump"}]})"),
+    R"(objects[0].material.textures[0]: missing the required key "amplitude" )"
+    R"((metres of height per unit of image value, for a bump map))");
 }
 
 TEST_F(SceneFile, BumpOfZeroAmplitude)
@@ -445,9 +456,8 @@ TEST_F(SceneFile, BumpOfZeroAmplitude)
 TEST_F(SceneFile, AmplitudeOnAFrictionMap)
 {
   expectRefused(
-    oneObject("famp.json",
-              R"("material": {"static_friction": 0.5, "textures": [)"
-              R"({"image": "a.png", "role": "friction", "amplitude": 0.1}]})"),
+    oneObject("famp.json", R"("material": {"static_friction": 0.5, "textures": [)"
+                           R"({"image": "a.png", "role": "friction", "amplitude": 0.1}]})"),
     "objects[0].material.textures[0].amplitude: is for bump maps only: a friction map scales the "
     "material's coefficient by the image value");
 }
@@ -463,9 +473,8 @@ TEST_F(SceneFile, FrictionMapWithoutFriction)
 TEST_F(SceneFile, ViscosityMapWithoutViscosity)
 {
   expectRefused(
-    oneObject("vmap.json",
-              R"("material": {"dynamic_friction": 0.3, "textures": [)"
-              R"({"image": "a.png", "role": "viscosity"}]})"),
+    oneObject("vmap.json", R"("material": {"dynamic_friction": 0.3, "textures": [)"
+                           R"({"image": "a.png", "role": "viscosity"}]})"),
     "objects[0].material.textures[0].role: a viscosity map scales viscosity, but the material "
     "does not set it above 0");
 }
@@ -482,33 +491,36 @@ TEST_F(SceneFile, TextureChannelNotKnown)
 
 TEST_F(SceneFile, TextureImageNotAPath)
 {
-  expectRefused(oneObject("image0.json",
-                          R"("material": {"textures": [{"image": null, "role": "bump", "amplitude": 1}]})"),
-                "objects[0].material.textures[0].image: must be a file path (a non-empty string), "
-                "got null");
+  expectRefused(
+    oneObject("image0.json",
+              R"("material": {"textures": [{"image": null, "role": "bump", "amplitude": 1}]})"),
+    "objects[0].material.textures[0].image: must be a file path (a non-empty string), "
+    "got null");
 }
 
 TEST_F(SceneFile, LongValuesAreCutShortInTheMessage)
 {
-  expectRefused(oneObject("long.json",
-                          R"("scale": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17])"),
-                "objects[0].scale: must be a number > 0, got [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15 ...");
+  expectRefused(
+    oneObject("long.json",
+              R"("scale": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17])"),
+    "objects[0].scale: must be a number > 0, got [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15 ...");
 }
 
 TEST_F(SceneFile, DeeplyNestedValuesAreQuotedWithoutRecursingThroughThem)
 {
   // The parser takes any depth; the message about the value must not recurse through it either.
   const std::size_t depth = 100000;
-  expectRefused(oneObject("deep.json", R"("scale": )" + std::string(depth, '[') +
-                                         std::string(depth, ']')),
-                "objects[0].scale: must be a number > 0, got [[[[[[[[...]]]]]]]]");
+  expectRefused(
+    oneObject("deep.json", R"("scale": )" + std::string(depth, '[') + std::string(depth, ']')),
+    "objects[0].scale: must be a number > 0, got [[[[[[[[...]]]]]]]]");
   std::string wide = "[1";
   for (int i = 0; i < 100000; ++i)
   {
     wide += ",1";
   }
-  expectRefused(oneObject("wide.json", R"("scale": )" + wide + "]"),
-                "objects[0].scale: must be a number > 0, got [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1 ...");
+  expectRefused(
+    oneObject("wide.json", R"("scale": )" + wide + "]"),
+    "objects[0].scale: must be a number > 0, got [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1 ...");
 }
 
 TEST_F(SceneFile, LongTokensAreCutShortInJsonErrors)
@@ -536,7 +548,8 @@ TEST_F(SceneFile, LongKeysAreCutShortInTheLocation)
                 "objects[0]." + std::string(36, 'k') +
                   " ...: unknown key (the keys here are mesh, scale, pose, material)");
   expectRefused(oneObject("key2.json", "\"" + key + "\": 1, \"" + key + "\": 2"),
-                "objects[0]." + std::string(36, 'k') + " ...: the key appears twice in the same object");
+                "objects[0]." + std::string(36, 'k') +
+                  " ...: the key appears twice in the same object");
 }
 
 TEST_F(SceneFile, QuotedValuesAreNotCutInsideACharacter)

@@ -39,8 +39,9 @@ double pictureValue(int x, int y, int c)
 class TextureImageFile : public proxima::testing_support::ScratchFolderTest
 {
 protected:
-  TextureImageFile() : ScratchFolderTest("proxima-texture-") {}
-
+  TextureImageFile()
+    : ScratchFolderTest("proxima-texture-")
+  {}
 
   /// Writes the kWidth x kHeight picture with `channels` channels in `type` (values rounded by
   /// OpenImageIO's conversion from float) and returns its path.
@@ -110,7 +111,8 @@ protected:
     const std::string printed = testing::internal::GetCapturedStderr();
     ASSERT_FALSE(message.empty()) << path << " was accepted";
     EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
-    EXPECT_NE(message.find(defect), std::string::npos) << "wanted '" << defect << "' in: " << message;
+    EXPECT_NE(message.find(defect), std::string::npos)
+      << "wanted '" << defect << "' in: " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_EQ(printed, "") << "printed while reading " << path;
   }
@@ -130,10 +132,12 @@ protected:
       }
     }
   }
-
 };
 
-double rounded(double value, double levels) { return std::round(value * levels) / levels; }
+double rounded(double value, double levels)
+{
+  return std::round(value * levels) / levels;
+}
 
 // OpenImageIO normalises k by multiplying with 1 / 255 (or 1 / 65535) in float, which may land
 // one float ulp from the float nearest k / 255; the levels themselves are 4e-3 (1.5e-5) apart.
@@ -165,8 +169,10 @@ TEST_F(TextureImageFile, Png8BitRgbaChannelsAndLuminance)
     return [c](int x, int y) { return double(float(rounded(pictureValue(x, y, c), 255.0))); };
   };
   expectFlipped(proxima::readTextureImage(path, TextureChannel::Red), channel(0), kIntegerRounding);
-  expectFlipped(proxima::readTextureImage(path, TextureChannel::Green), channel(1), kIntegerRounding);
-  expectFlipped(proxima::readTextureImage(path, TextureChannel::Blue), channel(2), kIntegerRounding);
+  expectFlipped(proxima::readTextureImage(path, TextureChannel::Green), channel(1),
+                kIntegerRounding);
+  expectFlipped(proxima::readTextureImage(path, TextureChannel::Blue), channel(2),
+                kIntegerRounding);
   expectFlipped(
     proxima::readTextureImage(path),
     [&](int x, int y) {
@@ -174,7 +180,8 @@ TEST_F(TextureImageFile, Png8BitRgbaChannelsAndLuminance)
     },
     1e-7);
   // Alpha is a channel of its own and does not scale the colour.
-  expectFlipped(proxima::readTextureImage(path, TextureChannel::Alpha), channel(3), kIntegerRounding);
+  expectFlipped(proxima::readTextureImage(path, TextureChannel::Alpha), channel(3),
+                kIntegerRounding);
 }
 
 TEST_F(TextureImageFile, PngGreyWithAlpha)
@@ -184,7 +191,8 @@ TEST_F(TextureImageFile, PngGreyWithAlpha)
     return [c](int x, int y) { return double(float(rounded(pictureValue(x, y, c), 255.0))); };
   };
   expectFlipped(proxima::readTextureImage(path), channel(0), kIntegerRounding);
-  expectFlipped(proxima::readTextureImage(path, TextureChannel::Alpha), channel(1), kIntegerRounding);
+  expectFlipped(proxima::readTextureImage(path, TextureChannel::Alpha), channel(1),
+                kIntegerRounding);
   expectRefused(path, "has no red channel", TextureChannel::Red);
 }
 
@@ -193,7 +201,8 @@ TEST_F(TextureImageFile, Tiff16BitGrey)
   const std::string path = writePicture("picture.tif", 1, OIIO::TypeDesc::UINT16);
   expectFlipped(
     proxima::readTextureImage(path),
-    [](int x, int y) { return double(float(rounded(pictureValue(x, y, 0), 65535.0))); }, kIntegerRounding);
+    [](int x, int y) { return double(float(rounded(pictureValue(x, y, 0), 65535.0))); },
+    kIntegerRounding);
   expectRefused(path, "has no green channel", TextureChannel::Green);
 }
 
@@ -244,7 +253,8 @@ TEST_F(TextureImageFile, ContentDecidesTheFormatNotTheExtension)
   const std::string misnamed = writeBytes("picture.tif", readBytes(png));
   expectFlipped(
     proxima::readTextureImage(misnamed),
-    [](int x, int y) { return double(float(rounded(pictureValue(x, y, 0), 255.0))); }, kIntegerRounding);
+    [](int x, int y) { return double(float(rounded(pictureValue(x, y, 0), 255.0))); },
+    kIntegerRounding);
 }
 
 TEST_F(TextureImageFile, SharedSpotTexture)
@@ -276,11 +286,20 @@ TEST_F(TextureImageFile, SharedSpotTexture)
   expectRefused(path.string(), "has no alpha channel", TextureChannel::Alpha);
 }
 
-TEST_F(TextureImageFile, MissingFile) { expectRefused(pathOf("absent.png"), "cannot open"); }
+TEST_F(TextureImageFile, MissingFile)
+{
+  expectRefused(pathOf("absent.png"), "cannot open");
+}
 
-TEST_F(TextureImageFile, Directory) { expectRefused(m_dir.string(), "is a directory"); }
+TEST_F(TextureImageFile, Directory)
+{
+  expectRefused(m_dir.string(), "is a directory");
+}
 
-TEST_F(TextureImageFile, EmptyFile) { expectRefused(writeBytes("empty.png", ""), "empty"); }
+TEST_F(TextureImageFile, EmptyFile)
+{
+  expectRefused(writeBytes("empty.png", ""), "empty");
+}
 
 TEST_F(TextureImageFile, GarbageWithPngName)
 {
@@ -345,8 +364,8 @@ TEST_F(TextureImageFile, TruncatedAnywhere)
     {
       std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
       ASSERT_TRUE(output);
-      const OIIO::TypeDesc type = name.ends_with(".exr") ? OIIO::TypeDesc::HALF
-                                                          : OIIO::TypeDesc::UINT8;
+      const OIIO::TypeDesc type =
+        name.ends_with(".exr") ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8;
       ASSERT_TRUE(output->open(path, OIIO::ImageSpec(size, size, 3, type)));
       ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
       ASSERT_TRUE(output->close());
@@ -355,7 +374,8 @@ TEST_F(TextureImageFile, TruncatedAnywhere)
     EXPECT_NO_THROW((void)proxima::readTextureImage(path)) << name;
     for (const double fraction : {0.01, 0.25, 0.5, 0.75, 0.99})
     {
-      const std::size_t cut = std::max<std::size_t>(4, std::size_t(fraction * double(whole.size())));
+      const std::size_t cut =
+        std::max<std::size_t>(4, std::size_t(fraction * double(whole.size())));
       expectRefused(writeBytes(std::to_string(cut) + "-" + name, whole.substr(0, cut)), "");
     }
     expectRefused(writeBytes("last-byte-" + name, whole.substr(0, whole.size() - 1)), "");
@@ -376,8 +396,7 @@ TEST_F(TextureImageFile, TwoColourChannels)
 TEST_F(TextureImageFile, ExrWithNan)
 {
   // The NaN in pixel (2, 1) from the top left, red channel of an RGB image.
-  const std::string path =
-    writePicture("nan.exr", 3, OIIO::TypeDesc::FLOAT, (1 * kWidth + 2) * 3);
+  const std::string path = writePicture("nan.exr", 3, OIIO::TypeDesc::FLOAT, (1 * kWidth + 2) * 3);
   expectRefused(path, "is not finite");
   expectRefused(path, "pixel (2, 1)", TextureChannel::Red);
   // A texture that does not use the bad channel is fine.
