@@ -71,8 +71,7 @@ bool allTriangles(const PolygonSoup& polygons)
 }
 } // namespace
 
-TriangleSoup polygonsToTriangles(const PolygonSoup& polygons, const std::string& path,
-                                 double scale)
+TriangleSoup polygonsToTriangles(const PolygonSoup& polygons, const std::string& path, double scale)
 {
   const std::int64_t numPoints = polygons.numPoints();
   const std::int64_t numFaces = polygons.numFaces();

@@ -20,9 +20,9 @@ TriangleSoup readSoupWithVtk(const std::string& path, MeshFileFormat format, dou
 TriangleSoup readGltfSoupWithVtk(const std::string& vtkPath, const std::string& userPath,
                                  double scale);
 
-/// `polygons` as a vtkPolyData (the one the readers built before they produced a PolygonSoup),
-/// then polyDataToSoup, whose vtkTriangleFilter splits the polygons of more than three corners.
-TriangleSoup triangulateWithVtk(const PolygonSoup& polygons, const std::string& path,
-                                double scale);
+/// `polygons` as a vtkPolyData (its points and faces as the readers built them before they made a
+/// PolygonSoup), then polyDataToSoup, whose vtkTriangleFilter splits the polygons of more than
+/// three corners.
+TriangleSoup triangulateWithVtk(const PolygonSoup& polygons, const std::string& path, double scale);
 
 } // namespace proxima::detail
