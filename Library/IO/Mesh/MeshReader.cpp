@@ -2,17 +2,14 @@
 
 #include "IO/InputChecks/FileChecks.h"
 #include "IO/Mesh/MeshFileFormat.h"
-#include "IO/Mesh/PolyDataToSoup.h"
 #include "IO/Mesh/Private/FormatSignatures.h"
 #include "IO/Mesh/Private/GltfChecks.h"
 #include "IO/Mesh/Private/ObjReader.h"
 #include "IO/Mesh/Private/OffReader.h"
 #include "IO/Mesh/Private/PlyReader.h"
-#include "IO/Mesh/Private/VtkReaders.h"
+#include "IO/Mesh/Private/PolygonsToTriangles.h"
+#include "IO/Mesh/Private/VtkOnUse.h"
 #include "IO/Mesh/Private/VtpChecks.h"
-
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
 
 #include <cmath>
 #include <filesystem>
@@ -41,28 +38,29 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
   const std::uintmax_t fileSize = detail::requireReadableFile(path);
   detail::checkSignature(path, *format, fileSize);
 
-  vtkSmartPointer<vtkPolyData> data;
+  // OBJ, PLY and OFF are read into plain C++ and converted here, without VTK; STL, VTP and glTF
+  // are read by VTK in its module, which hands back the soup polyDataToSoup makes.
   switch (*format)
   {
-    case MeshFileFormat::Off: data = detail::readOffWithOpenMesh(path); break;
-    case MeshFileFormat::Ply: data = detail::readPly(path, fileSize); break;
-    case MeshFileFormat::Obj: data = detail::readObj(path); break;
+    case MeshFileFormat::Off:
+      return detail::polygonsToTriangles(detail::readOffWithOpenMesh(path), path, scale);
+    case MeshFileFormat::Ply:
+      return detail::polygonsToTriangles(detail::readPly(path, fileSize), path, scale);
+    case MeshFileFormat::Obj:
+      return detail::polygonsToTriangles(detail::readObj(path), path, scale);
     case MeshFileFormat::Vtp:
       // vtkXMLPolyDataReader leaks its points on a Points array without three components.
       detail::checkVtpPoints(path);
-      data = detail::readWithVtk(path, *format);
-      break;
+      return detail::readSoupWithVtk(path, *format, scale);
     case MeshFileFormat::Gltf:
     {
       // VTK's loader trusts the file's lengths and indices (a SEGV on a fuzzed GLB): ours first,
       // and then VTK reads the checked document's geometry, not the file itself.
       const detail::GltfGeometryFile geometry = detail::checkGltfAndCopyGeometry(path, fileSize);
-      data = detail::readGltfWithVtk(geometry.path(), path);
-      break;
+      return detail::readGltfSoupWithVtk(geometry.path(), path, scale);
     }
-    default: data = detail::readWithVtk(path, *format); break;
+    default: return detail::readSoupWithVtk(path, *format, scale);
   }
-  return polyDataToSoup(data, path, scale);
 }
 
 TriangleMesh loadTriangleMesh(const std::string& path, double scale)

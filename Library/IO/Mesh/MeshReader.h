@@ -20,7 +20,9 @@ namespace proxima
 /// data, silently or by crashing; see IO/Mesh/Private/ObjReader.h and PlyReader.h). Precision: OBJ,
 /// PLY, VTP and ASCII OFF as written (OFF in double despite OpenMesh's float parse, see
 /// IO/Mesh/Private/OffReader.h); STL, glTF and binary OFF in single precision. Polygons and triangle
-/// strips are triangulated; lines and vertices are ignored. Point normals and texture
+/// strips are triangulated (OBJ, PLY and OFF without VTK when their faces are all triangles;
+/// polygons of more than three corners, and STL, VTP and glTF, through VTK in a module loaded on
+/// first use); lines and vertices are ignored. Point normals and texture
 /// coordinates are carried over when the file has them (one per point). Every coordinate is
 /// multiplied by `scale` (file units to metres).
 ///

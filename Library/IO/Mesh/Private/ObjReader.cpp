@@ -2,13 +2,6 @@
 
 #include "IO/InputChecks/InputError.h"
 
-#include <vtkCellArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -313,39 +306,34 @@ ParsedObj parse(const std::string& path)
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
+PolygonSoup readObj(const std::string& path)
 {
   const ParsedObj obj = parse(path);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  vtkNew<vtkDoubleArray> texCoords;
-  texCoords->SetName("TCoords");
-  texCoords->SetNumberOfComponents(2);
+  PolygonSoup polygons;
 
   // Point i is the file's vertex i (unused ones included), with the vt and vn of the first corner
   // that names it; a corner naming the same vertex with another vt or vn (a UV seam, a crease)
   // gets a point of its own, appended. Files written with one vt and vn per vertex thus keep
   // their numbering exactly.
-  const auto numVertices = static_cast<vtkIdType>(obj.vertices.size() / 3);
+  const auto numVertices = static_cast<std::int64_t>(obj.vertices.size() / 3);
   const bool withAttributes = obj.usesTexCoords || obj.usesNormals;
   std::vector<std::array<std::uint32_t, 2>> attributesOf(
     withAttributes ? static_cast<std::size_t>(numVertices) : 0, {0u, 0u});
   std::vector<bool> named(withAttributes ? static_cast<std::size_t>(numVertices) : 0, false);
   auto appendPoint = [&](std::uint32_t vertex, std::uint32_t texCoord, std::uint32_t normal) {
     const double* v = &obj.vertices[3 * (vertex - 1)];
-    points->InsertNextPoint(v[0], v[1], v[2]);
+    polygons.addPoint(v[0], v[1], v[2]);
     if (obj.usesNormals)
     {
       const double zero[3] = {0.0, 0.0, 0.0};
-      normals->InsertNextTuple(normal ? &obj.normals[3 * (normal - 1)] : zero);
+      const double* n = normal ? &obj.normals[3 * (normal - 1)] : zero;
+      polygons.normals.insert(polygons.normals.end(), n, n + 3);
     }
     if (obj.usesTexCoords)
     {
       const double zero[2] = {0.0, 0.0};
-      texCoords->InsertNextTuple(texCoord ? &obj.texCoords[2 * (texCoord - 1)] : zero);
+      const double* t = texCoord ? &obj.texCoords[2 * (texCoord - 1)] : zero;
+      polygons.texCoords.insert(polygons.texCoords.end(), t, t + 2);
     }
   };
   if (withAttributes)
@@ -359,8 +347,8 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
       }
     }
   }
-  points->Allocate(numVertices);
-  for (vtkIdType i = 0; i < numVertices; ++i)
+  polygons.points.reserve(obj.vertices.size());
+  for (std::int64_t i = 0; i < numVertices; ++i)
   {
     const auto vertex = static_cast<std::uint32_t>(i + 1);
     const std::array<std::uint32_t, 2> attributes = withAttributes
@@ -368,8 +356,8 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
                                                       : std::array<std::uint32_t, 2>{0u, 0u};
     appendPoint(vertex, attributes[0], attributes[1]);
   }
-  std::vector<vtkIdType> pointOfCorner(obj.corners.size());
-  std::unordered_map<Corner, vtkIdType, CornerHash> extraPoints;
+  std::vector<std::int64_t> pointOfCorner(obj.corners.size());
+  std::unordered_map<Corner, std::int64_t, CornerHash> extraPoints;
   for (std::size_t c = 0; c < obj.corners.size(); ++c)
   {
     const Corner& corner = obj.corners[c];
@@ -377,10 +365,10 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
     if (!withAttributes ||
         (attributesOf[vertex][0] == corner[1] && attributesOf[vertex][1] == corner[2]))
     {
-      pointOfCorner[c] = static_cast<vtkIdType>(vertex);
+      pointOfCorner[c] = static_cast<std::int64_t>(vertex);
       continue;
     }
-    const auto [found, inserted] = extraPoints.emplace(corner, points->GetNumberOfPoints());
+    const auto [found, inserted] = extraPoints.emplace(corner, polygons.numPoints());
     if (inserted)
     {
       appendPoint(corner[0], corner[1], corner[2]);
@@ -388,47 +376,23 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path)
     pointOfCorner[c] = found->second;
   }
 
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkCellArray> verts;
   std::size_t first = 0;
   for (std::size_t cell = 0; cell < obj.cellSizes.size(); ++cell)
   {
     const std::uint32_t size = obj.cellSizes[cell];
-    const vtkIdType* ids = &pointOfCorner[first];
+    const std::int64_t* ids = &pointOfCorner[first];
     first += size;
-    vtkCellArray* target = verts;
-    if (obj.cellKinds[cell] == CellKind::Face)
+    switch (obj.cellKinds[cell])
     {
-      target = size >= 3 ? polys.Get() : (size == 2 ? lines.Get() : verts.Get());
+      // A face of one or two corners is a vertex cell or a line.
+      case CellKind::Face: polygons.addCell(ids, size); break;
+      // A polyline of any length is one line cell; a single point, a vertex cell.
+      case CellKind::Line: ++(size >= 2 ? polygons.numLines : polygons.numVertexCells); break;
+      // p with any number of points is one (poly-)vertex cell.
+      case CellKind::Point: ++polygons.numVertexCells; break;
     }
-    else if (obj.cellKinds[cell] == CellKind::Line)
-    {
-      target = size >= 2 ? lines.Get() : verts.Get();
-    }
-    target->InsertNextCell(static_cast<vtkIdType>(size), ids);
   }
-
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetPolys(polys);
-  if (lines->GetNumberOfCells() > 0)
-  {
-    data->SetLines(lines);
-  }
-  if (verts->GetNumberOfCells() > 0)
-  {
-    data->SetVerts(verts);
-  }
-  if (obj.usesNormals)
-  {
-    data->GetPointData()->SetNormals(normals);
-  }
-  if (obj.usesTexCoords)
-  {
-    data->GetPointData()->SetTCoords(texCoords);
-  }
-  return data;
+  return polygons;
 }
 
 } // namespace proxima::detail

@@ -5,11 +5,9 @@
 // corner its own point once the file has vt or vn. Reading OBJ strictly is short work.
 #pragma once
 
-#include <vtkSmartPointer.h>
+#include "IO/Mesh/Private/PolygonSoup.h"
 
 #include <string>
-
-class vtkPolyData;
 
 namespace proxima::detail
 {
@@ -17,10 +15,11 @@ namespace proxima::detail
 /// Points in double precision: the file's vertices in file order, each with the texture
 /// coordinate and normal of the first face corner naming it, then one more point for every other
 /// (v, vt, vn) combination a corner uses (UV seams, creases); normals and texture coordinates
-/// exist when any corner refers to them (zero for corners that do not); f statements become polygons (one or two corners: vertex and line
-/// cells), l statements lines and p statements vertex cells. Throws InputError, with the line
-/// number, at the first non-text byte, unparsable or non-finite number in a v, vt or vn
-/// statement, and index (0, or out of range, relative or absolute) in an f, l or p statement.
-vtkSmartPointer<vtkPolyData> readObj(const std::string& path);
+/// exist when any corner refers to them (zero for corners that do not). f statements become faces
+/// (with one or two corners, a vertex cell or a line, only counted), l statements lines and p
+/// statements vertex cells (counted). Throws InputError, with the line number, at the first
+/// non-text byte, unparsable or non-finite number in a v, vt or vn statement, and index (0, or
+/// out of range, relative or absolute) in an f, l or p statement.
+PolygonSoup readObj(const std::string& path);
 
 } // namespace proxima::detail

@@ -6,12 +6,6 @@
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/IO/reader/OFFReader.hh>
 
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -64,48 +58,29 @@ public:
     , m_expectedVertices(expectedVertices)
     , m_expectedFaces(expectedFaces)
     , m_positionsInDouble(positionsInDouble)
-  {
-    m_points->SetDataTypeToDouble();
-  }
+  {}
 
-  vtkSmartPointer<vtkPolyData> takePolyData()
+  /// What was read, with normals and texture coordinates when the file had them (OpenMesh reads
+  /// them in float; zero for a vertex without).
+  PolygonSoup takePolygons()
   {
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(m_points);
-    data->SetPolys(m_polys);
-    if (m_lines->GetNumberOfCells() > 0)
-    {
-      data->SetLines(m_lines);
-    }
-    if (m_verts->GetNumberOfCells() > 0)
-    {
-      data->SetVerts(m_verts);
-    }
     if (m_hasNormals)
     {
-      m_normals->SetNumberOfComponents(3);
-      m_normals->SetName("Normals");
-      m_normals->SetNumberOfTuples(m_points->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < m_points->GetNumberOfPoints(); ++i)
+      m_polygons.normals.reserve(3 * m_normalValues.size());
+      for (const auto& n : m_normalValues)
       {
-        const auto& n = m_normalValues[static_cast<std::size_t>(i)];
-        m_normals->SetTuple3(i, n[0], n[1], n[2]);
+        m_polygons.normals.insert(m_polygons.normals.end(), n.begin(), n.end());
       }
-      data->GetPointData()->SetNormals(m_normals);
     }
     if (m_hasTexCoords)
     {
-      m_texCoords->SetNumberOfComponents(2);
-      m_texCoords->SetName("TCoords");
-      m_texCoords->SetNumberOfTuples(m_points->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < m_points->GetNumberOfPoints(); ++i)
+      m_polygons.texCoords.reserve(2 * m_texCoordValues.size());
+      for (const auto& t : m_texCoordValues)
       {
-        const auto& t = m_texCoordValues[static_cast<std::size_t>(i)];
-        m_texCoords->SetTuple2(i, t[0], t[1]);
+        m_polygons.texCoords.insert(m_polygons.texCoords.end(), t.begin(), t.end());
       }
-      data->GetPointData()->SetTCoords(m_texCoords);
     }
-    return data;
+    return std::move(m_polygons);
   }
 
   std::uint64_t numVertices() const { return m_numVertices; }
@@ -140,14 +115,10 @@ public:
                           std::to_string(index) + ", out of range (the file has " +
                           std::to_string(m_numVertices) + " vertices)"};
       }
-      m_ids.push_back(static_cast<vtkIdType>(index));
+      m_ids.push_back(static_cast<std::int64_t>(index));
     }
-    vtkCellArray* cells =
-      m_ids.size() >= 3 ? m_polys.Get() : (m_ids.size() == 2 ? m_lines.Get() : m_verts.Get());
-    if (!m_ids.empty())
-    {
-      cells->InsertNextCell(static_cast<vtkIdType>(m_ids.size()), m_ids.data());
-    }
+    // Faces of one or two vertices are vertex cells and lines, counted only.
+    m_polygons.addCell(m_ids.data(), m_ids.size());
     return FaceHandle(static_cast<int>(m_numFaces++));
   }
   FaceHandle add_face(HalfedgeHandle) override { return FaceHandle(); }
@@ -244,7 +215,7 @@ private:
                         " (of " + std::to_string(m_expectedVertices) +
                         "): malformed or truncated data"};
     }
-    m_points->InsertNextPoint(x, y, z);
+    m_polygons.addPoint(x, y, z);
     m_normalValues.push_back({0.0f, 0.0f, 0.0f});
     m_texCoordValues.push_back({0.0f, 0.0f});
     return VertexHandle(static_cast<int>(m_numVertices++));
@@ -266,15 +237,10 @@ private:
   std::uint64_t m_numVertices = 0;
   std::uint64_t m_numFaces = 0;
   const std::vector<Position>* m_positionsInDouble = nullptr;
-  vtkNew<vtkPoints> m_points;
-  vtkNew<vtkCellArray> m_polys;
-  vtkNew<vtkCellArray> m_lines;
-  vtkNew<vtkCellArray> m_verts;
-  vtkNew<vtkFloatArray> m_normals;
-  vtkNew<vtkFloatArray> m_texCoords;
+  PolygonSoup m_polygons;
   std::vector<std::array<float, 3>> m_normalValues;
   std::vector<std::array<float, 2>> m_texCoordValues;
-  std::vector<vtkIdType> m_ids;
+  std::vector<std::int64_t> m_ids;
   bool m_hasNormals = false;
   bool m_hasTexCoords = false;
 };
@@ -453,7 +419,7 @@ std::vector<Position> checkAsciiAndReadPositions(const std::string& path, const 
 
 } // namespace
 
-vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
+PolygonSoup readOffWithOpenMesh(const std::string& path)
 {
   const OffHeader header = readHeader(path);
   std::vector<Position> positionsInDouble;
@@ -501,7 +467,7 @@ vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path)
     throw InputError(path, "truncated: the header announces " + std::to_string(header.numVertices) +
                              " vertices, the file holds " + std::to_string(importer.numVertices()));
   }
-  return importer.takePolyData();
+  return importer.takePolygons();
 }
 
 } // namespace proxima::detail

@@ -3,21 +3,19 @@
 // soup must arrive whole.
 #pragma once
 
-#include <vtkSmartPointer.h>
+#include "IO/Mesh/Private/PolygonSoup.h"
 
 #include <string>
-
-class vtkPolyData;
 
 namespace proxima::detail
 {
 
 /// Points (with normals and texture coordinates when the file has them) and polygons, as read;
-/// faces of one or two vertices become vertex and line cells. Throws InputError for a bad header,
+/// faces of one or two vertices are counted as vertex and line cells. Throws InputError for a bad header,
 /// unparsable or truncated data (reported with the vertex or face where parsing stopped) and
 /// indices out of range. Coordinates are stored in double: an ASCII file's as the text writes them
 /// (OpenMesh parses them in float, so the reader's own pre-check walk parses them again in double
 /// and those replace OpenMesh's), a binary file's as its float32 values, exactly.
-vtkSmartPointer<vtkPolyData> readOffWithOpenMesh(const std::string& path);
+PolygonSoup readOffWithOpenMesh(const std::string& path);
 
 } // namespace proxima::detail

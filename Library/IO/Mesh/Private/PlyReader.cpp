@@ -2,13 +2,6 @@
 
 #include "IO/InputChecks/InputError.h"
 
-#include <vtkCellArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-
 #include <bit>
 #include <charconv>
 #include <cstring>
@@ -376,7 +369,7 @@ int findFirst(const Element& element, std::initializer_list<const char*> names)
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fileSize)
+PolygonSoup readPly(const std::string& path, std::uintmax_t fileSize)
 {
   std::string bytes(static_cast<std::size_t>(fileSize), '\0');
   {
@@ -430,31 +423,21 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fil
   const int v = findFirst(*vertexElement, {"v", "t", "texture_v", "texture_t"});
   const bool hasTexCoords = u >= 0 && v >= 0;
 
-  const auto numVertices = static_cast<vtkIdType>(vertexElement->count);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numVertices);
-  vtkNew<vtkDoubleArray> normals;
-  vtkNew<vtkDoubleArray> texCoords;
+  const auto numVertices = static_cast<std::int64_t>(vertexElement->count);
+  PolygonSoup polygons;
+  polygons.points.resize(static_cast<std::size_t>(3 * numVertices));
   if (hasNormals)
   {
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(numVertices);
+    polygons.normals.resize(static_cast<std::size_t>(3 * numVertices));
   }
   if (hasTexCoords)
   {
-    texCoords->SetName("TCoords");
-    texCoords->SetNumberOfComponents(2);
-    texCoords->SetNumberOfTuples(numVertices);
+    polygons.texCoords.resize(static_cast<std::size_t>(2 * numVertices));
   }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkCellArray> verts;
 
   DataCursor cursor(path, bytes, header);
   std::vector<double> values;
-  std::vector<vtkIdType> ids;
+  std::vector<std::int64_t> ids;
   for (const Element& element : header.elements)
   {
     const bool isVertex = &element == vertexElement;
@@ -501,56 +484,39 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fil
                                        ", out of range (the file has " +
                                        std::to_string(numVertices) + " vertices)");
             }
-            ids[k] = static_cast<vtkIdType>(value);
+            ids[k] = static_cast<std::int64_t>(value);
           }
         }
-        if (keep && !ids.empty())
+        if (keep)
         {
-          vtkCellArray* cells =
-            ids.size() >= 3 ? polys.Get() : (ids.size() == 2 ? lines.Get() : verts.Get());
-          cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+          // Faces of one or two vertices are vertex cells and lines, counted only.
+          polygons.addCell(ids.data(), ids.size());
         }
       }
       if (isVertex)
       {
-        const auto id = static_cast<vtkIdType>(item);
-        points->SetPoint(id, values[static_cast<std::size_t>(x)],
-                         values[static_cast<std::size_t>(y)], values[static_cast<std::size_t>(z)]);
+        const auto id = static_cast<std::size_t>(item);
+        double* point = &polygons.points[3 * id];
+        point[0] = values[static_cast<std::size_t>(x)];
+        point[1] = values[static_cast<std::size_t>(y)];
+        point[2] = values[static_cast<std::size_t>(z)];
         if (hasNormals)
         {
-          normals->SetTuple3(id, values[static_cast<std::size_t>(nx)],
-                             values[static_cast<std::size_t>(ny)],
-                             values[static_cast<std::size_t>(nz)]);
+          double* normal = &polygons.normals[3 * id];
+          normal[0] = values[static_cast<std::size_t>(nx)];
+          normal[1] = values[static_cast<std::size_t>(ny)];
+          normal[2] = values[static_cast<std::size_t>(nz)];
         }
         if (hasTexCoords)
         {
-          texCoords->SetTuple2(id, values[static_cast<std::size_t>(u)],
-                               values[static_cast<std::size_t>(v)]);
+          double* texCoord = &polygons.texCoords[2 * id];
+          texCoord[0] = values[static_cast<std::size_t>(u)];
+          texCoord[1] = values[static_cast<std::size_t>(v)];
         }
       }
     }
   }
-
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetPolys(polys);
-  if (lines->GetNumberOfCells() > 0)
-  {
-    data->SetLines(lines);
-  }
-  if (verts->GetNumberOfCells() > 0)
-  {
-    data->SetVerts(verts);
-  }
-  if (hasNormals)
-  {
-    data->GetPointData()->SetNormals(normals);
-  }
-  if (hasTexCoords)
-  {
-    data->GetPointData()->SetTCoords(texCoords);
-  }
-  return data;
+  return polygons;
 }
 
 } // namespace proxima::detail

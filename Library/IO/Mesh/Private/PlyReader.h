@@ -5,21 +5,19 @@
 // file with a message. The format is small enough to read strictly here.
 #pragma once
 
-#include <vtkSmartPointer.h>
+#include "IO/Mesh/Private/PolygonSoup.h"
 
 #include <cstdint>
 #include <string>
-
-class vtkPolyData;
 
 namespace proxima::detail
 {
 
 /// Points (x, y, z; normals from nx, ny, nz; texture coordinates from u, v or s, t or
 /// texture_u, texture_v) and the polygons of the "face" element's vertex_indices list (faces of
-/// one or two vertices become vertex and line cells); other elements and properties are skipped.
+/// one or two vertices are counted as vertex and line cells); other elements and properties are skipped.
 /// Throws InputError for a malformed header, data cut short or unparsable, and face indices out
 /// of range.
-vtkSmartPointer<vtkPolyData> readPly(const std::string& path, std::uintmax_t fileSize);
+PolygonSoup readPly(const std::string& path, std::uintmax_t fileSize);
 
 } // namespace proxima::detail

@@ -1,24 +1,24 @@
 // The entry of the module proxima-vtk-mesh-readers (VtkReadersModule.cpp), which MeshIO loads on
-// first use (VtkReadersOnUse.cpp): a table of VtkReaders.h's two functions, returned by a
-// function with a C name that dlsym finds.
+// first use (VtkReadersOnUse.cpp): a table of the functions of VtkOnUse.h, returned by a function
+// with a C name that dlsym finds. Only kernel types cross: MeshIO never sees a VTK object.
 #pragma once
 
+#include "Geometry/TriangleSoup.h"
 #include "IO/Mesh/MeshFileFormat.h"
-
-#include <vtkSmartPointer.h>
+#include "IO/Mesh/Private/PolygonSoup.h"
 
 #include <string>
-
-class vtkPolyData;
 
 namespace proxima::detail
 {
 
 struct VtkMeshReaders
 {
-  vtkSmartPointer<vtkPolyData> (*readWithVtk)(const std::string& path, MeshFileFormat format);
-  vtkSmartPointer<vtkPolyData> (*readGltfWithVtk)(const std::string& vtkPath,
-                                                  const std::string& userPath);
+  TriangleSoup (*readWithVtk)(const std::string& path, MeshFileFormat format, double scale);
+  TriangleSoup (*readGltfWithVtk)(const std::string& vtkPath, const std::string& userPath,
+                                  double scale);
+  TriangleSoup (*triangulateWithVtk)(const PolygonSoup& polygons, const std::string& path,
+                                     double scale);
 };
 
 /// The name of `const VtkMeshReaders* entry()` in the module.

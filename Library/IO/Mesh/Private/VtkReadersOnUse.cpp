@@ -1,11 +1,11 @@
-// readWithVtk and readGltfWithVtk for MeshIO's users: forwarded to the module that holds them
-// (VtkReaders.cpp, with VTK's IOGeometry and IOXML, which pull in VTK's rendering), loaded the
-// first time an STL, VTP or glTF file is read (IO/LoadOnUse/ModuleEntry.h).
-#include "IO/LoadOnUse/ModuleEntry.h"
-#include "IO/Mesh/Private/VtkReaders.h"
-#include "IO/Mesh/Private/VtkReadersModule.h"
+// VtkOnUse.h's functions for MeshIO's users: forwarded to the module that holds them
+// (VtkReadersModule.cpp, with VTK's IOGeometry and IOXML, which pull in VTK's rendering, and
+// polyDataToSoup with its vtkTriangleFilter), loaded the first time an STL, VTP or glTF file, or
+// a file with polygons of more than three corners, is read (IO/LoadOnUse/ModuleEntry.h).
+#include "IO/Mesh/Private/VtkOnUse.h"
 
-#include <vtkPolyData.h>
+#include "IO/LoadOnUse/ModuleEntry.h"
+#include "IO/Mesh/Private/VtkReadersModule.h"
 
 namespace proxima::detail
 {
@@ -20,15 +20,20 @@ const VtkMeshReaders& readers()
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, MeshFileFormat format)
+TriangleSoup readSoupWithVtk(const std::string& path, MeshFileFormat format, double scale)
 {
-  return readers().readWithVtk(path, format);
+  return readers().readWithVtk(path, format, scale);
 }
 
-vtkSmartPointer<vtkPolyData> readGltfWithVtk(const std::string& vtkPath,
-                                             const std::string& userPath)
+TriangleSoup readGltfSoupWithVtk(const std::string& vtkPath, const std::string& userPath,
+                                 double scale)
 {
-  return readers().readGltfWithVtk(vtkPath, userPath);
+  return readers().readGltfWithVtk(vtkPath, userPath, scale);
+}
+
+TriangleSoup triangulateWithVtk(const PolygonSoup& polygons, const std::string& path, double scale)
+{
+  return readers().triangulateWithVtk(polygons, path, scale);
 }
 
 } // namespace proxima::detail
