@@ -66,13 +66,13 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
 namespace
 {
 // The indices of the marked entries of `mask` (0 or 1 each), in order, into `out`; returns how
-// many. trianglesNearPoint first marks, in loops with no branch, no store that depends on an
+// many. The filters below first mark, in loops with no branch, no store that depends on an
 // earlier iteration and masks as wide as the doubles they come from, which the compiler turns
 // into vector code (where the build allows AVX2: Proxy/CMakeLists.txt; this file is compiled
-// without errno from sqrt, so that the square roots vectorise too); compacting the survivors is
-// a second, short pass. A single loop that compacted as it went ran one sphere at a time, 3 ns each, and
-// the scans of the cache were half of a large proxy's tick (r = 2 mm on 0.5 mm edges: 400-500
-// cached triangles, two scans an iteration).
+// so that guarded square roots and divisions vectorise too); compacting the survivors is a
+// second, short pass. A sphere test that compacted as it went, followed by mayReachSegment for
+// each survivor, ran one triangle at a time, and the scans of the cache were half of a large
+// proxy's tick (r = 2 mm on 0.5 mm edges: 400-500 cached triangles, two scans an iteration).
 int compactMarked(const std::int64_t* mask, int count, int* out)
 {
   int kept = 0;
@@ -84,34 +84,6 @@ int compactMarked(const std::int64_t* mask, int count, int* out)
   return kept;
 }
 } // namespace
-
-int CandidateCache::spheresNearSegment(const Vec3& start, const Vec3& motion, double reach,
-                                       int* out) const
-{
-  // One pass over the spheres with no branch in the body, so that it stays a few nanoseconds a
-  // sphere for the hundreds a large proxy keeps in its cache: the survivors are compacted into
-  // `out` by an index that advances only on a pass. (Not split into a vector pass and a
-  // compaction as trianglesNearPoint is: GCC 12 does not vectorise the clamp of the segment
-  // parameter, and the one pass is then the faster.)
-  const double motionSquared = dot(motion, motion);
-  const double inverse = motionSquared > 0.0 ? 1.0 / motionSquared : 0.0;
-  int count = 0;
-  for (int i = 0; i < m_count; ++i)
-  {
-    const double cx = m_sphereX[i] - start.x;
-    const double cy = m_sphereY[i] - start.y;
-    const double cz = m_sphereZ[i] - start.z;
-    double s = (cx * motion.x + cy * motion.y + cz * motion.z) * inverse;
-    s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
-    const double dx = cx - motion.x * s;
-    const double dy = cy - motion.y * s;
-    const double dz = cz - motion.z * s;
-    const double r = m_sphereRadius[i] + reach;
-    out[count] = i;
-    count += dx * dx + dy * dy + dz * dz <= r * r ? 1 : 0;
-  }
-  return count;
-}
 
 int CandidateCache::trianglesNearPoint(const Vec3& point, double reach, int* out) const
 {
@@ -142,6 +114,75 @@ int CandidateCache::trianglesNearPoint(const Vec3& point, double reach, int* out
     const double pz = cz - nz * along;
     const double circleReach = m_sphereRadius[i] + lateral;
     const bool nearCircle = px * px + py * py + pz * pz <= circleReach * circleReach;
+    mask[i] = nearSphere & nearPlane & nearCircle;
+  }
+  return compactMarked(mask, count, out);
+}
+
+int CandidateCache::trianglesNearSegment(const Vec3& start, const Vec3& motion, double reach,
+                                         int* out) const
+{
+  // mayReachSegment, term for term in the same order, for every cached triangle in one pass
+  // that marks a mask (see compactMarked).
+  const double sx = start.x;
+  const double sy = start.y;
+  const double sz = start.z;
+  const double mx = motion.x;
+  const double my = motion.y;
+  const double mz = motion.z;
+  const double motionSquared = mx * mx + my * my + mz * mz;
+  // Divisions under a condition are a branch the vectoriser keeps (they could trap); a zero
+  // length has a zero numerator, so dividing it by 1 gives mayReachSegment's 0 unconditionally.
+  const double motionDivisor = motionSquared > 0.0 ? motionSquared : 1.0;
+  std::int64_t mask[kCapacity];
+  const int count = m_count;
+  for (int i = 0; i < count; ++i)
+  {
+    const double cx = m_sphereX[i] - sx;
+    const double cy = m_sphereY[i] - sy;
+    const double cz = m_sphereZ[i] - sz;
+    const double toward = cx * mx + cy * my + cz * mz;
+    double s = toward / motionDivisor;
+    s = s < 0.0 ? 0.0 : s;
+    s = s > 1.0 ? 1.0 : s;
+    const double sphereReach = m_sphereRadius[i] + reach;
+    const double ax = cx - mx * s;
+    const double ay = cy - my * s;
+    const double az = cz - mz * s;
+    const bool nearSphere = !(ax * ax + ay * ay + az * az > sphereReach * sphereReach);
+    const double nx = m_normalX[i];
+    const double ny = m_normalY[i];
+    const double nz = m_normalZ[i];
+    const double planeReach = reach + m_planeSlack[i];
+    const double startHeight = (nx * sx + ny * sy + nz * sz) - m_planeOffset[i];
+    const double rise = nx * mx + ny * my + nz * mz;
+    const double endHeight = startHeight + rise;
+    const bool nearPlane = !((startHeight > planeReach) & (endHeight > planeReach)) &
+                           !((startHeight < -planeReach) & (endHeight < -planeReach));
+    const double startDepth = startHeight < 0.0 ? -startHeight : startHeight;
+    const double endDepth = endHeight < 0.0 ? -endHeight : endHeight;
+    const double nearer = endDepth < startDepth ? endDepth : startDepth;
+    // Both heights on one side (a zero one, or a product that underflows, gives 0: the segment
+    // touches the plane, as when mayReachSegment sees the sides differ).
+    const double lowest = startHeight * endHeight > 0.0 ? nearer : 0.0;
+    const double lateralSquared = planeReach * planeReach - lowest * lowest;
+    const double lateral = std::sqrt(lateralSquared > 0.0 ? lateralSquared : 0.0);
+    const double along = nx * cx + ny * cy + nz * cz;
+    const double px = cx - nx * along;
+    const double py = cy - ny * along;
+    const double pz = cz - nz * along;
+    const double qx = mx - nx * rise;
+    const double qy = my - ny * rise;
+    const double qz = mz - nz * rise;
+    const double inPlaneSquared = qx * qx + qy * qy + qz * qz;
+    double u = (px * qx + py * qy + pz * qz) / (inPlaneSquared > 0.0 ? inPlaneSquared : 1.0);
+    u = u < 0.0 ? 0.0 : u;
+    u = u > 1.0 ? 1.0 : u;
+    const double circleReach = m_sphereRadius[i] + lateral;
+    const double ex = px - qx * u;
+    const double ey = py - qy * u;
+    const double ez = pz - qz * u;
+    const bool nearCircle = ex * ex + ey * ey + ez * ez <= circleReach * circleReach;
     mask[i] = nearSphere & nearPlane & nearCircle;
   }
   return compactMarked(mask, count, out);
@@ -284,7 +325,7 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   // The spheres near the part of the path that can still give the first contact.
   const double bound = best.hit ? best.t : covered;
   int near[kCapacity];
-  const int numNear = spheresNearSegment(query.start, motion * bound, beyond, near);
+  const int numNear = trianglesNearSegment(query.start, motion * bound, beyond, near);
   for (int k = 0; k < numNear; ++k)
   {
     if (near[k] != first)

@@ -84,12 +84,12 @@ private:
   /// point is the segment with zero motion.
   bool mayReachSegment(int i, const Vec3& start, const Vec3& motion, double motionSquared,
                        double reach) const;
-  /// The cached triangles whose bounding spheres come within `reach` of the segment from `start`
-  /// along `motion` (a point for zero motion), into `out`; returns how many.
-  int spheresNearSegment(const Vec3& start, const Vec3& motion, double reach, int* out) const;
   /// The cached triangles that mayReachSegment accepts for the point `point` (zero motion), into
   /// `out`; returns how many. The gather's filter: all of mayReachSegment's tests in the one pass.
   int trianglesNearPoint(const Vec3& point, double reach, int* out) const;
+  /// The cached triangles that mayReachSegment accepts for the segment from `start` along
+  /// `motion`, into `out`; returns how many. The sweep's filter, as trianglesNearPoint.
+  int trianglesNearSegment(const Vec3& start, const Vec3& motion, double reach, int* out) const;
 
   bool m_valid = false;
   Vec3 m_center;
