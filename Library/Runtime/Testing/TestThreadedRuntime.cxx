@@ -152,6 +152,13 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
       ASSERT_GT(a.tick, threaded[i - 1].tick);
       skipped = skipped || a.tick != threaded[i - 1].tick + 1;
     }
+    else
+    {
+      // A first update after tick 0 (the proxy thread started late: ThreadSanitizer on a loaded
+      // machine) reaches the same proxy in a different number of iterations than lockstep's
+      // tick-by-tick steps: compared to the solver's accuracy, as after a skip.
+      skipped = a.tick != 0;
+    }
     ASSERT_EQ(a.time, b.time) << "tick " << a.tick;
     ASSERT_TRUE(sameBits(a.finger, b.finger)) << "tick " << a.tick;
     ASSERT_EQ(a.numContacts > 0, b.numContacts > 0) << "tick " << a.tick;
