@@ -91,6 +91,40 @@ inline bool isFinite(const Vec3& v)
 {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+/// |v| computed on v scaled by its largest component, so that the squares neither overflow nor
+/// underflow: norm() of (1e155, 0, 0) is infinity, this is 1e155. Infinity when a component is.
+inline double overflowSafeNorm(const Vec3& v)
+{
+  const double largest = maxAbsComponent(v);
+  if (!(largest > 0.0) || !std::isfinite(largest))
+  {
+    return largest;
+  }
+  const Vec3 scaled{v.x / largest, v.y / largest, v.z / largest};
+  return largest * std::sqrt(dot(scaled, scaled));
+}
+/// The unit vector along v for any v with a direction, even one with infinite components (their
+/// directions, the finite ones then 0); the zero vector for the zero vector.
+inline Vec3 overflowSafeDirection(const Vec3& v)
+{
+  const double largest = maxAbsComponent(v);
+  if (!(largest > 0.0))
+  {
+    return {};
+  }
+  Vec3 scaled;
+  if (std::isfinite(largest))
+  {
+    scaled = {v.x / largest, v.y / largest, v.z / largest};
+  }
+  else
+  {
+    scaled = {std::isinf(v.x) ? std::copysign(1.0, v.x) : 0.0,
+              std::isinf(v.y) ? std::copysign(1.0, v.y) : 0.0,
+              std::isinf(v.z) ? std::copysign(1.0, v.z) : 0.0};
+  }
+  return scaled / std::sqrt(dot(scaled, scaled));
+}
 /// The unit vector along v, or the zero vector when v has no usable length.
 inline Vec3 normalizedOrZero(const Vec3& v)
 {

@@ -38,6 +38,9 @@ void ServoForce::step(const TickInput& input, HapticState& state)
   state.deviceLost = !input.sample.connected;
   state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;
   Vec3 force;
+  // The spring's extension (proxy minus finger): the direction of a force whose magnitude
+  // overflowed.
+  Vec3 stretch;
   bool held = false;
   if (state.deviceLost || state.proxyStale)
   {
@@ -65,8 +68,8 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     {
       // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
       // continuous, since proxy and finger coincide out of contact.
-      force =
-        (state.proxy - input.sample.position) * (m_parameters.stiffness * state.stiffnessScale);
+      stretch = state.proxy - input.sample.position;
+      force = stretch * (m_parameters.stiffness * state.stiffnessScale);
       if (m_gain < 1.0)
       {
         m_gain = m_gain + gainStep;
@@ -85,10 +88,19 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     }
   }
 
-  const double magnitude = norm(force);
+  // Overflow-safe: a finger 1e154 m away gave |F|^2 = inf and so a "clamped" force of 0 N, and
+  // beyond 1e305 m the spring force itself is infinite; the clamp keeps its direction either way.
+  // norm() first: in the usual range it is the value the traces have always been clamped with.
+  double magnitude = norm(force);
+  if (!std::isfinite(magnitude))
+  {
+    magnitude = overflowSafeNorm(force);
+  }
   if (!held && magnitude > m_maxForce)
   {
-    force = force * (m_maxForce / magnitude);
+    force = std::isfinite(magnitude)
+              ? force * (m_maxForce / magnitude)
+              : overflowSafeDirection(isFinite(stretch) ? stretch : force) * m_maxForce;
     state.forceClamped = true;
   }
   if (input.time < m_rateLimitUntil)

@@ -147,13 +147,19 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
     }
     else
     {
-      Vec3 expected = (record.proxy - record.finger) * c.servo.stiffness;
-      const double magnitude = norm(expected);
-      const bool clamp = magnitude > c.servo.maxForce;
-      if (clamp)
-      {
-        expected = expected * (c.servo.maxForce / magnitude);
-      }
+      // In long double, whose exponent reaches 1e4932: the spring and its magnitude for a
+      // finger 1e300 m away are exact enough there, where in double |F|^2 overflows (the
+      // servo's clamp once gave 0 N for such a finger, and this oracle agreed with it).
+      const long double k = c.servo.stiffness;
+      const long double fx = (static_cast<long double>(record.proxy.x) - record.finger.x) * k;
+      const long double fy = (static_cast<long double>(record.proxy.y) - record.finger.y) * k;
+      const long double fz = (static_cast<long double>(record.proxy.z) - record.finger.z) * k;
+      const long double longMagnitude = std::sqrt(fx * fx + fy * fy + fz * fz);
+      const bool clamp = longMagnitude > c.servo.maxForce;
+      const long double gain = clamp ? c.servo.maxForce / longMagnitude : 1.0L;
+      const Vec3 expected{static_cast<double>(fx * gain), static_cast<double>(fy * gain),
+                          static_cast<double>(fz * gain)};
+      const double magnitude = static_cast<double>(longMagnitude);
       const double error = norm(record.force - expected) / std::max(norm(expected), 1e-300);
       stats.maxForceError = std::max(stats.maxForceError, magnitude > 0.0 ? error : 0.0);
       if (clamp != record.forceClamped || (magnitude > 0.0 && error > 1e-12) ||

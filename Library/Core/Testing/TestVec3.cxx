@@ -29,6 +29,26 @@ TEST(Vec3, NormalizedOrZeroRefusesZeroAndNonFinite)
   EXPECT_FALSE(proxima::isFinite(Vec3{0, std::nan(""), 0}));
 }
 
+TEST(Vec3, OverflowSafeNormAndDirectionAtTheEndsOfTheRange)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  // 3-4-12 gives 13 at any scale where the plain norm's squares overflow or underflow.
+  for (const double scale : {1e-200, 1.0, 1e155, 1e300})
+  {
+    const Vec3 v{3.0 * scale, -4.0 * scale, 12.0 * scale};
+    EXPECT_NEAR(proxima::overflowSafeNorm(v) / (13.0 * scale), 1.0, 1e-15) << scale;
+    const Vec3 unit = proxima::overflowSafeDirection(v);
+    EXPECT_NEAR(unit.x, 3.0 / 13.0, 1e-15) << scale;
+    EXPECT_NEAR(unit.y, -4.0 / 13.0, 1e-15) << scale;
+    EXPECT_NEAR(unit.z, 12.0 / 13.0, 1e-15) << scale;
+  }
+  EXPECT_TRUE(std::isinf(proxima::norm(Vec3{1e155, 0, 0}))); // why the safe one exists
+  EXPECT_EQ(proxima::overflowSafeNorm(Vec3{}), 0.0);
+  EXPECT_EQ(proxima::overflowSafeNorm(Vec3{0, -inf, 1}), inf);
+  EXPECT_EQ(proxima::overflowSafeDirection(Vec3{0, -inf, 1}), (Vec3{0, -1, 0}));
+  EXPECT_EQ(proxima::overflowSafeDirection(Vec3{}), Vec3{});
+}
+
 TEST(Aabb, LongestAxisAndDiagonal)
 {
   Aabb box;

@@ -72,6 +72,27 @@ TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
   EXPECT_NEAR(spring.force.z, 1000.0 * 0.5 * 0.002, 1e-15);
 }
 
+TEST(ServoForce, TheClampCannotOverflowForAFingerFarAway)
+{
+  // A finger 1e154 m away made |F|^2 overflow to infinity and the clamped force 0 N; at 1e300 m
+  // the spring force itself is infinite. Each must give the clamp's 10 N, pointing at the proxy.
+  for (const double far : {1e154, 1e200, 1e300, 1.7e308})
+  {
+    for (const Vec3& direction : {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, -1.0, 0.0}, Vec3{0.6, 0.0, 0.8}})
+    {
+      ServoForce stage(testParameters());
+      ForceTick given = pressing(0);
+      given.input.sample.position = direction * far;
+      const HapticState state = step(stage, given);
+      ASSERT_TRUE(isFinite(state.force)) << far;
+      EXPECT_TRUE(state.forceClamped) << far;
+      EXPECT_NEAR(norm(state.force), 10.0, 1e-12) << far;
+      // Towards the proxy at the origin, that is against the finger's direction.
+      EXPECT_NEAR(dot(state.force, direction), -10.0, 1e-12) << far;
+    }
+  }
+}
+
 TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
 {
   ServoForce stage(testParameters());
