@@ -48,7 +48,13 @@ bool parseNumber(const std::string& field, double& value)
   errno = 0;
   char* end = nullptr;
   value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size();
+  if (end != text.c_str() + text.size())
+  {
+    return false;
+  }
+  // strtod also reads C's hexadecimal ("0x10" as 16), which no path file means; a finite value
+  // must be written in decimal. "nan" and "inf" stay numbers here, refused next as not finite.
+  return !std::isfinite(value) || text.find_first_not_of("0123456789.eE+-") == std::string::npos;
 }
 } // namespace
 

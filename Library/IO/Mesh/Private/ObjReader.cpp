@@ -277,12 +277,19 @@ ParsedObj parse(const std::string& path)
         obj.corners.push_back(corner);
         ++size;
       }
-      if (size > 0)
+      // A face of two corners, or none, is not a polygon: most likely a file cut off mid-face
+      // or a damaged line, and dropping it in silence would leave a hole.
+      const std::uint32_t fewest = keyword == "f" ? 3 : (keyword == "l" ? 2 : 1);
+      if (size < fewest)
       {
-        obj.cellSizes.push_back(size);
-        obj.cellKinds.push_back(
-          keyword == "f" ? CellKind::Face : (keyword == "l" ? CellKind::Line : CellKind::Point));
+        throw InputError(path, at(lineNumber) + "'" + std::string(keyword) + "' with " +
+                                 std::to_string(size) + (size == 1 ? " corner" : " corners") +
+                                 ": it needs at least " + std::to_string(fewest) +
+                                 " (is the file cut off or the line damaged?)");
       }
+      obj.cellSizes.push_back(size);
+      obj.cellKinds.push_back(keyword == "f" ? CellKind::Face
+                                             : (keyword == "l" ? CellKind::Line : CellKind::Point));
     }
     // Every other statement (o, g, s, usemtl, mtllib, curves...) carries no triangle geometry.
   }
