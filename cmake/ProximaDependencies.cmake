@@ -58,6 +58,8 @@ endif()
 if(PROXIMA_BUILD_APPS)
   # Command-line parsing.
   find_package(CLI11 REQUIRED)
+  # The viewer asks Xlib whether a display opens before VTK's X window tries (and crashes).
+  find_package(X11 REQUIRED)
 endif()
 
 if(PROXIMA_BUILD_TESTING OR PROXIMA_BUILD_BENCHMARKS)

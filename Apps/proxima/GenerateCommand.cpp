@@ -53,6 +53,11 @@ int writeAndReport(const std::string& shape, const TriangleSoup& soup, const std
   return kExitOk;
 }
 
+// Sizes and places of generated shapes: a micrometre to a kilometre, within a thousand
+// kilometres of the origin.
+constexpr ParameterRange kGeneratedSize{0.0, true, 1000.0, " m"};
+constexpr ParameterRange kGeneratedPlace{-1e6, false, 1e6, " m"};
+
 void addOut(CLI::App* app, GenerateArguments& arguments)
 {
   app->add_option("--out", arguments.out, "Mesh file to write: .obj, .stl, .ply or .vtp")
@@ -63,6 +68,7 @@ void addCenter(CLI::App* app, GenerateArguments& arguments)
 {
   app->add_option("--center", arguments.center, "Centre in metres: X Y Z")
     ->expected(3)
+    ->check(numberIn(kGeneratedPlace))
     ->capture_default_str();
 }
 } // namespace
@@ -79,7 +85,7 @@ Command addGenerateCommand(CLI::App& parent)
     ->check(CLI::Range(0u, 9u))
     ->capture_default_str();
   icosphere->add_option("--radius", arguments->radius, "Radius in metres")
-    ->check(finiteNumber(true))
+    ->check(numberIn(kGeneratedSize))
     ->capture_default_str();
   addCenter(icosphere, *arguments);
   addOut(icosphere, *arguments);
@@ -87,7 +93,7 @@ Command addGenerateCommand(CLI::App& parent)
   CLI::App* box = generate->add_subcommand("box", "Axis-aligned box, 12 triangles.");
   box->add_option("--half-extents", arguments->halfExtents, "Half the box's size: X Y Z")
     ->expected(3)
-    ->check(finiteNumber(true))
+    ->check(numberIn(kGeneratedSize))
     ->capture_default_str();
   addCenter(box, *arguments);
   addOut(box, *arguments);
@@ -95,12 +101,14 @@ Command addGenerateCommand(CLI::App& parent)
   CLI::App* grid =
     generate->add_subcommand("grid", "Square sheet in a plane z = height: 2 * cells^2 triangles.");
   grid->add_option("--size", arguments->size, "Side length in metres")
-    ->check(finiteNumber(true))
+    ->check(numberIn(kGeneratedSize))
     ->capture_default_str();
   grid->add_option("--cells", arguments->cells, "Cells along each side")
     ->check(CLI::Range(1u, 4096u))
     ->capture_default_str();
-  grid->add_option("--height", arguments->height, "The plane's z in metres")->capture_default_str();
+  grid->add_option("--height", arguments->height, "The plane's z in metres")
+    ->check(numberIn(kGeneratedPlace))
+    ->capture_default_str();
   addOut(grid, *arguments);
 
   CLI::App* prism = generate->add_subcommand(
@@ -109,10 +117,10 @@ Command addGenerateCommand(CLI::App& parent)
     ->check(CLI::Range(3u, 100000u))
     ->capture_default_str();
   prism->add_option("--radius", arguments->radius, "Distance of the corners from the axis")
-    ->check(finiteNumber(true))
+    ->check(numberIn(kGeneratedSize))
     ->capture_default_str();
   prism->add_option("--height", arguments->prismHeight, "Length along z in metres")
-    ->check(finiteNumber(true))
+    ->check(numberIn(kGeneratedSize))
     ->capture_default_str();
   addCenter(prism, *arguments);
   addOut(prism, *arguments);

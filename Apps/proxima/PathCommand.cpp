@@ -2,6 +2,7 @@
 // or of a scene file's objects as placed; or, for `probe`, a seeded person-like probing session
 // placed by the surface itself.
 #include "Command.h"
+#include "Validators.h"
 
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
@@ -28,6 +29,7 @@ struct PathOptions
   double rate = 1000.0;
   std::uint64_t seed = 1;
   double duration = ProbeOptions{}.duration;
+  double maxTicks = kDefaultMaxTicks;
   std::string out;
 };
 
@@ -65,6 +67,9 @@ int writePath(const PathOptions& options)
 {
   if (options.kind == "probe")
   {
+    // Refused before the path is made: an hour at 100 kHz would not fit in memory.
+    checkTickCount(options.duration * options.rate, options.rate, options.maxTicks,
+                   "--duration " + shortNumber(options.duration) + " s");
     const FingerPath path = probePath(options);
     writeFingerPathFile(options.out, path);
     std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() << " s\n";
@@ -107,19 +112,23 @@ Command addPathCommand(CLI::App& parent)
     "--scene", options->scene, "Scene file whose objects' bounds, as placed, place the path");
   CLI::Option* scale =
     app->add_option("--scale", options->scale, "With --mesh only. File units to metres (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(numberIn(kMeshScaleRange));
   mesh->excludes(scene);
   scene->excludes(scale);
   app->add_option("--radius", options->radius, "Proxy radius in metres (default 0.001)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kProxyRadiusRange));
   app->add_option("--rate", options->rate, "Samples per second (default 1000)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kScriptedRateRange));
   app->add_option("--seed", options->seed, "probe only: random seed (default 1)");
   app
     ->add_option("--duration", options->duration,
                  "probe only: seconds of probing, at least (default 8; the last episode is "
                  "finished)")
-    ->check(CLI::NonNegativeNumber);
+    ->check(numberIn(kPathDurationRange));
+  app
+    ->add_option("--max-ticks", options->maxTicks,
+                 "The most rows the path may have (default 1e7): a longer one is refused")
+    ->check(tickCount());
   app->add_option("--out", options->out, "Path CSV to write")->required();
   app->callback([options] {
     if (options->mesh.empty() && options->scene.empty())

@@ -4,6 +4,7 @@
 #include "Command.h"
 #include "DeviceChoice.h"
 #include "SceneOptions.h"
+#include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
@@ -40,6 +41,7 @@ struct RunOptions
   DeviceChoiceOptions device;
   bool realtime = false;
   bool noFloor = false;
+  double maxTicks = kDefaultMaxTicks;
 };
 
 double millisecondsSince(std::chrono::steady_clock::time_point start)
@@ -222,7 +224,13 @@ int run(const RunOptions& options)
   LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
   const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
+  checkRadiusAgainstScene(shared, loaded);
   checkPathStart(shared, loaded, fingerPath);
+  // Before a trace row is written: a path row at t = 1e9 s would otherwise fill the disk.
+  checkTickCount(
+    static_cast<double>(ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate)),
+    shared.rate, options.maxTicks,
+    shared.path + " (" + shortNumber(fingerPath.endTime() - fingerPath.startTime()) + " s)");
   // Shared from here on: the threaded runtime keeps the scene for as long as its loops use it.
   const std::shared_ptr<const CollisionScene> sceneHolder(std::move(loaded.scene));
   const CollisionScene& scene = *sceneHolder;
@@ -443,6 +451,11 @@ Command addRunCommand(CLI::App& parent)
                 "With --realtime: skip the bare deadline loop that otherwise runs just before, for "
                 "as long as the path, to measure the platform's floor (the summary's \"floor\")");
   addSceneOptionsAfterPath(*app, options->scene);
+  app
+    ->add_option("--max-ticks", options->maxTicks,
+                 "The most ticks the run may take (default 1e7, about 40 minutes at 4 kHz): a "
+                 "longer path is refused before anything is written")
+    ->check(tickCount());
   addTickBudgetOption(*app, options->scene,
                       "Default: none in lockstep, so that lockstep traces stay reproducible bit "
                       "for bit (an iteration budget keeps them so, a time budget does not); 50us "

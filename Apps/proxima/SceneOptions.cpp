@@ -98,18 +98,18 @@ void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options)
     "the surface options below are then the file's, per object");
   mesh->excludes(scene);
   app.add_option("--radius", options.radius, "Proxy radius in metres (default 0.001)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kProxyRadiusRange));
   app.add_option("--stiffness", options.stiffness, "Spring stiffness kp in N/m (default 1000)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kStiffnessRange));
   app.add_option("--path", options.path, "Finger path CSV (t,x,y,z)")->required();
 }
 
 void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
 {
   app.add_option("--rate", options.rate, "Servo rate in Hz (default 1000)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kScriptedRateRange));
   app.add_option("--max-force", options.maxForce, "Force clamp in newtons (default 10)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(kMaxForceRange));
   app
     .add_option("--max-iterations", options.maxIterations,
                 "Move/update iterations per tick (default 256)")
@@ -117,14 +117,14 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
   app
     .add_option("--skin", options.skin,
                 "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")
-    ->check(CLI::NonNegativeNumber);
+    ->check(numberIn(kSkinRange));
 
   // The mesh's scale and surface: for --mesh only (a scene file gives them per object).
   const std::string meshOnly = "With --mesh only. ";
   std::vector<CLI::Option*> surface;
   surface.push_back(
     app.add_option("--scale", options.scale, meshOnly + "File units to metres (default 1)")
-      ->check(CLI::PositiveNumber));
+      ->check(numberIn(kMeshScaleRange)));
   surface.push_back(app
                       .add_option("--shading", options.shading,
                                   meshOnly +
@@ -136,19 +136,20 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
       .add_option("--feature-angle", options.featureAngle,
                   meshOnly + "With --shading on and a mesh without normals: edges sharper than "
                              "this many degrees stay sharp (default 30)")
-      ->check(CLI::Range(0.0, 180.0)));
+      ->check(numberIn(kFeatureAngleRange)));
   surface.push_back(app
                       .add_option("--static-friction", options.staticFriction,
                                   meshOnly + "Static friction coefficient mu_s (default 0: none)")
-                      ->check(CLI::NonNegativeNumber));
-  surface.push_back(app
-                      .add_option("--dynamic-friction", options.dynamicFriction,
-                                  meshOnly + "Dynamic friction coefficient mu_d (default 0: none)")
-                      ->check(CLI::NonNegativeNumber));
+                      ->check(numberIn(kFrictionRange)));
+  surface.push_back(
+    app
+      .add_option("--dynamic-friction", options.dynamicFriction,
+                  meshOnly + "Dynamic friction coefficient mu_d, at most mu_s (default 0: none)")
+      ->check(numberIn(kFrictionRange)));
   surface.push_back(app
                       .add_option("--viscosity", options.viscosity,
                                   meshOnly + "Viscous friction b in N s/m (default 0: none)")
-                      ->check(CLI::NonNegativeNumber));
+                      ->check(numberIn(kViscosityRange)));
   CLI::Option* texture = app.add_option(
     "--texture", options.texture,
     meshOnly + "Texture image (PNG, JPEG, TIFF, OpenEXR) mapped by the mesh's texture "
@@ -166,19 +167,10 @@ void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
                              "for bump, not 0)")
       ->check(CLI::Validator(
         [](std::string& input) -> std::string {
-          std::size_t used = 0;
           double value = 0.0;
-          try
-          {
-            value = std::stod(input, &used);
-          }
-          catch (const std::exception&)
-          {
-            used = 0;
-          }
-          return used == input.size() && std::isfinite(value) && value != 0.0
+          return parsePlainNumber(input, value) && value != 0.0 && std::abs(value) <= 1.0
                    ? std::string()
-                   : "must be a finite number other than 0, not " + input;
+                   : "must be a number other than 0, from -1 to 1 m, not " + input;
         },
         "NONZERO"));
   CLI::Option* channel =
@@ -236,6 +228,18 @@ void checkSceneOptions(const SceneOptions& options, const CLI::App& app)
   {
     throw CLI::RequiredError("--mesh or --scene");
   }
+  const std::string friction =
+    frictionPairError(options.staticFriction, options.dynamicFriction, "--static-friction");
+  if (!friction.empty())
+  {
+    throw CLI::ValidationError("--dynamic-friction", friction);
+  }
+  if (options.skin >= options.radius)
+  {
+    throw CLI::ValidationError("--skin", shortNumber(options.skin) +
+                                           " m is not smaller than --radius " +
+                                           shortNumber(options.radius) + " m");
+  }
   if (options.texture.empty())
   {
     return;
@@ -292,6 +296,26 @@ ServoParameters servoParameters(const SceneOptions& options)
   servo.stiffness = options.stiffness;
   servo.maxForce = options.maxForce;
   return servo;
+}
+
+void checkRadiusAgainstScene(const SceneOptions& options, const LoadedScene& loaded)
+{
+  Aabb bounds;
+  for (const CollisionObject& object : loaded.scene->objects)
+  {
+    bounds.expand(object.mesh.bounds().lower);
+    bounds.expand(object.mesh.bounds().upper);
+  }
+  const double diagonal = norm(bounds.upper - bounds.lower);
+  // A proxy larger than the whole scene touches it everywhere at once: a unit slip (--radius
+  // in millimetres on a scene in metres), not a finger.
+  if (options.radius > diagonal)
+  {
+    throw InputError("--radius", shortNumber(options.radius) +
+                                   " m is larger than the whole scene (its bounding box's "
+                                   "diagonal is " +
+                                   shortNumber(diagonal) + " m): give the radius in metres");
+  }
 }
 
 void checkPathStart(const SceneOptions& options, const LoadedScene& loaded,

@@ -62,6 +62,9 @@ LoadedScene loadScene(const SceneOptions& options);
 ProxyParameters proxyParameters(const SceneOptions& options);
 ServoParameters servoParameters(const SceneOptions& options);
 
+/// Throws InputError naming --radius when the proxy is larger than the whole scene (the
+/// diagonal of its bounding box).
+void checkRadiusAgainstScene(const SceneOptions& options, const LoadedScene& loaded);
 /// Throws InputError naming --path when the path's first sample leaves no room for the proxy
 /// sphere against some object: a proxy that starts overlapping a surface has no free side to be
 /// pushed back to.

@@ -85,13 +85,13 @@ Command addTreeCommand(CLI::App& parent)
   app
     ->add_option("--scale", arguments->scale,
                  "Factor from file units to metres, applied to every coordinate")
-    ->check(finiteNumber(true))
+    ->check(numberIn(kMeshScaleRange))
     ->capture_default_str();
   app
     ->add_option("--leaf-size-factor", arguments->tree.leafSizeFactor,
                  "Split triangles longer than this many median edge lengths into several leaf "
                  "spheres; 0 gives one leaf sphere per triangle")
-    ->check(finiteNumber(false))
+    ->check(numberIn(ParameterRange{0.0, false, 1e6, ""}))
     ->capture_default_str();
   app
     ->add_option("--leaf-spheres-per-node", arguments->tree.maxLeafSpheresPerNode,

@@ -2,43 +2,88 @@
 // print the whole range of double).
 #pragma once
 
+#include "IO/InputChecks/InputError.h"
+#include "IO/InputChecks/ParameterRanges.h"
 #include "Runtime/TickBudget.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <string>
 
 namespace proxima::cli
 {
 
-/// A finite number > 0 (`strictlyPositive`) or >= 0.
-inline CLI::Validator finiteNumber(bool strictlyPositive)
+/// Reads `text` as a plain decimal number: an optional sign, digits with at most one point, an
+/// optional exponent. Hexadecimal (`0x10` read as 16), `inf`, `nan` and trailing characters are
+/// refused. False when `text` is not one, or its value overflows.
+inline bool parsePlainNumber(const std::string& text, double& value)
+{
+  if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos ||
+      text.find_first_of("0123456789") == std::string::npos)
+  {
+    return false;
+  }
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  value = std::strtod(begin, &end);
+  return end == begin + text.size() && std::isfinite(value);
+}
+
+/// A number in `range` (ParameterRanges.h), with a message that names the range in short
+/// numbers, not CLI11's 309-digit DBL_MAX.
+inline CLI::Validator numberIn(const ParameterRange& range)
 {
   return CLI::Validator(
-    [strictlyPositive](std::string& input) -> std::string {
+    [range](std::string& input) -> std::string {
       double value = 0.0;
-      std::size_t used = 0;
-      try
+      if (!parsePlainNumber(input, value))
       {
-        value = std::stod(input, &used);
+        return "not a finite decimal number: " + input;
       }
-      catch (const std::exception&)
+      if (!range.contains(value))
       {
-        used = 0;
-      }
-      if (used != input.size() || !std::isfinite(value))
-      {
-        return "not a finite number: " + input;
-      }
-      if (strictlyPositive ? !(value > 0.0) : !(value >= 0.0))
-      {
-        return std::string("must be ") + (strictlyPositive ? "greater than 0" : "0 or more") +
-               ", not " + input;
+        return "must be " + describeRange(range) + ", not " + input;
       }
       return {};
     },
-    strictlyPositive ? "POSITIVE" : "NONNEGATIVE");
+    "NUMBER");
+}
+
+/// A finite number > 0 (`strictlyPositive`) or >= 0, with no upper bound of its own.
+inline CLI::Validator finiteNumber(bool strictlyPositive)
+{
+  return numberIn(ParameterRange{0.0, strictlyPositive, std::numeric_limits<double>::max(), ""});
+}
+
+/// A whole number of ticks: --max-ticks.
+inline CLI::Validator tickCount()
+{
+  return CLI::Validator(
+    [](std::string& input) -> std::string {
+      double value = 0.0;
+      if (!parsePlainNumber(input, value) || value < 1.0 || value != std::floor(value) ||
+          value > 1e15)
+      {
+        return "must be a whole number of ticks from 1 to 1e15, not " + input;
+      }
+      return {};
+    },
+    "TICKS");
+}
+
+/// Refuses a run or path of more than `maxTicks` ticks before it writes anything, in words
+/// that say how long it would be and how to go past the limit.
+inline void checkTickCount(double ticks, double rate, double maxTicks, const std::string& what)
+{
+  if (ticks > maxTicks)
+  {
+    throw InputError("--max-ticks", what + " is " + shortNumber(ticks) + " ticks at " +
+                                      shortNumber(rate) + " Hz, more than the limit of " +
+                                      shortNumber(maxTicks) + " (give --max-ticks to go past it)");
+  }
 }
 
 /// The largest --tick-budget terms taken: a proxy tick of more than a second, or of more than a

@@ -1,10 +1,13 @@
 // `proxima view`: replays a finger path through a mesh or a scene in the threaded runtime and
 // draws it in a VTK window: the surface, the proxy, the finger's ghost, the spring, the contact
 // planes, the friction cones and the force, with the loops' statistics. `--screenshot PNG`
-// renders offscreen at a chosen moment of the path and exits instead.
+// renders offscreen at a chosen moment of the path and exits instead: for a scripted finger
+// (--device sim) from the lockstep run up to that moment, without waiting for it.
 #include "Command.h"
 #include "DeviceChoice.h"
+#include "DisplayCheck.h"
 #include "SceneOptions.h"
+#include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
@@ -86,6 +89,24 @@ Vec3 freeSide(const HapticState& state)
   return length > 0.0 ? sum / length : state.contacts[0].normal;
 }
 
+// The state at `at` seconds into `path` (which starts at 0), from a lockstep run of its ticks.
+HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& scene,
+                            const FingerPath& path, double at, HapticDevice& device)
+{
+  ProxyParameters parameters = proxyParameters(shared);
+  tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
+  ProxySolver solver;
+  solver.setScene(&scene, parameters);
+  solver.resetProxy(path.positions.front());
+  LockstepSettings settings;
+  settings.rate = shared.rate;
+  settings.numTicks = ticksCovering(0.0, at, shared.rate);
+  HapticState last;
+  runLockstep(settings, solver, device, servoParameters(shared),
+              [&last](const HapticState& state) { last = state; });
+  return last;
+}
+
 // Looks at the proxy from `distance`, from the free side of its contacts (tilted, so that the
 // planes and the cones show in depth), or along the camera's current direction.
 void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
@@ -130,17 +151,28 @@ int view(const ViewOptions& options)
   }
   LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
+  checkRadiusAgainstScene(shared, loaded);
   checkPathStart(shared, loaded, fingerPath);
   std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
   const double pathSeconds = fingerPath.endTime() - fingerPath.startTime();
   const double at = options.at >= 0.0 ? options.at : pathSeconds;
+  if (at > pathSeconds)
+  {
+    throw InputError("--at", shortNumber(at) + " s is after the end of the path (" +
+                               shortNumber(pathSeconds) + " s)");
+  }
   if (!options.screenshot.empty())
   {
-    // Fail on an unwritable screenshot before the run, not after it.
-    std::ofstream probe(options.screenshot, std::ios::binary | std::ios::app);
-    if (!probe)
+    // Fail on an unwritable screenshot before the run, not after it; and leave no empty file
+    // behind when a later check refuses the run.
+    const bool existed = std::ifstream(options.screenshot).good();
+    if (!std::ofstream(options.screenshot, std::ios::binary | std::ios::app))
     {
       throw InputError(options.screenshot, "cannot write the file");
+    }
+    if (!existed)
+    {
+      std::remove(options.screenshot.c_str());
     }
   }
 
@@ -153,6 +185,13 @@ int view(const ViewOptions& options)
   // The finger's device, as for `proxima run --device` (sim plays the path); made before the
   // renderer, so that it outlives the haptic threads.
   RunDevice device(options.device, shifted, ticksCovering(0.0, pathSeconds + 0.5, shared.rate));
+  // Last of the checks, so that every refusal of the input above comes first and alike with or
+  // without a display; before the first VTK window object.
+  const std::string noDisplay = displayProblem();
+  if (!noDisplay.empty())
+  {
+    throw InputError("proxima view", noDisplay);
+  }
   vtkNew<vtkHapticRenderer> haptics;
   haptics->SetCollisionScene(scene);
   haptics->SetDevice(&device.device());
@@ -212,18 +251,33 @@ int view(const ViewOptions& options)
 
   if (!options.screenshot.empty())
   {
-    haptics->SetDuration(at + 0.5);
-    if (!haptics->Start())
+    LoopStatistics servo;
+    HapticState state;
+    const bool lockstep = options.device.device == "sim";
+    if (lockstep)
     {
-      throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+      // A scripted finger needs no real clock: the state at --at comes from the lockstep run
+      // (the same steps as the threads, on a virtual clock) in a fraction of --at, and is the
+      // same picture every time. As `proxima run`, lockstep takes no budget unless given one.
+      state = lockstepStateAt(shared, *scene, shifted, at, device.device());
+      servo.rate = shared.rate;
     }
-    while (haptics->GetState().time < at && !haptics->IsFinished())
+    else
     {
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      // A real device moves in real time: its state at --at is reached by living through it.
+      haptics->SetDuration(at + 0.5);
+      if (!haptics->Start())
+      {
+        throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+      }
+      while (haptics->GetState().time < at && !haptics->IsFinished())
+      {
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+      state = haptics->GetState();
+      servo = haptics->GetServoStatistics();
+      haptics->Stop();
     }
-    const HapticState state = haptics->GetState();
-    const LoopStatistics servo = haptics->GetServoStatistics();
-    haptics->Stop();
     representation->SetState(state);
     status->SetInput(statusText(state, servo).c_str());
     aimAtProxy(renderer->GetActiveCamera(), state, distance);
@@ -239,9 +293,10 @@ int view(const ViewOptions& options)
     writer->SetInputConnection(capture->GetOutputPort());
     writer->Write();
     device.finish();
-    std::printf("%s: %dx%d at t = %.4f s, %d contacts%s, force %.4f N\n",
+    std::printf("%s: %dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n",
                 options.screenshot.c_str(), options.width, options.height, state.time,
-                state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
+                lockstep ? "lockstep" : "real time", state.numContacts,
+                state.stuck ? " (sticking)" : "", norm(state.force));
     return kExitOk;
   }
 
@@ -307,7 +362,7 @@ Command addViewCommand(CLI::App& parent)
   app
     ->add_option("--at", options->at,
                  "With --screenshot: seconds into the path to capture (default: its end)")
-    ->check(CLI::NonNegativeNumber);
+    ->check(finiteNumber(false));
   app->add_option("--width", options->width, "Window width in pixels (default 800)")
     ->check(CLI::Range(64, 8192));
   app->add_option("--height", options->height, "Window height in pixels (default 600)")
@@ -315,16 +370,18 @@ Command addViewCommand(CLI::App& parent)
   app
     ->add_option("--view-distance", options->viewDistance,
                  "Camera distance from the proxy in metres (default 40 proxy radii)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
   app
     ->add_option("--force-scale", options->forceScale,
                  "Force arrow length in metres per newton (default: 30 proxy radii at "
                  "--max-force)")
-    ->check(CLI::PositiveNumber);
+    ->check(numberIn(ParameterRange{0.0, true, 1e6, " m/N"}));
   addDeviceOptions(*app, options->device);
   addSceneOptionsAfterPath(*app, options->scene);
-  addTickBudgetOption(*app, options->scene,
-                      "Default: 50us, which keeps a 4 kHz servo fed (250 us per period)");
+  addTickBudgetOption(
+    *app, options->scene,
+    "Default: 50us, which keeps a 4 kHz servo fed (250 us per period); none for a "
+    "--screenshot of the scripted path, which runs in lockstep");
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return view(*options); }};
 }

@@ -1,7 +1,11 @@
 # Runs `proxima` once and checks its exit status and output, for the command-line tests:
 #   cmake -DPROGRAM=... -DARGS="a|b|c" -DEXPECT_STATUS=2 [-DEXPECT_STDOUT=regex]
-#         [-DEXPECT_STDERR=regex] -P RunProxima.cmake
+#         [-DEXPECT_STDERR=regex] [-DEXPECT_NO_FILE=path] -P RunProxima.cmake
+# EXPECT_NO_FILE: removed before the run, and it must not exist after it.
 string(REPLACE "|" ";" ARGS "${ARGS}")
+if(DEFINED EXPECT_NO_FILE)
+  file(REMOVE "${EXPECT_NO_FILE}")
+endif()
 execute_process(COMMAND "${PROGRAM}" ${ARGS}
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status STREQUAL "${EXPECT_STATUS}")
@@ -21,5 +25,8 @@ string(REGEX MATCHALL "\n" newlines "${err}")
 list(LENGTH newlines numLines)
 if(EXPECT_STATUS STREQUAL "2" AND NOT numLines EQUAL 1)
   message(FATAL_ERROR "expected one line on stderr, got ${numLines}:\n${err}")
+endif()
+if(DEFINED EXPECT_NO_FILE AND EXISTS "${EXPECT_NO_FILE}")
+  message(FATAL_ERROR "left ${EXPECT_NO_FILE} behind")
 endif()
 message(STATUS "ok: status ${status}")

@@ -1,6 +1,7 @@
 #include "IO/Scene/SceneFile.h"
 
 #include "IO/InputChecks/FileChecks.h"
+#include "IO/InputChecks/ParameterRanges.h"
 
 #include <nlohmann/json.hpp>
 
@@ -362,9 +363,11 @@ private:
     return number(value, where, "a number", [](double) { return true; });
   }
 
-  double nonNegative(const Json& value, const std::string& where) const
+  // A number in one of the ranges the command line shares (ParameterRanges.h).
+  double ranged(const Json& value, const std::string& where, const ParameterRange& range) const
   {
-    return number(value, where, "a number >= 0", [](double v) { return v >= 0.0; });
+    return number(value, where, "a number " + describeRange(range),
+                  [&range](double v) { return range.contains(v); });
   }
 
   std::string filePath(const Json& value, const std::string& where) const
@@ -425,8 +428,7 @@ private:
     object.mesh = filePath(require(value, "mesh", where), child(where, "mesh"));
     if (const Json* scale = find(value, "scale"))
     {
-      object.scale =
-        number(*scale, child(where, "scale"), "a number > 0", [](double v) { return v > 0.0; });
+      object.scale = ranged(*scale, child(where, "scale"), kMeshScaleRange);
     }
     if (const Json* pose = find(value, "pose"))
     {
@@ -509,20 +511,25 @@ private:
     if (const Json* angle = find(value, "feature_angle_deg"))
     {
       material.featureAngleDegrees =
-        number(*angle, child(where, "feature_angle_deg"), "a number from 0 to 180",
-               [](double v) { return v >= 0.0 && v <= 180.0; });
+        ranged(*angle, child(where, "feature_angle_deg"), kFeatureAngleRange);
     }
     if (const Json* mu = find(value, "static_friction"))
     {
-      material.staticFriction = nonNegative(*mu, child(where, "static_friction"));
+      material.staticFriction = ranged(*mu, child(where, "static_friction"), kFrictionRange);
     }
     if (const Json* mu = find(value, "dynamic_friction"))
     {
-      material.dynamicFriction = nonNegative(*mu, child(where, "dynamic_friction"));
+      material.dynamicFriction = ranged(*mu, child(where, "dynamic_friction"), kFrictionRange);
     }
     if (const Json* b = find(value, "viscosity"))
     {
-      material.viscosity = nonNegative(*b, child(where, "viscosity"));
+      material.viscosity = ranged(*b, child(where, "viscosity"), kViscosityRange);
+    }
+    const std::string friction =
+      frictionPairError(material.staticFriction, material.dynamicFriction, "static_friction");
+    if (!friction.empty())
+    {
+      fail(child(where, "dynamic_friction"), friction);
     }
     if (const Json* textures = find(value, "textures"))
     {

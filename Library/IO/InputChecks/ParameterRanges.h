@@ -1,0 +1,89 @@
+// The documented range of every number a user gives Proxima, on the command line or in a scene
+// file (Documentation/CommandLine.md, "Numbers"). One table, so that `--scale` and a scene's
+// "scale" refuse the same values with the same words. A range is wide enough for any real
+// session (a 0.1 mm probe on a 10 m model, a 100 kHz replay) and narrow enough that a typo or
+// NaN is refused before it runs: a scale of 1e200 froze the proxy, a rate of 1e9 filled the disk.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace proxima
+{
+
+/// A closed or half-open interval of accepted values, with the unit for messages.
+struct ParameterRange
+{
+  double low = 0.0;
+  /// True: `low` itself is refused (the value must be above it).
+  bool lowExcluded = false;
+  double high = 0.0;
+  /// " m", " Hz", "" for a pure number.
+  const char* unit = "";
+
+  bool contains(double value) const
+  {
+    // NaN fails both comparisons and so every range.
+    return (lowExcluded ? value > low : value >= low) && value <= high;
+  }
+};
+
+/// `value` as a short number for messages: 1e+06, 0.001, 10000 (never 309 digits).
+inline std::string shortNumber(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+/// The range in words: "from 0 to 10", "above 0 and at most 1 m".
+inline std::string describeRange(const ParameterRange& range)
+{
+  const std::string high = shortNumber(range.high) + range.unit;
+  return range.lowExcluded ? "above " + shortNumber(range.low) + " and at most " + high
+                           : "from " + shortNumber(range.low) + " to " + high;
+}
+
+// Geometry.
+inline constexpr ParameterRange kProxyRadiusRange{0.0, true, 1.0, " m"};
+inline constexpr ParameterRange kSkinRange{0.0, false, 0.1, " m"};
+/// File units to metres: a micrometre-unit file to a kilometre-unit one, with margin.
+inline constexpr ParameterRange kMeshScaleRange{0.0, true, 1e6, ""};
+inline constexpr ParameterRange kFeatureAngleRange{0.0, false, 180.0, " degrees"};
+
+// The spring and the device.
+inline constexpr ParameterRange kStiffnessRange{0.0, true, 1e6, " N/m"};
+inline constexpr ParameterRange kMaxForceRange{0.0, true, 1000.0, " N"};
+
+// Surface effects (paper section 4).
+inline constexpr ParameterRange kFrictionRange{0.0, false, 10.0, ""};
+inline constexpr ParameterRange kViscosityRange{0.0, false, 1e4, " N s/m"};
+
+/// Empty when mu_s and mu_d go together; else why not. Sliding never holds harder than sticking
+/// (Coulomb; paper section 4.1), so with a static phase (mu_s > 0) mu_d must not be above mu_s.
+/// mu_s = 0 is the documented surface with no static phase that drags at mu_d
+/// (Documentation/Friction.md). `staticName` is the key or option that gives mu_s.
+inline std::string frictionPairError(double staticFriction, double dynamicFriction,
+                                     const std::string& staticName)
+{
+  if (staticFriction > 0.0 && dynamicFriction > staticFriction)
+  {
+    return "mu_d " + shortNumber(dynamicFriction) + " is above " + staticName + " mu_s " +
+           shortNumber(staticFriction) + ": give mu_d <= mu_s (or mu_s 0 for no static phase)";
+  }
+  return {};
+}
+
+// Time.
+/// A scripted run or path's sample rate. The real-time servo has its own, narrower rule
+/// (Runtime/ServoRate.h).
+inline constexpr ParameterRange kScriptedRateRange{10.0, false, 100000.0, " Hz"};
+/// The length of a generated path.
+inline constexpr ParameterRange kPathDurationRange{0.0, false, 3600.0, " s"};
+/// Ticks of a run, or rows of a generated path, taken without --max-ticks: about 40 minutes at
+/// 4 kHz, a trace of a few GB. A path row at t = 1e9 s would otherwise write until the disk is
+/// full.
+inline constexpr double kDefaultMaxTicks = 1e7;
+
+} // namespace proxima
