@@ -49,8 +49,10 @@ TriangleSoup readMeshFile(const std::string& path, double scale)
     case MeshFileFormat::Obj:
       return detail::polygonsToTriangles(detail::readObj(path), path, scale);
     case MeshFileFormat::Vtp:
-      // vtkXMLPolyDataReader leaks its points on a Points array without three components.
+      // vtkXMLPolyDataReader leaks its points on a Points array without three components, and
+      // allocates whatever sizes the file declares.
       detail::checkVtpPoints(path);
+      detail::checkVtpDeclaredSizes(path);
       return detail::readSoupWithVtk(path, *format, scale);
     case MeshFileFormat::Gltf:
     {

@@ -14,4 +14,13 @@ namespace proxima::detail
 /// NumberOfComponents="3".
 void checkVtpPoints(const std::string& path);
 
+/// Throws InputError naming `path` when what the file declares cannot be in its bytes, before
+/// vtkXMLPolyDataReader allocates for it: a 2 KB file declaring 900,000,000 points made it
+/// allocate 21.6 GB, and a garbled compressed block header (2.5e9 blocks of 1.3 GB,
+/// Testing/Fuzz/Findings/FuzzMeshReader-vtp) ran it out of memory. Bounds: the pieces' declared
+/// points and cells, one byte a value at least, times the most the file's compressor can expand
+/// (1 without one); each binary or appended array's header (its byte count, or its block count,
+/// block size and compressed sizes) against the bytes that follow it.
+void checkVtpDeclaredSizes(const std::string& path);
+
 } // namespace proxima::detail
