@@ -1,9 +1,10 @@
-// `proxima path`: writes a scripted finger path of a given kind, placed from the bounds of a mesh
-// or of a scene file's objects as placed; or, for `probe`, a seeded person-like probing session
-// placed by the surface itself.
+// `proxima path`: writes a scripted finger path of a given kind (press-stroke, slide, circle,
+// jab, wander, or `probe`, a seeded person-like probing session), placed by the surface of a mesh
+// or of a scene file's objects as placed, with no axis taken as up.
 #include "Command.h"
 #include "Validators.h"
 
+#include "IO/InputChecks/InputError.h"
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
@@ -11,6 +12,7 @@
 
 #include <cstdint>
 #include <iostream>
+#include <stdexcept>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +31,7 @@ struct PathOptions
   double rate = 1000.0;
   std::uint64_t seed = 1;
   double duration = ProbeOptions{}.duration;
+  double stretch = 0.0;
   double maxTicks = kDefaultMaxTicks;
   std::string out;
 };
@@ -44,54 +47,68 @@ const std::vector<std::string>& pathKinds()
   return kinds;
 }
 
-FingerPath probePath(const PathOptions& options)
+// The surfaces a path is placed on: the mesh with a tree of its own, or the scene's objects as
+// placed (whose trees the scene built).
+struct PathSurfaces
 {
-  ProbeOptions probe;
-  probe.seed = options.seed;
-  probe.duration = options.duration;
-  probe.rate = options.rate;
+  std::vector<ProbeSurface> surfaces;
+  TriangleMesh mesh;
+  SphereTree tree;
+  LoadedScene scene;
+};
+
+void loadSurfaces(const PathOptions& options, PathSurfaces& loaded)
+{
   if (options.scene.empty())
   {
-    return makeProbePath(loadTriangleMesh(options.mesh, options.scale), probe);
+    loaded.mesh = loadTriangleMesh(options.mesh, options.scale);
+    loaded.tree.build(loaded.mesh);
+    loaded.surfaces.push_back({&loaded.mesh, &loaded.tree});
+    return;
   }
-  const LoadedScene loaded = loadSceneFile(options.scene);
-  std::vector<ProbeSurface> surfaces;
-  for (const CollisionObject& object : loaded.scene->objects)
+  loaded.scene = loadSceneFile(options.scene);
+  for (const CollisionObject& object : loaded.scene.scene->objects)
   {
-    surfaces.push_back({&object.mesh, &object.tree});
+    loaded.surfaces.push_back({&object.mesh, &object.tree});
   }
-  return makeProbePath(surfaces, probe);
 }
 
 int writePath(const PathOptions& options)
 {
   if (options.kind == "probe")
   {
-    // Refused before the path is made: an hour at 100 kHz would not fit in memory.
+    // Refused before anything is loaded: an hour at 100 kHz would not fit in memory.
     checkTickCount(options.duration * options.rate, options.rate, options.maxTicks,
                    "--duration " + shortNumber(options.duration) + " s");
-    const FingerPath path = probePath(options);
-    writeFingerPathFile(options.out, path);
-    std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() << " s\n";
-    return kExitOk;
   }
-  Aabb bounds;
-  if (options.scene.empty())
+  PathSurfaces loaded;
+  loadSurfaces(options, loaded);
+  FingerPath path;
+  if (options.kind == "probe")
   {
-    bounds = loadTriangleMesh(options.mesh, options.scale).bounds();
+    ProbeOptions probe;
+    probe.seed = options.seed;
+    probe.duration = options.duration;
+    probe.rate = options.rate;
+    path = makeProbePath(loaded.surfaces, probe);
   }
   else
   {
-    // The whole scene is built (trees and images too) so that its bounds are exactly those the
-    // run will see; for a path, once, that cost does not matter.
-    const LoadedScene loaded = loadSceneFile(options.scene);
-    for (const CollisionObject& object : loaded.scene->objects)
+    SurfacePathOptions surface;
+    surface.radius = options.radius;
+    surface.rate = options.rate;
+    surface.seed = options.seed;
+    surface.stretch = options.stretch;
+    try
     {
-      bounds.expand(object.mesh.bounds().lower);
-      bounds.expand(object.mesh.bounds().upper);
+      path = makeSurfacePath(options.kind, loaded.surfaces, surface);
+    }
+    catch (const std::runtime_error& error)
+    {
+      throw InputError(options.scene.empty() ? options.mesh : options.scene,
+                       options.kind + ": " + error.what());
     }
   }
-  const FingerPath path = makeDefaultPath(options.kind, bounds, options.radius, options.rate);
   writeFingerPathFile(options.out, path);
   std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() - path.startTime()
             << " s\n";
@@ -119,7 +136,12 @@ Command addPathCommand(CLI::App& parent)
     ->check(numberIn(kProxyRadiusRange));
   app->add_option("--rate", options->rate, "Samples per second (default 1000)")
     ->check(numberIn(kScriptedRateRange));
-  app->add_option("--seed", options->seed, "probe only: random seed (default 1)");
+  app->add_option("--seed", options->seed, "Random seed of the surface points (default 1)");
+  app
+    ->add_option("--stretch", options->stretch,
+                 "press-stroke, circle, jab: the spring's stretch while pressing, in metres "
+                 "(default min(3 mm, 5 % of the object): 3 N at 1000 N/m)")
+    ->check(numberIn(ParameterRange{0.0, true, 0.1, " m"}));
   app
     ->add_option("--duration", options->duration,
                  "probe only: seconds of probing, at least (default 8; the last episode is "

@@ -136,4 +136,31 @@ FingerPath makeProbePath(const std::vector<ProbeSurface>& surfaces, const ProbeO
 FingerPath makeProbePath(const TriangleMesh& mesh, const ProbeOptions& options,
                          std::vector<ProbePhase>* phases = nullptr);
 
+/// What `proxima path KIND` makes on a mesh or scene: a path that does what its name says,
+/// placed by the surface as the probe's episodes are (nothing assumes that z is up), at any
+/// scale. Lengths follow the surfaces' size d (the diagonal of their bounds) and the proxy
+/// radius r; `stretch` is the spring's stretch (proxy to finger) while pressing, so that the
+/// force stays kp stretch whatever r is:
+///   - press-stroke: approach along the normal, press to `stretch`, stroke min(2 cm, 0.3 d) in
+///     one second following the surface, dwell, retract;
+///   - slide: the same at a stretch of r / 2 (a skim) over min(4 cm, 0.5 d) in two seconds;
+///   - circle: press to `stretch`, then one lap of a circle of radius min(1 cm, 0.15 d) on the
+///     surface in two seconds;
+///   - jab: five jabs to `stretch` at 0.3 m/s at five surface points;
+///   - wander: in along a normal and straight through the whole object (the force saturates:
+///     the finger is inside).
+/// A press or slide whose stroke cannot follow the surface for half its length (an edge, a
+/// crease, a thin part) is tried at other points; when none of 24 serves, throws
+/// std::runtime_error saying so. `stretch` defaults to min(3 mm, 0.05 d): 3 N at 1000 N/m.
+struct SurfacePathOptions
+{
+  double radius = 0.001;
+  double rate = 1000.0;
+  std::uint64_t seed = 1;
+  /// 0: the default above.
+  double stretch = 0.0;
+};
+FingerPath makeSurfacePath(const std::string& kind, const std::vector<ProbeSurface>& surfaces,
+                           const SurfacePathOptions& options);
+
 } // namespace proxima

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -150,7 +151,143 @@ public:
     return std::move(m_path);
   }
 
+  // makeSurfacePath's paths: `kind` at sites drawn as the probe's, with the lengths given.
+  FingerPath buildNamed(const std::string& kind, double standoff, double radius, double stretch)
+  {
+    const double size = m_bounds.diagonal();
+    if (kind == "jab")
+    {
+      // Five jabs at 1 m/s at one point, from close above it, a pause between.
+      const double near = std::max(3.0 * radius, 0.25 * standoff);
+      const SurfaceSite site = drawSite(near);
+      const Vec3 start = site.point + site.outward * near;
+      append(start, ProbePhase::Transit);
+      for (int i = 0; i < 5; ++i)
+      {
+        moveTo(site.point - site.outward * std::max(0.0, stretch - radius), 1.0, ProbePhase::Jab);
+        moveTo(start, 1.0, ProbePhase::Jab);
+        hold(0.02, ProbePhase::Transit);
+      }
+      return std::move(m_path);
+    }
+    if (kind == "wander")
+    {
+      // In along a normal and straight through the whole object.
+      const SurfaceSite site = drawSite(standoff);
+      append(site.point + site.outward * standoff, ProbePhase::Transit);
+      Vec3 exitPoint;
+      Vec3 exitOutward;
+      wander(site, exitPoint, exitOutward);
+      return std::move(m_path);
+    }
+
+    // A press, a slide or a circle: the finger at `depth` below the surface gives the proxy,
+    // resting r above it, the stretch asked for.
+    const bool slide = kind == "slide";
+    const bool circle = kind == "circle";
+    const double depth = (slide ? 0.5 * radius : stretch) - radius;
+    const double approachSpeed = 2.0 * standoff; // half a second from the standoff
+    const double circleRadius = std::min(0.01, 0.05 * size);
+    const double length = circle
+                            ? 2.0 * 3.14159265358979323846 * circleRadius
+                            : (slide ? std::min(0.04, 0.5 * size) : std::min(0.02, 0.3 * size));
+    const double step = length / ((slide || circle ? 2.0 : 1.0) * m_options.rate);
+    constexpr int kTries = 24;
+    for (int attempt = 0; attempt < kTries; ++attempt)
+    {
+      m_path = FingerPath{};
+      const SurfaceSite site = drawSite(standoff);
+      const double angle = m_random.between(0.0, 2.0 * 3.14159265358979323846);
+      if (!site.visible)
+      {
+        continue;
+      }
+      const Vec3 e1 = anyPerpendicular(site.outward);
+      const Vec3 e2 = cross(site.outward, e1);
+      const Vec3 heading = e1 * std::cos(angle) + e2 * std::sin(angle);
+      const Vec3 start = site.point + site.outward * standoff;
+      append(start, ProbePhase::Transit);
+      moveTo(site.point - site.outward * depth, approachSpeed, ProbePhase::Approach);
+      Vec3 normal = site.outward;
+      const double walked = walkStroke(site, heading, circle ? 1.0 / circleRadius : 0.0, depth,
+                                       step, length, radius, normal);
+      hold(0.2, ProbePhase::Dwell);
+      moveTo(current() + normal * (depth + standoff), approachSpeed, ProbePhase::Retract);
+      if (walked >= 0.5 * length)
+      {
+        return std::move(m_path);
+      }
+    }
+    throw std::runtime_error(
+      "no place on the surface where a " + kind + " of " + std::to_string(length) +
+      " m follows the surface for half its "
+      "length (tried " +
+      std::to_string(kTries) + " points): the mesh has no patch that smooth or that large");
+  }
+
 private:
+  // A stroke that walks on the surface, for makeSurfacePath: each row one `step` from the last
+  // along the heading laid in the local tangent plane (turning `turn` radians a metre: a
+  // circle), put back on the surface at the nearest point and pushed `depth` in along the local
+  // normal. The probe's strokes follow a straight tangent line instead, which leaves a bumpy
+  // scan after a millimetre or less; walking follows it. The walk ends where it jumps (a step
+  // landing more than three steps away: a crease or a gap), where it makes no headway, at a
+  // sharp edge and where the proxy of `radius` cannot follow. Returns the length walked.
+  double walkStroke(const SurfaceSite& site, Vec3 heading, double turn, double depth, double step,
+                    double length, double radius, Vec3& normal)
+  {
+    Vec3 onSurface = site.point;
+    // Queried from above the surface by a few steps, so that the offset to the nearest point
+    // gives a normal that turns smoothly over convex facet edges.
+    const double lift = 4.0 * step;
+    double walked = 0.0;
+    while (walked + step <= length)
+    {
+      Vec3 along = normalizedOrZero(heading - normal * dot(heading, normal));
+      if (along == Vec3{})
+      {
+        break;
+      }
+      if (turn != 0.0)
+      {
+        const Vec3 side = cross(normal, along);
+        along = along * std::cos(turn * step) + side * std::sin(turn * step);
+      }
+      const Vec3 query = onSurface + along * step + normal * lift;
+      Vec3 triangleNormal;
+      const NearestTriangle found = nearest(query, 2.0 * lift + 4.0 * step, triangleNormal);
+      const Vec3 moved = found.closest.point - onSurface;
+      // A jump (a crease, a gap) or no headway (bounced back at an edge) ends the walk.
+      if (!found.found || norm(moved) > 3.0 * step || dot(moved, along) < 0.1 * step)
+      {
+        break;
+      }
+      const Vec3 offset = query - found.closest.point;
+      Vec3 local = norm(offset) > 0.5 * lift ? normalizedOrZero(offset) : triangleNormal;
+      if (dot(local, normal) < 0.0)
+      {
+        local = -local;
+      }
+      // A sharp edge ends it too: pressed over it, the finger would go into the next face. So
+      // does a groove narrower than the proxy, which stays out of it while the finger follows
+      // its floor: the proxy's place over the new point must be free.
+      Vec3 unused;
+      // And a wall thinner than the press, which the finger would come out of the far side of.
+      if (dot(local, normal) < std::cos(0.25 * 3.14159265358979323846) ||
+          nearest(found.closest.point + local * radius, 0.7 * radius, unused).found ||
+          (depth > 0.0 && nearest(found.closest.point - local * depth, 0.5 * depth, unused).found))
+      {
+        break;
+      }
+      walked += distance(found.closest.point, onSurface);
+      onSurface = found.closest.point;
+      normal = local;
+      heading = along;
+      append(onSurface - normal * depth, ProbePhase::Stroke);
+    }
+    return walked;
+  }
+
   double endTime() const { return m_path.empty() ? 0.0 : m_path.endTime(); }
   const Vec3& current() const { return m_path.positions.back(); }
 
@@ -550,6 +687,44 @@ FingerPath makeProbePath(const std::vector<ProbeSurface>& surfaces, const ProbeO
     phases->clear();
   }
   return ProbeBuilder(surfaces, options, phases).build();
+}
+
+FingerPath makeSurfacePath(const std::string& kind, const std::vector<ProbeSurface>& surfaces,
+                           const SurfacePathOptions& options)
+{
+  const std::vector<std::string>& kinds = defaultPathKinds();
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+  {
+    throw std::invalid_argument("unknown path kind '" + kind +
+                                "' (known: slide, press-stroke, circle, jab, wander)");
+  }
+  if (surfaces.empty())
+  {
+    throw std::invalid_argument("makeSurfacePath: no surfaces");
+  }
+  Aabb bounds;
+  for (const ProbeSurface& surface : surfaces)
+  {
+    if (surface.mesh == nullptr || surface.tree == nullptr)
+    {
+      throw std::invalid_argument("makeSurfacePath: a surface without its mesh or tree");
+    }
+    bounds.expand(surface.mesh->bounds().lower);
+    bounds.expand(surface.mesh->bounds().upper);
+  }
+  const double size = bounds.diagonal();
+  const double stretch = options.stretch > 0.0 ? options.stretch : std::min(0.003, 0.05 * size);
+  // Clear of the surface by more than the proxy, and a few percent of the object at least.
+  const double standoff = std::max(3.0 * options.radius, std::min(0.02, 0.1 * size));
+  ProbeOptions probe;
+  probe.seed = options.seed;
+  probe.rate = options.rate;
+  probe.duration = 0.0;
+  probe.approachDistanceMin = probe.approachDistanceMax = standoff;
+  // A wander crosses the object in about two seconds.
+  probe.wanderSpeedMin = probe.wanderSpeedMax = std::max(0.05, 0.5 * size);
+  checkOptions(probe);
+  return ProbeBuilder(surfaces, probe, nullptr).buildNamed(kind, standoff, options.radius, stretch);
 }
 
 FingerPath makeProbePath(const TriangleMesh& mesh, const ProbeOptions& options,
