@@ -24,11 +24,14 @@ double triangleSolidAngle(const Vec3& point, const Vec3& a, const Vec3& b, const
 /// over 4 pi. A point on the surface itself gets a value between the two sides'.
 double windingNumber(const TriangleMesh& mesh, const Vec3& point);
 
-/// Points whose winding number is larger than a half in magnitude are inside: the midpoint
-/// between outside (0) and inside (1, or -1 for an inward-oriented surface).
+/// Inside by the winding number: above a half, the midpoint between outside (0) and inside (1)
+/// of a surface whose faces face out of their object, as mesh files mean them to. A surface
+/// wound the other way round all over gives -1 inside, and counts only that near a whole turn
+/// (below -0.9): the faces of an open concave corner look at a point in front of them and wind
+/// up to 7/8 of a turn that way (three walls of a box's inside corner), and that is free space.
 inline bool isInsideByWindingNumber(double windingNumber)
 {
-  return windingNumber > 0.5 || windingNumber < -0.5;
+  return windingNumber > 0.5 || windingNumber < -0.9;
 }
 
 } // namespace proxima

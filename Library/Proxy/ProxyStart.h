@@ -18,7 +18,7 @@ struct ProxyStartPlacement
 {
   /// Where the proxy starts: the requested point, or the free point it was moved to.
   Vec3 position;
-  /// The requested point was inside a closed object (|winding number| > 1/2) and the proxy
+  /// The requested point was inside a closed object (isInsideByWindingNumber) and the proxy
   /// starts at `position` outside it instead.
   bool movedOutside = false;
   /// The object that held the point (index in the scene), -1 when none did.

@@ -267,6 +267,25 @@ TEST(WindingNumberSoups, DuplicatedAndFlippedTrianglesAddUp)
   EXPECT_TRUE(isInsideByWindingNumber(oneFaceFlipped));
 }
 
+TEST(WindingNumberSoups, AnOpenConcaveCornerIsFreeSpace)
+{
+  // A floor and two walls meeting at the origin, faces toward the free octant (the scene of the
+  // contact-plane images): seen from in front of all three, they wind most of a turn backwards,
+  // which |w| > 1/2 would call inside and the proxy would be put behind the walls.
+  const double s = 0.02;
+  TriangleSoup corner;
+  corner.points = {{0, 0, 0}, {s, 0, 0}, {s, s, 0}, {0, s, 0}, {0, s, s}, {0, 0, s}, {s, 0, s}};
+  corner.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 5, 6}, {0, 6, 1}};
+  const TriangleMesh mesh = meshOf(corner);
+  for (const double d : {0.008, 0.002, 1e-5})
+  {
+    const double w = windingNumber(mesh, {d, d, d});
+    EXPECT_LT(w, -0.5) << "at " << d;
+    EXPECT_GT(w, -0.875) << "at " << d;
+    EXPECT_FALSE(isInsideByWindingNumber(w)) << "at " << d;
+  }
+}
+
 TEST(WindingNumberSoups, OpenMeshesGiveFractions)
 {
   // An icosphere without its top cap: at the centre, one minus the cap's share of the sphere.

@@ -185,6 +185,21 @@ TEST(ProxyStart, HollowShellsAndNestedObjects)
   EXPECT_GE(bruteForceDistance(scene, deeper.position), p.radius);
 }
 
+TEST(ProxyStart, AFingerInAnOpenCornerIsNotMoved)
+{
+  // A floor and two walls facing the free octant: a finger in front of them is in free space,
+  // though the walls wind most of a turn around it (backwards).
+  const double s = 0.02;
+  TriangleSoup corner;
+  corner.points = {{0, 0, 0}, {s, 0, 0}, {s, s, 0}, {0, s, 0}, {0, s, s}, {0, 0, s}, {s, 0, s}};
+  corner.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 5, 6}, {0, 6, 1}};
+  CollisionScene scene;
+  scene.addObject(meshOf(std::move(corner)));
+  const ProxyStartPlacement placement = placeProxyStart(scene, parameters(), {0.008, 0.008, 0.008});
+  EXPECT_FALSE(placement.movedOutside);
+  EXPECT_EQ(placement.position, (Vec3{0.008, 0.008, 0.008}));
+}
+
 TEST(ProxyStart, NotFiniteOrEmptyIsLeftAlone)
 {
   const auto scene = sphereScene();
