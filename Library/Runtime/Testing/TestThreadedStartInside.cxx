@@ -130,8 +130,13 @@ TEST(ThreadedStartInside, ASwapThatPutsTheProxyInsideMovesItOut)
   runtime.stop();
   EXPECT_FALSE(inside(*sphere, state.proxy));
   EXPECT_GT(norm(state.proxy), 0.05);
-  // The finger is inside and the proxy on the surface: pressed, the force at the clamp by now.
-  EXPECT_NEAR(norm(state.force), ServoParameters{}.maxForce, 1e-9);
+  // The finger is inside and the proxy on the surface: pressed, the force at the clamp by now,
+  // unless the watchdog is fading it (a slow machine, or ThreadSanitizer, can stall the loop).
+  EXPECT_LE(norm(state.force), ServoParameters{}.maxForce * (1.0 + 1e-12));
+  if (!state.fading)
+  {
+    EXPECT_NEAR(norm(state.force), ServoParameters{}.maxForce, 1e-9);
+  }
 }
 
 } // namespace
