@@ -48,6 +48,19 @@ function(proxima_add_test name)
       set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
     endif()
   else()
-    gtest_discover_tests(${name} PROPERTIES LABELS "${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+    # PROPERTIES passes each value on as separate words, so a second label would become a
+    # property name: the first label goes there, and several are set by a script ctest includes
+    # after the discovered tests, on their list (TEST_LIST, <target>_TESTS by default).
+    list(GET ARG_LABELS 0 firstLabel)
+    gtest_discover_tests(${name} PROPERTIES LABELS "${firstLabel}" DISCOVERY_TIMEOUT 60)
+    list(LENGTH ARG_LABELS numLabels)
+    if(numLabels GREATER 1)
+      set(labelScript "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
+      file(WRITE "${labelScript}"
+           "if(DEFINED ${name}_TESTS)\n"
+           "  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${ARG_LABELS}\")\n"
+           "endif()\n")
+      set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labelScript}")
+    endif()
   endif()
 endfunction()

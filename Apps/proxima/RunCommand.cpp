@@ -11,6 +11,7 @@
 #include "IO/PathAndTrace/TraceWriter.h"
 #include "IO/Scene/SceneBuilder.h"
 #include "Proxy/ProxySolver.h"
+#include "Proxy/ProxyStart.h"
 #include "Runtime/BudgetResidual.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/LockstepRuntime.h"
@@ -148,7 +149,7 @@ std::string deadlineLine(const LoopStatistics& statistics)
 void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene> scene,
                  const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
                  const std::function<void(const HapticState&)>& onTick,
-                 nlohmann::ordered_json& report)
+                 nlohmann::ordered_json& report, ProxyStartPlacement& start)
 {
   const SceneOptions& shared = options.scene;
   RuntimeSettings settings;
@@ -169,7 +170,8 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
     floor = measureDeadlineFloor(floorSettings);
   }
   ThreadedRuntime runtime(device, servoParameters(shared), settings);
-  runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front());
+  runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front(),
+                       &start);
   std::string message;
   if (!runtime.start(message))
   {
@@ -243,7 +245,13 @@ int run(const RunOptions& options)
   budget.applyTo(parameters);
   ProxySolver solver;
   solver.setScene(&scene, parameters);
-  solver.resetProxy(fingerPath.positions.front());
+  // A finger that starts inside a closed object would trap the proxy there: it starts outside.
+  ProxyStartPlacement start;
+  if (!options.realtime)
+  {
+    start = placeProxyStart(scene, parameters, fingerPath.positions.front());
+    resetProxyTo(solver, start);
+  }
 
   LockstepSettings settings;
   settings.rate = shared.rate;
@@ -265,7 +273,7 @@ int run(const RunOptions& options)
         trace.write(record);
         summary.add(record);
       },
-      realtimeReport);
+      realtimeReport, start);
   }
   else
   {
@@ -375,6 +383,19 @@ int run(const RunOptions& options)
   json["device_lost_ticks"] = summary.deviceLostTicks();
   json["stuck_ticks"] = summary.stuckTicks();
   json["friction_limited_ticks"] = summary.frictionLimitedTicks();
+  if (start.movedOutside)
+  {
+    json["started_inside"] = {
+      {"object", start.object},
+      {"winding_number", start.windingNumber},
+      {"moved_m", start.movedDistance},
+      {"proxy_start", {start.position.x, start.position.y, start.position.z}},
+      {"ticks", summary.startedOutsideTicks()}};
+  }
+  else
+  {
+    json["started_inside"] = nullptr;
+  }
   json["max_force_N"] = summary.maxForce();
   json["solve_ns"] = {{"median", summary.solveNanosecondsQuantile(0.5)},
                       {"p99", summary.solveNanosecondsQuantile(0.99)},

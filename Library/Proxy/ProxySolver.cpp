@@ -607,6 +607,8 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
 {
   ProxyTickResult result;
   result.proxy = m_proxy;
+  result.startedOutside = m_startedOutsidePending;
+  m_startedOutsidePending = false;
   if (!isFinite(requestedFinger))
   {
     result.refusedFinger = true;

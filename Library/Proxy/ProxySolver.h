@@ -61,6 +61,9 @@ struct ProxyTickResult
   bool budgetLimited = false;
   /// The finger position was not finite: the tick was refused and the proxy held.
   bool refusedFinger = false;
+  /// The first update after resetProxyOutside: the proxy began this tick outside the closed
+  /// object the finger is in, not at the finger.
+  bool startedOutside = false;
   /// More primitives were within reach than the fixed buffers hold (planes were dropped).
   bool contactOverflow = false;
   /// The exact fallback answered the goal problem at least once this tick.
@@ -94,6 +97,14 @@ public:
     m_lastTravel = 0.0;
     m_cache.invalidate();
     m_planesValid = false;
+    m_startedOutsidePending = false;
+  }
+  /// Places the proxy like resetProxy, at a start moved out of the closed object that holds the
+  /// finger (ProxyStart.h); the next update reports startedOutside.
+  void resetProxyOutside(const Vec3& position)
+  {
+    resetProxy(position);
+    m_startedOutsidePending = true;
   }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow. A finger farther
@@ -225,6 +236,7 @@ private:
   bool m_anyShaded = false;
   bool m_anyFriction = false;
   bool m_planesValid = false;
+  bool m_startedOutsidePending = false;
   bool m_planesComplete = true;
   Vec3 m_planesPosition;
 };

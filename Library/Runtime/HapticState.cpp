@@ -17,6 +17,7 @@ std::uint32_t tickFlags(const HapticState& state)
   set(state.frictionLimited, kTickFrictionLimited);
   set(state.contactOverflow, kTickContactOverflow);
   set(state.rateLimited, kTickForceRateLimited);
+  set(state.startedOutside, kTickStartedOutside);
   return flags;
 }
 

@@ -76,6 +76,9 @@ struct HapticState
   /// The tick's work budget (ProxyParameters::tickBudget*) stopped the proxy before it settled:
   /// feasible, but not yet at the constrained minimum; the next tick goes on from there.
   bool budgetLimited = false;
+  /// The proxy began this tick at a start moved out of the closed object that held the finger
+  /// (ProxyStart.h), at the start of the run or at a scene install: the force ramps in.
+  bool startedOutside = false;
   /// Version of the scene the proxy step ran on (ThreadedRuntime::publishScene).
   std::uint64_t sceneVersion = 0;
   /// Seconds between this tick and the finger sample the proxy was computed from: 0 in
@@ -109,6 +112,7 @@ enum TickFlag : std::uint32_t
   kTickFrictionLimited = 1u << 7,
   kTickContactOverflow = 1u << 8,
   kTickForceRateLimited = 1u << 9,
+  kTickStartedOutside = 1u << 10,
 };
 
 /// The state's conditions as a TickFlag bitmask.

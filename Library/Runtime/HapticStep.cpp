@@ -45,6 +45,7 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
   state.stuck = result.stuck;
   state.frictionLimited = result.frictionLimited;
   state.budgetLimited = result.budgetLimited;
+  state.startedOutside = result.startedOutside;
 }
 
 HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,

@@ -37,6 +37,7 @@ void RunSummary::add(const HapticState& record)
   m_deviceLostTicks += record.deviceLost ? 1 : 0;
   m_stuckTicks += record.stuck ? 1 : 0;
   m_frictionLimitedTicks += record.frictionLimited ? 1 : 0;
+  m_startedOutsideTicks += record.startedOutside ? 1 : 0;
   m_trianglesTested += record.trianglesTested;
   m_maxForce = std::max(m_maxForce, norm(record.force));
   if (record.budgetLimited)

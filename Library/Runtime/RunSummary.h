@@ -29,6 +29,8 @@ public:
   std::uint64_t deviceLostTicks() const { return m_deviceLostTicks; }
   std::uint64_t stuckTicks() const { return m_stuckTicks; }
   std::uint64_t frictionLimitedTicks() const { return m_frictionLimitedTicks; }
+  /// Ticks whose proxy began at a start moved out of a closed object (HapticState).
+  std::uint64_t startedOutsideTicks() const { return m_startedOutsideTicks; }
   double maxForce() const { return m_maxForce; }
   /// Quantile q in [0, 1] of the per-tick solve time in nanoseconds (nearest rank).
   double solveNanosecondsQuantile(double q) const;
@@ -65,6 +67,7 @@ private:
   std::uint64_t m_deviceLostTicks = 0;
   std::uint64_t m_stuckTicks = 0;
   std::uint64_t m_frictionLimitedTicks = 0;
+  std::uint64_t m_startedOutsideTicks = 0;
   std::uint64_t m_trianglesTested = 0;
   double m_maxForce = 0.0;
   std::uint64_t m_budgetLimitedTicks = 0;

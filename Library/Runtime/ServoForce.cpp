@@ -34,6 +34,12 @@ void ServoForce::step(const TickInput& input, HapticState& state)
   }
   m_sceneSeen = true;
   m_sceneVersion = state.sceneVersion;
+  // A proxy moved out of the object that holds the finger is far from it, a full clamped force
+  // at once: ramp it in at the scene change's rate instead (from the last force, 0 at a start).
+  if (state.startedOutside)
+  {
+    m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
+  }
 
   state.deviceLost = !input.sample.connected;
   state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;

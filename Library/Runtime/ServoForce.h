@@ -1,7 +1,8 @@
 // The servo's force stage (paper section 8): the spring between proxy and finger, and the safety
 // around it. Forces are clamped to the smaller of the servo's and the device's limit; a finger
 // sample that cannot be used holds the last force; after a scene change the force's rate of
-// change is limited for a moment so a new model cannot kick the hand; and when the proxy state is
+// change is limited for a moment so a new model, or a proxy started outside the object that
+// holds the finger (ProxyStart.h), cannot kick the hand; and when the proxy state is
 // older than the watchdog allows (the proxy loop stalled) or the device is lost, the force fades
 // to zero over the fade time, and fades back in once the fault clears. Allocation-free and
 // deterministic: time is the tick's time on the runtime's clock, never read here.

@@ -17,8 +17,9 @@ struct ServoParameters
   double watchdogTimeout = 0.005;
   /// Time in seconds over which the force fades to zero (stall, device lost).
   double fadeTime = 0.05;
-  /// After a scene change, the force may change by at most this many newtons per second, for
-  /// `sceneChangeWindow` seconds, so that a new model does not kick the hand.
+  /// After a scene change, or a start outside the object that holds the finger (ProxyStart.h),
+  /// the force may change by at most this many newtons per second, for `sceneChangeWindow`
+  /// seconds, so that a new model or a moved proxy does not kick the hand.
   double forceRateLimit = 200.0;
   double sceneChangeWindow = 0.1;
 };

@@ -1,5 +1,6 @@
 #include "Runtime/ThreadedRuntime.h"
 
+#include "Proxy/ProxyStart.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/HapticStep.h"
 #include "Runtime/ServoRate.h"
@@ -20,7 +21,10 @@ struct SceneSlot
 {
   std::shared_ptr<const CollisionScene> scene;
   ProxyParameters parameters;
+  /// Where the proxy goes when the scene is installed: always for the first scene, and for a
+  /// later one only when `movedOutside` (the proxy was inside one of its objects at publish).
   Vec3 proxyStart;
+  bool movedOutside = false;
   std::uint64_t version = 0;
 };
 } // namespace
@@ -107,7 +111,11 @@ void ThreadedRuntime::Impl::installPendingScene()
   }
   const Nanoseconds begin = monotonicNanoseconds();
   solver->setScene(next->scene.get(), next->parameters);
-  if (live == nullptr)
+  if (next->movedOutside)
+  {
+    solver->resetProxyOutside(next->proxyStart);
+  }
+  else if (live == nullptr)
   {
     solver->resetProxy(next->proxyStart);
   }
@@ -248,13 +256,34 @@ ThreadedRuntime::~ThreadedRuntime()
 
 std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene> scene,
                                             const ProxyParameters& parameters,
-                                            const Vec3& proxyStart)
+                                            const Vec3& proxyStart, ProxyStartPlacement* placement)
 {
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
   ProxyParameters budgeted = parameters;
   m_impl->settings.tickBudget.applyTo(budgeted);
-  auto* slot = new SceneSlot{std::move(scene), budgeted, proxyStart, version};
+  // What the new scene must not trap: before any scene is live, the start the caller asks for;
+  // after, the proxy where the proxy loop last left it. Not the finger: a finger pressed into an
+  // object that the new scene keeps is in contact, not trapped, and its proxy stays put.
+  Vec3 requested = proxyStart;
+  if (m_impl->liveVersion.load(std::memory_order_acquire) != 0 &&
+      m_impl->proxyPosted.load(std::memory_order_acquire))
+  {
+    requested = m_impl->proxyState.read().proxy;
+  }
+  ProxyStartPlacement decided;
+  decided.position = requested;
+  if (scene != nullptr)
+  {
+    decided = placeProxyStart(*scene, budgeted, requested);
+  }
+  if (placement != nullptr)
+  {
+    *placement = decided;
+  }
+  // A proxy that is not moved keeps its place at a swap; the first scene places it anyway.
+  const Vec3 start = decided.movedOutside ? decided.position : proxyStart;
+  auto* slot = new SceneSlot{std::move(scene), budgeted, start, decided.movedOutside, version};
   // A scene published before the proxy loop took the last one replaces it unseen.
   delete m_impl->pending.exchange(slot, std::memory_order_acq_rel);
   m_impl->collectRetired();

@@ -11,6 +11,7 @@
 
 #include "Proxy/CollisionScene.h"
 #include "Proxy/ProxyParameters.h"
+#include "Proxy/ProxyStart.h"
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/LoopStatistics.h"
@@ -70,8 +71,14 @@ public:
   /// kick). The first scene also places the proxy at `proxyStart`. Returns the scene's version
   /// (1, 2, ...). Scenes the proxy loop has let go of are freed here, on the caller's thread.
   /// The parameters' tick-budget fields are replaced by RuntimeSettings::tickBudget.
+  /// Start inside: when the proxy would be inside a closed object of the new scene (the first
+  /// scene: at `proxyStart`; a later one: where the proxy loop last left it), the proxy starts
+  /// at the nearest free point outside instead (ProxyStart.h), decided here on the caller's
+  /// thread in O(triangles), and the first tick on the scene reports it; `placement`, when
+  /// given, receives the decision.
   std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
-                             const ProxyParameters& parameters, const Vec3& proxyStart);
+                             const ProxyParameters& parameters, const Vec3& proxyStart,
+                             ProxyStartPlacement* placement = nullptr);
 
   /// Starts both threads; false (and `message` says why) if they could not start. `message`
   /// also says whether real-time scheduling was granted.

@@ -1,6 +1,7 @@
 #include "VTK/LockstepStates.h"
 
 #include "Proxy/ProxySolver.h"
+#include "Proxy/ProxyStart.h"
 #include "Runtime/HapticStep.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/SimulatedDevice.h"
@@ -17,7 +18,8 @@ void playLockstepStates(const CollisionScene& scene, const ProxyParameters& para
   // The solver is large (fixed buffers): on the heap, not the stack.
   auto solver = std::make_unique<ProxySolver>();
   solver->setScene(&scene, parameters);
-  solver->resetProxy(path.positions.front());
+  // As `proxima run` starts it: outside the closed object the path may start in (ProxyStart.h).
+  resetProxyTo(*solver, placeProxyStart(scene, parameters, path.positions.front()));
   SimulatedDevice device(path);
   ServoForce force(servo, device.limits());
   const std::uint64_t numTicks = ticksCovering(path.startTime(), path.endTime(), rate);
