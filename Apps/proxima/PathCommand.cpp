@@ -2,15 +2,18 @@
 // or of a scene file's objects as placed; or, for `probe`, a seeded person-like probing session
 // placed by the surface itself.
 #include "Command.h"
+#include "OutputChecks.h"
 
 #include "IO/Mesh/MeshReader.h"
+#include "IO/Output/OutputIdentity.h"
+#include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
 #include "Runtime/PathGenerators.h"
 
 #include <cstdint>
-#include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,7 @@ FingerPath probePath(const PathOptions& options)
     return makeProbePath(loadTriangleMesh(options.mesh, options.scale), probe);
   }
   const LoadedScene loaded = loadSceneFile(options.scene);
+  refuseOverlappingFiles({{options.out, "--out"}}, sceneMeshInputs(loaded));
   std::vector<ProbeSurface> surfaces;
   for (const CollisionObject& object : loaded.scene->objects)
   {
@@ -61,13 +65,23 @@ FingerPath probePath(const PathOptions& options)
   return makeProbePath(surfaces, probe);
 }
 
+std::string report(const PathOptions& options, std::size_t numRows, double seconds)
+{
+  std::ostringstream text;
+  text << options.out << ": " << numRows << " rows, " << seconds << " s\n";
+  return text.str();
+}
+
 int writePath(const PathOptions& options)
 {
+  // The path must not replace the mesh or scene it is made for.
+  refuseOverlappingFiles({{options.out, "--out"}},
+                         {{options.mesh, "--mesh"}, {options.scene, "--scene"}});
   if (options.kind == "probe")
   {
     const FingerPath path = probePath(options);
     writeFingerPathFile(options.out, path);
-    std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() << " s\n";
+    writeStandardOutput(report(options, path.size(), path.endTime()));
     return kExitOk;
   }
   Aabb bounds;
@@ -80,6 +94,7 @@ int writePath(const PathOptions& options)
     // The whole scene is built (trees and images too) so that its bounds are exactly those the
     // run will see; for a path, once, that cost does not matter.
     const LoadedScene loaded = loadSceneFile(options.scene);
+    refuseOverlappingFiles({{options.out, "--out"}}, sceneMeshInputs(loaded));
     for (const CollisionObject& object : loaded.scene->objects)
     {
       bounds.expand(object.mesh.bounds().lower);
@@ -88,8 +103,7 @@ int writePath(const PathOptions& options)
   }
   const FingerPath path = makeDefaultPath(options.kind, bounds, options.radius, options.rate);
   writeFingerPathFile(options.out, path);
-  std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() - path.startTime()
-            << " s\n";
+  writeStandardOutput(report(options, path.size(), path.endTime() - path.startTime()));
   return kExitOk;
 }
 } // namespace

@@ -4,9 +4,14 @@
 // renders offscreen at a chosen moment of the path and exits instead.
 #include "Command.h"
 #include "DeviceChoice.h"
+#include "OutputChecks.h"
 #include "SceneOptions.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Output/AtomicOutputFile.h"
+#include "IO/Output/OutputError.h"
+#include "IO/Output/OutputIdentity.h"
+#include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
@@ -31,13 +36,16 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -49,6 +57,16 @@ namespace proxima::cli
 {
 namespace
 {
+/// Whether `path` ends in .png (any case): the only format the screenshot is written in, so a
+/// name promising another (x.jpg) is refused rather than given PNG bytes.
+bool hasPngExtension(const std::string& path)
+{
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return extension.size() == 4 && std::tolower(static_cast<unsigned char>(extension[1])) == 'p' &&
+         std::tolower(static_cast<unsigned char>(extension[2])) == 'n' &&
+         std::tolower(static_cast<unsigned char>(extension[3])) == 'g';
+}
+
 struct ViewOptions
 {
   SceneOptions scene;
@@ -134,14 +152,18 @@ int view(const ViewOptions& options)
   std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
   const double pathSeconds = fingerPath.endTime() - fingerPath.startTime();
   const double at = options.at >= 0.0 ? options.at : pathSeconds;
+  refuseOverlappingFiles(
+    {{options.screenshot, "--screenshot"}, {options.device.recordDevice, "--record-device"}},
+    runInputs(shared, loaded, options.device));
+  // Fail on an unwritable screenshot before the run, not after it: its temporary is made now.
+  std::optional<AtomicOutputFile> screenshotFile;
   if (!options.screenshot.empty())
   {
-    // Fail on an unwritable screenshot before the run, not after it.
-    std::ofstream probe(options.screenshot, std::ios::binary | std::ios::app);
-    if (!probe)
+    if (!hasPngExtension(options.screenshot))
     {
-      throw InputError(options.screenshot, "cannot write the file");
+      throw InputError(options.screenshot, "a screenshot is a PNG file: name it .png");
     }
+    screenshotFile.emplace(options.screenshot);
   }
 
   // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
@@ -234,14 +256,26 @@ int view(const ViewOptions& options)
     capture->SetInput(window);
     capture->SetInputBufferTypeToRGB();
     capture->ReadFrontBufferOff();
+    // Into memory, then to the file through AtomicOutputFile: VTK's image writers do not
+    // report a full disk.
     vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(options.screenshot.c_str());
+    writer->WriteToMemoryOn();
     writer->SetInputConnection(capture->GetOutputPort());
     writer->Write();
+    vtkUnsignedCharArray* png = writer->GetResult();
+    if (writer->GetErrorCode() != 0 || png == nullptr || png->GetNumberOfValues() == 0)
+    {
+      throw OutputError::cannotWrite(options.screenshot, "VTK's PNG writer produced no image");
+    }
+    screenshotFile->write(std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
+                                           static_cast<std::size_t>(png->GetNumberOfValues())));
+    screenshotFile->commit();
     device.finish();
-    std::printf("%s: %dx%d at t = %.4f s, %d contacts%s, force %.4f N\n",
-                options.screenshot.c_str(), options.width, options.height, state.time,
-                state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
+    char line[512];
+    std::snprintf(line, sizeof line, "%dx%d at t = %.4f s, %d contacts%s, force %.4f N\n",
+                  options.width, options.height, state.time, state.numContacts,
+                  state.stuck ? " (sticking)" : "", norm(state.force));
+    writeStandardOutput(options.screenshot + ": " + line);
     return kExitOk;
   }
 
