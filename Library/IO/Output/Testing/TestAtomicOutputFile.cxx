@@ -1,19 +1,16 @@
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputError.h"
+#include "IO/Testing/FileSizeLimit.h"
 #include "IO/Testing/ScratchFolderTest.h"
 
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +20,7 @@ namespace
 namespace fs = std::filesystem;
 using proxima::AtomicOutputFile;
 using proxima::OutputError;
+using proxima::testing_support::messageUnderFileSizeLimit;
 
 class AtomicOutput : public proxima::testing_support::ScratchFolderTest
 {
@@ -47,50 +45,6 @@ protected:
     std::ostringstream text;
     text << file.rdbuf();
     return text.str();
-  }
-
-  /// Runs `body` in a child process whose files may not grow past `limitBytes` (as a full disk
-  /// would stop them), with SIGXFSZ ignored as the command line ignores it, and returns what the
-  /// child's OutputError said ("" when nothing was thrown).
-  static std::string messageUnderFileSizeLimit(rlim_t limitBytes, const std::function<void()>& body)
-  {
-    int channel[2];
-    if (::pipe(channel) != 0)
-    {
-      return "pipe failed";
-    }
-    const pid_t child = ::fork();
-    if (child == 0)
-    {
-      ::close(channel[0]);
-      std::signal(SIGXFSZ, SIG_IGN);
-      const rlimit limit{limitBytes, limitBytes};
-      ::setrlimit(RLIMIT_FSIZE, &limit);
-      std::string message;
-      try
-      {
-        body();
-      }
-      catch (const OutputError& error)
-      {
-        message = error.what();
-      }
-      (void)!::write(channel[1], message.data(), message.size());
-      ::_exit(0);
-    }
-    ::close(channel[1]);
-    std::string message;
-    char chunk[256];
-    ssize_t n = 0;
-    while ((n = ::read(channel[0], chunk, sizeof chunk)) > 0)
-    {
-      message.append(chunk, static_cast<std::size_t>(n));
-    }
-    ::close(channel[0]);
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    EXPECT_TRUE(WIFEXITED(status)) << "the child died of signal " << WTERMSIG(status);
-    return message;
   }
 };
 
