@@ -293,7 +293,9 @@ int run(const RunOptions& options)
     progress.update(settings.numTicks);
     progress.finish();
   }
-  trace.close();
+  // The trace is put in place last, once the recording and the summary are written: a failure
+  // of either then leaves no trace behind.
+  trace.finish();
   device.finish();
   const double runMilliseconds = millisecondsSince(runStart) - replayMilliseconds;
 
@@ -422,6 +424,7 @@ int run(const RunOptions& options)
   {
     writeFileAtomically(options.summary, text);
   }
+  trace.close();
   writeStandardOutput(text);
   return kExitOk;
 }

@@ -113,7 +113,7 @@ AtomicOutputFile::~AtomicOutputFile()
 
 void AtomicOutputFile::write(std::string_view bytes)
 {
-  if (m_failed || m_committed)
+  if (m_failed || m_finished)
   {
     throw OutputError::cannotWrite(m_path, m_failed ? "an earlier write failed"
                                                     : "written after it was complete");
@@ -161,9 +161,9 @@ void AtomicOutputFile::writeAll(const char* bytes, std::size_t size)
   }
 }
 
-void AtomicOutputFile::commit()
+void AtomicOutputFile::finish()
 {
-  if (m_committed)
+  if (m_finished)
   {
     return;
   }
@@ -191,6 +191,16 @@ void AtomicOutputFile::commit()
   {
     fail(systemReason(errno));
   }
+  m_finished = true;
+}
+
+void AtomicOutputFile::commit()
+{
+  if (m_committed)
+  {
+    return;
+  }
+  finish();
   if (!m_inPlace)
   {
     if (::rename(m_temporaryPath.c_str(), m_finalPath.c_str()) != 0)

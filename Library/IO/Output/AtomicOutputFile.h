@@ -30,8 +30,13 @@ public:
   /// Appends bytes (buffered). Throws OutputError, and removes the temporary, when the system
   /// refuses them; later calls throw too.
   void write(std::string_view bytes);
-  /// Writes what is buffered, flushes it to the disk, closes and renames the temporary over the
-  /// target. Throws OutputError (and removes the temporary) when any of it fails.
+  /// Writes what is buffered, flushes it to the disk and closes it: everything that a full disk
+  /// can fail, but not yet the rename. For a command with several outputs, which finishes each
+  /// before it commits any, so that one failing leaves none. Throws OutputError (and removes
+  /// the temporary) when any of it fails. No write() after it.
+  void finish();
+  /// finish(), then renames the temporary over the target. Throws OutputError (and removes the
+  /// temporary) when any of it fails.
   void commit();
 
   /// The target as the caller named it.
@@ -53,6 +58,7 @@ private:
   unsigned m_mode = 0;
   bool m_inPlace = false;
   bool m_failed = false;
+  bool m_finished = false;
   bool m_committed = false;
 };
 

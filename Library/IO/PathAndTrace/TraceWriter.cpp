@@ -28,6 +28,11 @@ void TraceWriter::write(const HapticState& r)
   m_file.write(std::string_view(row, static_cast<std::size_t>(length)));
 }
 
+void TraceWriter::finish()
+{
+  m_file.finish();
+}
+
 void TraceWriter::close()
 {
   m_file.commit();

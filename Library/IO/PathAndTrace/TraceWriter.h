@@ -27,6 +27,10 @@ public:
 
   /// Throws OutputError when the system refuses the row (a full disk): a run stops there.
   void write(const HapticState& record);
+  /// Writes out the rest and checks that it reached the disk, without putting the trace in place
+  /// yet: a run finishes its trace, then writes its other outputs, then closes the trace, so
+  /// that a failure of any leaves none. Throws OutputError.
+  void finish();
   /// Puts the complete trace in place; throws OutputError if the data did not reach the file.
   /// A trace never closed (a run that failed) leaves nothing behind.
   void close();

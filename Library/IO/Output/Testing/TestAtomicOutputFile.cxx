@@ -122,6 +122,18 @@ TEST_F(AtomicOutput, DestroyedWithoutCommitLeavesTheOldFileAndNoTemporary)
   EXPECT_EQ(folderNames(), std::vector<std::string>{"trace.csv"});
 }
 
+TEST_F(AtomicOutput, FinishedButNeverCommittedLeavesNothing)
+{
+  // A command's other output failed after this one was finished: this one must go too.
+  {
+    AtomicOutputFile file(pathOf("trace.csv"));
+    file.write("a whole trace\n");
+    file.finish();
+    EXPECT_THROW(file.write("more"), OutputError);
+  }
+  EXPECT_TRUE(folderNames().empty());
+}
+
 TEST_F(AtomicOutput, AFileSizeLimitFailsWithTheReasonAndLeavesNothing)
 {
   const std::string target = pathOf("trace.csv");
