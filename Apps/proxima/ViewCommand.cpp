@@ -57,14 +57,20 @@ namespace proxima::cli
 {
 namespace
 {
-/// Whether `path` ends in .png (any case): the only format the screenshot is written in, so a
-/// name promising another (x.jpg) is refused rather than given PNG bytes.
-bool hasPngExtension(const std::string& path)
+bool isPngExtension(const std::string& extension)
 {
-  const std::string extension = std::filesystem::path(path).extension().string();
   return extension.size() == 4 && std::tolower(static_cast<unsigned char>(extension[1])) == 'p' &&
          std::tolower(static_cast<unsigned char>(extension[2])) == 'n' &&
          std::tolower(static_cast<unsigned char>(extension[3])) == 'g';
+}
+
+/// Whether `path` promises a format other than PNG, the only one the screenshot is written in:
+/// an extension other than .png (any case), as x.jpg, is refused rather than given PNG bytes. A
+/// name without one (/dev/stdout, a pipe) promises nothing and gets PNG.
+bool namesAnotherFormat(const std::string& path)
+{
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return !extension.empty() && !isPngExtension(extension);
 }
 
 struct ViewOptions
@@ -159,7 +165,7 @@ int view(const ViewOptions& options)
   std::optional<AtomicOutputFile> screenshotFile;
   if (!options.screenshot.empty())
   {
-    if (!hasPngExtension(options.screenshot))
+    if (namesAnotherFormat(options.screenshot))
     {
       throw InputError(options.screenshot, "a screenshot is a PNG file: name it .png");
     }
