@@ -1,16 +1,18 @@
 // proxima-<command>: the program of one subcommand, which the `proxima` front (main.cpp) runs
 // with the command line it was given. Parses it, runs the subcommand and maps failures to the
-// exit statuses of DESIGN.md section 3: 0 success, 2 bad input (one line on stderr naming the
-// file and the defect), 1 internal error. Built once per subcommand, PROXIMA_ADD_COMMAND naming
+// exit statuses of DESIGN.md section 3: 0 success, 2 bad input or an output that cannot be
+// written (one line on stderr naming the file and the defect), 1 internal error. Built once per subcommand, PROXIMA_ADD_COMMAND naming
 // its add function (Apps/proxima/CMakeLists.txt), so that each program links only the libraries
 // its subcommand uses: `proxima run` on an OBJ file does not load VTK's rendering.
 #include "Command.h"
 #include "ProximaApp.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Output/StandardOutput.h"
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 
@@ -20,6 +22,10 @@
 
 int main(int argc, char** argv)
 {
+  // A file-size limit (ulimit -f) then fails a write with EFBIG, which the writers report like a
+  // full disk (status 2, the file named), instead of killing the program mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
+
   CLI::App app{proxima::cli::kProximaDescription, "proxima"};
   proxima::cli::configureProximaApp(app);
 
@@ -40,7 +46,10 @@ int main(int argc, char** argv)
   {
     if (command.app->parsed())
     {
-      return command.run();
+      const int status = command.run();
+      // A report lost on the way to standard output (a full disk, /dev/full) is not a success.
+      proxima::finishStandardOutput();
+      return status;
     }
     std::cerr << "proxima: no subcommand given (see proxima --help)\n";
     return proxima::cli::kExitBadInput;

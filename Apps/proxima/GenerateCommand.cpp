@@ -5,10 +5,10 @@
 
 #include "Geometry/ProceduralMeshes.h"
 #include "IO/Mesh/MeshWriter.h"
+#include "IO/Output/StandardOutput.h"
 
 #include <nlohmann/json.hpp>
 
-#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,7 +49,7 @@ int writeAndReport(const std::string& shape, const TriangleSoup& soup, const std
   report["triangles"] = soup.triangles.size();
   report["points"] = soup.points.size();
   report["point_normals"] = !soup.pointNormals.empty();
-  std::cout << report.dump(2) << std::endl;
+  writeStandardOutput(report.dump(2) + "\n");
   return kExitOk;
 }
 

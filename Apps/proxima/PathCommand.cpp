@@ -2,18 +2,21 @@
 // jab, wander, or `probe`, a seeded person-like probing session), placed by the surface of a mesh
 // or of a scene file's objects as placed, with no axis taken as up.
 #include "Command.h"
+#include "OutputChecks.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/Mesh/MeshReader.h"
+#include "IO/Output/OutputIdentity.h"
+#include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
 #include "Runtime/PathGenerators.h"
 
 #include <cstdint>
-#include <iostream>
 #include <stdexcept>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -67,14 +70,25 @@ void loadSurfaces(const PathOptions& options, PathSurfaces& loaded)
     return;
   }
   loaded.scene = loadSceneFile(options.scene);
+  refuseOverlappingFiles({{options.out, "--out"}}, sceneMeshInputs(loaded.scene));
   for (const CollisionObject& object : loaded.scene.scene->objects)
   {
     loaded.surfaces.push_back({&object.mesh, &object.tree});
   }
 }
 
+std::string report(const PathOptions& options, std::size_t numRows, double seconds)
+{
+  std::ostringstream text;
+  text << options.out << ": " << numRows << " rows, " << seconds << " s\n";
+  return text.str();
+}
+
 int writePath(const PathOptions& options)
 {
+  // The path must not replace the mesh or scene it is made for.
+  refuseOverlappingFiles({{options.out, "--out"}},
+                         {{options.mesh, "--mesh"}, {options.scene, "--scene"}});
   if (options.kind == "probe")
   {
     // Refused before anything is loaded: an hour at 100 kHz would not fit in memory.
@@ -110,8 +124,7 @@ int writePath(const PathOptions& options)
     }
   }
   writeFingerPathFile(options.out, path);
-  std::cout << options.out << ": " << path.size() << " rows, " << path.endTime() - path.startTime()
-            << " s\n";
+  writeStandardOutput(report(options, path.size(), path.endTime() - path.startTime()));
   return kExitOk;
 }
 } // namespace

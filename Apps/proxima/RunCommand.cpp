@@ -3,10 +3,14 @@
 // writes the trace (DESIGN.md section 3) and a summary of per-tick solve times and iterations.
 #include "Command.h"
 #include "DeviceChoice.h"
+#include "OutputChecks.h"
 #include "SceneOptions.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Output/AtomicOutputFile.h"
+#include "IO/Output/OutputIdentity.h"
+#include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/PathAndTrace/TraceWriter.h"
 #include "IO/Scene/SceneBuilder.h"
@@ -23,7 +27,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -233,6 +236,12 @@ int run(const RunOptions& options)
     static_cast<double>(ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate)),
     shared.rate, options.maxTicks,
     shared.path + " (" + shortNumber(fingerPath.endTime() - fingerPath.startTime()) + " s)");
+  // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
+  // outputs into one file.
+  refuseOverlappingFiles({{options.out, "--out"},
+                          {options.summary, "--summary"},
+                          {options.device.recordDevice, "--record-device"}},
+                         runInputs(shared, loaded, options.device));
   // Shared from here on: the threaded runtime keeps the scene for as long as its loops use it.
   const std::shared_ptr<const CollisionScene> sceneHolder(std::move(loaded.scene));
   const CollisionScene& scene = *sceneHolder;
@@ -300,7 +309,9 @@ int run(const RunOptions& options)
     progress.update(settings.numTicks);
     progress.finish();
   }
-  trace.close();
+  // The trace is put in place last, once the recording and the summary are written: a failure
+  // of either then leaves no trace behind.
+  trace.finish();
   device.finish();
   const double runMilliseconds = millisecondsSince(runStart) - replayMilliseconds;
 
@@ -437,17 +448,13 @@ int run(const RunOptions& options)
     json["realtime"] = std::move(realtimeReport);
   }
 
-  const std::string text = json.dump(2);
+  const std::string text = json.dump(2) + "\n";
   if (!options.summary.empty())
   {
-    std::ofstream file(options.summary);
-    file << text << "\n";
-    if (!file)
-    {
-      throw InputError(options.summary, "cannot write the file");
-    }
+    writeFileAtomically(options.summary, text);
   }
-  std::cout << text << "\n";
+  trace.close();
+  writeStandardOutput(text);
   return kExitOk;
 }
 

@@ -5,11 +5,11 @@
 
 #include "Geometry/SphereTree.h"
 #include "IO/Mesh/MeshReader.h"
+#include "IO/Output/StandardOutput.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -68,7 +68,7 @@ int runTree(const TreeArguments& arguments)
   report["options"] = {{"leaf_size_factor", arguments.tree.leafSizeFactor},
                        {"leaf_spheres_per_node", arguments.tree.maxLeafSpheresPerNode},
                        {"max_pieces_per_triangle", arguments.tree.maxPiecesPerTriangle}};
-  std::cout << report.dump(2) << std::endl;
+  writeStandardOutput(report.dump(2) + "\n");
   return kExitOk;
 }
 } // namespace

@@ -6,11 +6,17 @@
 #include "Command.h"
 #include "DeviceChoice.h"
 #include "DisplayCheck.h"
+#include "OutputChecks.h"
 #include "SceneOptions.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Output/AtomicOutputFile.h"
+#include "IO/Output/OutputError.h"
+#include "IO/Output/OutputIdentity.h"
+#include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "Proxy/ProxyStart.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoRate.h"
@@ -34,13 +40,16 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -52,6 +61,22 @@ namespace proxima::cli
 {
 namespace
 {
+bool isPngExtension(const std::string& extension)
+{
+  return extension.size() == 4 && std::tolower(static_cast<unsigned char>(extension[1])) == 'p' &&
+         std::tolower(static_cast<unsigned char>(extension[2])) == 'n' &&
+         std::tolower(static_cast<unsigned char>(extension[3])) == 'g';
+}
+
+/// Whether `path` promises a format other than PNG, the only one the screenshot is written in:
+/// an extension other than .png (any case), as x.jpg, is refused rather than given PNG bytes. A
+/// name without one (/dev/stdout, a pipe) promises nothing and gets PNG.
+bool namesAnotherFormat(const std::string& path)
+{
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return !extension.empty() && !isPngExtension(extension);
+}
+
 struct ViewOptions
 {
   SceneOptions scene;
@@ -97,7 +122,8 @@ HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& sc
   tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
   ProxySolver solver;
   solver.setScene(&scene, parameters);
-  solver.resetProxy(path.positions.front());
+  // As `proxima run`: a finger that starts inside a closed object starts its proxy outside.
+  resetProxyTo(solver, placeProxyStart(scene, parameters, path.positions.front()));
   LockstepSettings settings;
   settings.rate = shared.rate;
   settings.numTicks = ticksCovering(0.0, at, shared.rate);
@@ -161,19 +187,18 @@ int view(const ViewOptions& options)
     throw InputError("--at", shortNumber(at) + " s is after the end of the path (" +
                                shortNumber(pathSeconds) + " s)");
   }
+  refuseOverlappingFiles(
+    {{options.screenshot, "--screenshot"}, {options.device.recordDevice, "--record-device"}},
+    runInputs(shared, loaded, options.device));
+  // Fail on an unwritable screenshot before the run, not after it: its temporary is made now.
+  std::optional<AtomicOutputFile> screenshotFile;
   if (!options.screenshot.empty())
   {
-    // Fail on an unwritable screenshot before the run, not after it; and leave no empty file
-    // behind when a later check refuses the run.
-    const bool existed = std::ifstream(options.screenshot).good();
-    if (!std::ofstream(options.screenshot, std::ios::binary | std::ios::app))
+    if (namesAnotherFormat(options.screenshot))
     {
-      throw InputError(options.screenshot, "cannot write the file");
+      throw InputError(options.screenshot, "a screenshot is a PNG file: name it .png");
     }
-    if (!existed)
-    {
-      std::remove(options.screenshot.c_str());
-    }
+    screenshotFile.emplace(options.screenshot);
   }
 
   // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
@@ -288,15 +313,26 @@ int view(const ViewOptions& options)
     capture->SetInput(window);
     capture->SetInputBufferTypeToRGB();
     capture->ReadFrontBufferOff();
+    // Into memory, then to the file through AtomicOutputFile: VTK's image writers do not
+    // report a full disk.
     vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(options.screenshot.c_str());
+    writer->WriteToMemoryOn();
     writer->SetInputConnection(capture->GetOutputPort());
     writer->Write();
+    vtkUnsignedCharArray* png = writer->GetResult();
+    if (writer->GetErrorCode() != 0 || png == nullptr || png->GetNumberOfValues() == 0)
+    {
+      throw OutputError::cannotWrite(options.screenshot, "VTK's PNG writer produced no image");
+    }
+    screenshotFile->write(std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
+                                           static_cast<std::size_t>(png->GetNumberOfValues())));
+    screenshotFile->commit();
     device.finish();
-    std::printf("%s: %dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n",
-                options.screenshot.c_str(), options.width, options.height, state.time,
-                lockstep ? "lockstep" : "real time", state.numContacts,
-                state.stuck ? " (sticking)" : "", norm(state.force));
+    char line[512];
+    std::snprintf(line, sizeof line, "%dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n",
+                  options.width, options.height, state.time, lockstep ? "lockstep" : "real time",
+                  state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
+    writeStandardOutput(options.screenshot + ": " + line);
     return kExitOk;
   }
 

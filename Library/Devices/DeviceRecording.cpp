@@ -1,10 +1,14 @@
 #include "Devices/DeviceRecording.h"
 
+#include "IO/Output/AtomicOutputFile.h"
+#include "IO/Output/OutputError.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace proxima
 {
@@ -28,29 +32,29 @@ bool parseDouble(const std::string& text, double& value)
 bool writeDeviceRecording(const std::string& path, const std::vector<RecordedSample>& samples,
                           std::string& error)
 {
-  std::ofstream file(path);
-  if (!file)
+  try
   {
-    error = path + ": cannot write the file";
-    return false;
+    // All or nothing (AtomicOutputFile): a replay never reads a recording cut short.
+    AtomicOutputFile file(path);
+    file.write(kDeviceRecordingHeader);
+    file.write("\n");
+    char line[512];
+    for (const RecordedSample& row : samples)
+    {
+      const DeviceSample& s = row.sample;
+      // %.17g: every double comes back bit for bit.
+      const int length = std::snprintf(
+        line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%d,%d,%u,%d,%.17g,%.17g,%.17g,%.17g\n",
+        row.time, s.position.x, s.position.y, s.position.z, s.valid ? 1 : 0, s.connected ? 1 : 0,
+        static_cast<unsigned>(s.buttons), s.hasOrientation ? 1 : 0, s.orientation[0],
+        s.orientation[1], s.orientation[2], s.orientation[3]);
+      file.write(std::string_view(line, static_cast<std::size_t>(length)));
+    }
+    file.commit();
   }
-  file << kDeviceRecordingHeader << "\n";
-  char line[512];
-  for (const RecordedSample& row : samples)
+  catch (const OutputError& failure)
   {
-    const DeviceSample& s = row.sample;
-    // %.17g: every double comes back bit for bit.
-    std::snprintf(line, sizeof line,
-                  "%.17g,%.17g,%.17g,%.17g,%d,%d,%u,%d,%.17g,%.17g,%.17g,%.17g\n", row.time,
-                  s.position.x, s.position.y, s.position.z, s.valid ? 1 : 0, s.connected ? 1 : 0,
-                  static_cast<unsigned>(s.buttons), s.hasOrientation ? 1 : 0, s.orientation[0],
-                  s.orientation[1], s.orientation[2], s.orientation[3]);
-    file << line;
-  }
-  file.close();
-  if (!file)
-  {
-    error = path + ": cannot write the file";
+    error = failure.what();
     return false;
   }
   return true;

@@ -12,8 +12,9 @@ namespace proxima
 /// Writes `soup` through VTK's writers, the format chosen by extension (case-insensitive):
 /// .obj (with point normals and texture coordinates when the soup has them, 17 significant
 /// digits), .stl (binary, single precision), .ply (binary), .vtp (VTK XML, double precision).
-/// Throws InputError when the extension is not one of these or the file cannot be written, and
-/// std::invalid_argument when the soup's attributes do not match its points.
+/// The file appears complete or not at all (AtomicOutputFile). Throws InputError when the
+/// extension is not one of these, OutputError (an InputError) when the file cannot be written in
+/// full, and std::invalid_argument when the soup's attributes do not match its points.
 void writeMeshFile(const std::string& path, const TriangleSoup& soup);
 
 } // namespace proxima

@@ -1,5 +1,7 @@
 #include "IO/PathAndTrace/FingerPathFile.h"
 
+#include "IO/Output/AtomicOutputFile.h"
+
 #include <cerrno>
 #include <cstring>
 #include <cmath>
@@ -139,21 +141,17 @@ FingerPath readFingerPathFile(const std::string& path)
 
 void writeFingerPathFile(const std::string& path, const FingerPath& fingerPath)
 {
-  std::FILE* file = std::fopen(path.c_str(), "w");
-  if (file == nullptr)
-  {
-    throw InputError(path, std::string("cannot write the file (") + std::strerror(errno) + ")");
-  }
-  std::fputs("t,x,y,z\n", file);
+  AtomicOutputFile file(path);
+  file.write("t,x,y,z\n");
+  char row[128];
   for (std::size_t i = 0; i < fingerPath.size(); ++i)
   {
     const Vec3& p = fingerPath.positions[i];
-    std::fprintf(file, "%.17g,%.17g,%.17g,%.17g\n", fingerPath.times[i], p.x, p.y, p.z);
+    const int length = std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g\n",
+                                     fingerPath.times[i], p.x, p.y, p.z);
+    file.write(std::string_view(row, static_cast<std::size_t>(length)));
   }
-  if (std::fclose(file) != 0)
-  {
-    throw std::runtime_error(path + ": write failed");
-  }
+  file.commit();
 }
 
 } // namespace proxima

@@ -15,7 +15,8 @@ namespace proxima
 /// that goes backwards, or a file with no rows.
 FingerPath readFingerPathFile(const std::string& path);
 
-/// Writes `fingerPath` with full double precision. Throws std::runtime_error if it cannot.
+/// Writes `fingerPath` with full double precision, all of it or nothing (AtomicOutputFile).
+/// Throws OutputError if it cannot.
 void writeFingerPathFile(const std::string& path, const FingerPath& fingerPath);
 
 } // namespace proxima

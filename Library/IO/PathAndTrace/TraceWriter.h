@@ -6,9 +6,9 @@
 // TickFlag bits (Documentation/CommandLine.md).
 #pragma once
 
+#include "IO/Output/AtomicOutputFile.h"
 #include "Runtime/HapticState.h"
 
-#include <cstdio>
 #include <string>
 
 namespace proxima
@@ -21,19 +21,22 @@ public:
     "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
     "contacts,iterations,solve_ns,object,flags";
 
-  /// Opens `path` and writes the header. Throws std::runtime_error if it cannot.
+  /// Starts `path` (under a temporary name until close(), AtomicOutputFile) with the header.
+  /// Throws OutputError if it cannot.
   explicit TraceWriter(const std::string& path);
-  ~TraceWriter();
-  TraceWriter(const TraceWriter&) = delete;
-  TraceWriter& operator=(const TraceWriter&) = delete;
 
+  /// Throws OutputError when the system refuses the row (a full disk): a run stops there.
   void write(const HapticState& record);
-  /// Flushes and closes; throws std::runtime_error if the data did not reach the file.
+  /// Writes out the rest and checks that it reached the disk, without putting the trace in place
+  /// yet: a run finishes its trace, then writes its other outputs, then closes the trace, so
+  /// that a failure of any leaves none. Throws OutputError.
+  void finish();
+  /// Puts the complete trace in place; throws OutputError if the data did not reach the file.
+  /// A trace never closed (a run that failed) leaves nothing behind.
   void close();
 
 private:
-  std::string m_path;
-  std::FILE* m_file = nullptr;
+  AtomicOutputFile m_file;
 };
 
 } // namespace proxima

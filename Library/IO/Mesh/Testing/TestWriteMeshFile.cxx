@@ -1,6 +1,7 @@
 #include "Geometry/ProceduralMeshes.h"
 #include "IO/Mesh/MeshReader.h"
 #include "IO/Mesh/MeshWriter.h"
+#include "IO/Testing/FileSizeLimit.h"
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,20 @@ TEST_F(WriteMeshFile, StlPlyAndVtpRoundTrip)
     const proxima::TriangleSoup back = proxima::readMeshFile(path(name));
     EXPECT_EQ(back.triangles.size(), box.triangles.size()) << name;
     EXPECT_EQ(back.points.size(), box.points.size()) << name;
+  }
+}
+
+// VTK's OBJ and PLY writers return success on a full disk. The target is a link to /dev/null,
+// written in place and never limited, so only the check of VTK's own file can catch the cut.
+TEST_F(WriteMeshFile, AWriterCutShortByAFullDiskIsAnError)
+{
+  const proxima::TriangleSoup sphere = proxima::makeIcosphere(3, 0.05);
+  for (const char* name : {"sphere.obj", "sphere.stl", "sphere.ply"})
+  {
+    fs::create_symlink("/dev/null", path(name));
+    const std::string message = proxima::testing_support::messageUnderFileSizeLimit(
+      4096, [&] { proxima::writeMeshFile(path(name), sphere); });
+    EXPECT_EQ(message, path(name) + ": cannot write the file (File too large)");
   }
 }
 
