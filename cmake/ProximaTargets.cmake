@@ -19,6 +19,7 @@ function(proxima_add_library name)
 endfunction()
 
 # proxima_add_test(NAME SOURCES ... DEPENDS ... [LABELS label] [DEFINITIONS ...]
+#                  [ENVIRONMENT VAR=value]
 #                  [WHOLE_PROGRAM ctest-name [LAUNCHER command...] [TIMEOUT seconds]]):
 # the one way a test program is registered. A GoogleTest program under ctest, linked with
 # gtest_main; by default each of its test cases is its own ctest entry (gtest_discover_tests).
@@ -30,8 +31,8 @@ function(proxima_add_test name)
   if(NOT PROXIMA_BUILD_TESTING)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "WHOLE_PROGRAM;TIMEOUT" "SOURCES;DEPENDS;LABELS;DEFINITIONS;LAUNCHER"
-                        ${ARGN})
+  cmake_parse_arguments(ARG "" "WHOLE_PROGRAM;TIMEOUT;ENVIRONMENT"
+                        "SOURCES;DEPENDS;LABELS;DEFINITIONS;LAUNCHER" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
@@ -44,6 +45,9 @@ function(proxima_add_test name)
   if(ARG_WHOLE_PROGRAM)
     add_test(NAME ${ARG_WHOLE_PROGRAM} COMMAND ${ARG_LAUNCHER} $<TARGET_FILE:${name}>)
     set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES LABELS "${ARG_LABELS}")
+    if(ARG_ENVIRONMENT)
+      set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES ENVIRONMENT "${ARG_ENVIRONMENT}")
+    endif()
     if(ARG_TIMEOUT)
       set_tests_properties(${ARG_WHOLE_PROGRAM} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
     endif()
@@ -52,7 +56,12 @@ function(proxima_add_test name)
     # property name: the first label goes there, and several are set by a script ctest includes
     # after the discovered tests, on their list (TEST_LIST, <target>_TESTS by default).
     list(GET ARG_LABELS 0 firstLabel)
-    gtest_discover_tests(${name} PROPERTIES LABELS "${firstLabel}" DISCOVERY_TIMEOUT 60)
+    if(ARG_ENVIRONMENT)
+      gtest_discover_tests(${name} PROPERTIES LABELS "${firstLabel}" ENVIRONMENT
+                           "${ARG_ENVIRONMENT}" DISCOVERY_TIMEOUT 60)
+    else()
+      gtest_discover_tests(${name} PROPERTIES LABELS "${firstLabel}" DISCOVERY_TIMEOUT 60)
+    endif()
     list(LENGTH ARG_LABELS numLabels)
     if(numLabels GREATER 1)
       set(labelScript "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
