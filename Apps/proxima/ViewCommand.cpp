@@ -16,10 +16,10 @@
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
-#include "Proxy/ProxyStart.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoRate.h"
+#include "VTK/LockstepStates.h"
 #include "VTK/ScenePolyData.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticStateRepresentation.h"
@@ -114,22 +114,20 @@ Vec3 freeSide(const HapticState& state)
   return length > 0.0 ? sum / length : state.contacts[0].normal;
 }
 
-// The state at `at` seconds into `path` (which starts at 0), from a lockstep run of its ticks.
+// The state at `at` seconds into `path` (which starts at 0), from a lockstep run of its ticks
+// with the finger read from `device`.
 HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& scene,
                             const FingerPath& path, double at, HapticDevice& device)
 {
   ProxyParameters parameters = proxyParameters(shared);
   tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
-  ProxySolver solver;
-  solver.setScene(&scene, parameters);
-  // As `proxima run`: a finger that starts inside a closed object starts its proxy outside.
-  resetProxyTo(solver, placeProxyStart(scene, parameters, path.positions.front()));
-  LockstepSettings settings;
-  settings.rate = shared.rate;
-  settings.numTicks = ticksCovering(0.0, at, shared.rate);
+  const std::uint64_t ticks = ticksCovering(0.0, at, shared.rate);
   HapticState last;
-  runLockstep(settings, solver, device, servoParameters(shared),
-              [&last](const HapticState& state) { last = state; });
+  vtk::playLockstepStates(scene, parameters, servoParameters(shared), path, shared.rate, device,
+                          [&last, ticks](const HapticState& state) {
+                            last = state;
+                            return state.tick + 1 < ticks;
+                          });
   return last;
 }
 

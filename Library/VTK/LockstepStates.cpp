@@ -15,12 +15,20 @@ void playLockstepStates(const CollisionScene& scene, const ProxyParameters& para
                         const ServoParameters& servo, const FingerPath& path, double rate,
                         const std::function<bool(const HapticState&)>& onState)
 {
+  SimulatedDevice device(path);
+  playLockstepStates(scene, parameters, servo, path, rate, device, onState);
+}
+
+void playLockstepStates(const CollisionScene& scene, const ProxyParameters& parameters,
+                        const ServoParameters& servo, const FingerPath& path, double rate,
+                        HapticDevice& device,
+                        const std::function<bool(const HapticState&)>& onState)
+{
   // The solver is large (fixed buffers): on the heap, not the stack.
   auto solver = std::make_unique<ProxySolver>();
   solver->setScene(&scene, parameters);
   // As `proxima run` starts it: outside the closed object the path may start in (ProxyStart.h).
   resetProxyTo(*solver, placeProxyStart(scene, parameters, path.positions.front()));
-  SimulatedDevice device(path);
   ServoForce force(servo, device.limits());
   const std::uint64_t numTicks = ticksCovering(path.startTime(), path.endTime(), rate);
   for (std::uint64_t tick = 0; tick < numTicks; ++tick)

@@ -6,6 +6,7 @@
 #include "Proxy/CollisionScene.h"
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/FingerPath.h"
+#include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoParameters.h"
 
@@ -18,6 +19,13 @@ namespace proxima::vtk
 /// state to `onState`, in order; `onState` returns false to stop early.
 void playLockstepStates(const CollisionScene& scene, const ProxyParameters& parameters,
                         const ServoParameters& servo, const FingerPath& path, double rate,
+                        const std::function<bool(const HapticState&)>& onState);
+
+/// The same with the finger read from `device` (a recording device around the path's, say) over
+/// the ticks of `path`.
+void playLockstepStates(const CollisionScene& scene, const ProxyParameters& parameters,
+                        const ServoParameters& servo, const FingerPath& path, double rate,
+                        HapticDevice& device,
                         const std::function<bool(const HapticState&)>& onState);
 
 } // namespace proxima::vtk
