@@ -3,6 +3,8 @@
 // generous deadline, and what it checks is a sequence or a bound the design guarantees.
 #include "Runtime/ThreadedRuntime.h"
 
+#include "ThreadedTestSupport.h"
+
 #include "Geometry/ProceduralMeshes.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/PathGenerators.h"
@@ -27,16 +29,8 @@ namespace proxima
 namespace
 {
 using namespace std::chrono_literals;
-
-std::shared_ptr<const CollisionScene> makeScene(TriangleSoup soup)
-{
-  auto scene = std::make_shared<CollisionScene>();
-  TriangleMesh mesh;
-  MeshError error;
-  EXPECT_TRUE(mesh.build(std::move(soup), error)) << error.message;
-  scene->addObject(std::move(mesh));
-  return scene;
-}
+using testing_support::makeSharedScene;
+using testing_support::waitFor;
 
 ProxyParameters proxyParameters()
 {
@@ -51,21 +45,6 @@ ServoParameters servoParameters()
   servo.stiffness = 800.0;
   servo.maxForce = 8.0;
   return servo;
-}
-
-/// Waits up to `limit` for `condition`, polling.
-bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds limit)
-{
-  const auto end = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < end)
-  {
-    if (condition())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(1ms);
-  }
-  return condition();
 }
 
 bool sameBits(const Vec3& a, const Vec3& b)
@@ -96,7 +75,7 @@ FingerPath pressAndStroke(double rate)
 TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
 {
   constexpr double kRate = 2000.0;
-  const auto scene = makeScene(makeIcosphere(4, 0.05));
+  const auto scene = makeSharedScene(makeIcosphere(4, 0.05));
   const FingerPath path = pressAndStroke(kRate);
   const Vec3 start = path.positions.front();
   const std::uint64_t ticks = ticksCovering(path.startTime(), path.endTime(), kRate);
@@ -187,7 +166,7 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
 
 TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
 {
-  const auto scene = makeScene(makeGrid(0.2, 4, 0.0));
+  const auto scene = makeSharedScene(makeGrid(0.2, 4, 0.0));
   // A finger held 3 mm under a floor: a steady 800 N/m * 3 mm = 2.4 N, after coming down.
   FingerPath path;
   path.append(0.0, {0.0, 0.0, 0.01});
@@ -233,7 +212,7 @@ TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
 
 TEST(ThreadedRuntime, LostDeviceFadesTheForceAndIsReported)
 {
-  const auto scene = makeScene(makeGrid(0.2, 4, 0.0));
+  const auto scene = makeSharedScene(makeGrid(0.2, 4, 0.0));
   class UnpluggedLater final : public HapticDevice
   {
   public:
@@ -286,7 +265,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
     model = makeIcosphere(8, 0.05);
   }
 
-  const auto small = makeScene(makeIcosphere(3, 0.05));
+  const auto small = makeSharedScene(makeIcosphere(3, 0.05));
   FingerPath path; // far outside both models
   path.append(0.0, {0.0, 0.0, 1000.0});
   path.append(1000.0, {0.0, 0.0, 1000.0});
@@ -312,7 +291,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
     }
   });
   const LoopStatistics before = runtime.proxyStatistics();
-  std::shared_ptr<const CollisionScene> big = makeScene(std::move(model));
+  std::shared_ptr<const CollisionScene> big = makeSharedScene(std::move(model));
   const std::uint64_t version = runtime.publishScene(big, proxyParameters(), {0.0, 0.0, 1000.0});
   EXPECT_EQ(version, 2u);
   ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 2; }, 10s));

@@ -4,6 +4,8 @@
 // Real threads on the real clock: nothing asserts on speed, only on states waited for.
 #include "Runtime/ThreadedRuntime.h"
 
+#include "ThreadedTestSupport.h"
+
 #include "Geometry/ProceduralMeshes.h"
 #include "Geometry/WindingNumber.h"
 #include "Runtime/SimulatedDevice.h"
@@ -20,16 +22,8 @@ namespace proxima
 namespace
 {
 using namespace std::chrono_literals;
-
-std::shared_ptr<const CollisionScene> makeScene(TriangleSoup soup)
-{
-  auto scene = std::make_shared<CollisionScene>();
-  TriangleMesh mesh;
-  MeshError error;
-  EXPECT_TRUE(mesh.build(std::move(soup), error)) << error.message;
-  scene->addObject(std::move(mesh));
-  return scene;
-}
+using testing_support::makeSharedScene;
+using testing_support::waitFor;
 
 ProxyParameters proxyParameters()
 {
@@ -47,20 +41,6 @@ RuntimeSettings quietSettings()
   return settings;
 }
 
-bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds limit)
-{
-  const auto end = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < end)
-  {
-    if (condition())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(1ms);
-  }
-  return condition();
-}
-
 FingerPath restingAt(const Vec3& position)
 {
   FingerPath path;
@@ -76,7 +56,7 @@ bool inside(const CollisionScene& scene, const Vec3& point)
 
 TEST(ThreadedStartInside, FirstSceneWithTheFingerInsideStartsOutside)
 {
-  const auto sphere = makeScene(makeIcosphere(4, 0.05));
+  const auto sphere = makeSharedScene(makeIcosphere(4, 0.05));
   SimulatedDevice device(restingAt({}));
   RuntimeSettings settings = quietSettings();
   settings.recordTicks = 64;
@@ -107,8 +87,8 @@ TEST(ThreadedStartInside, FirstSceneWithTheFingerInsideStartsOutside)
 TEST(ThreadedStartInside, ASwapThatPutsTheProxyInsideMovesItOut)
 {
   // First a small box far away: the finger at the origin is free, the proxy with it.
-  const auto farBox = makeScene(makeBox({0.01, 0.01, 0.01}, {1.0, 0.0, 0.0}));
-  const auto sphere = makeScene(makeIcosphere(4, 0.05));
+  const auto farBox = makeSharedScene(makeBox({0.01, 0.01, 0.01}, {1.0, 0.0, 0.0}));
+  const auto sphere = makeSharedScene(makeIcosphere(4, 0.05));
   SimulatedDevice device(restingAt({0.0, 0.0, 0.01}));
   ThreadedRuntime runtime(device, ServoParameters{}, quietSettings());
   ProxyStartPlacement first;
