@@ -17,6 +17,11 @@
 // iteration), and per mesh that cost against r / median edge length, to show whether an
 // iteration grows with the number of triangles within reach, ~(r / edge)^2.
 //
+// The platform's own floor comes first, in the same run: a busy loop that only reads the clock,
+// for kFloorSeconds. Every gap between two reads longer than kStallNanoseconds is a stall the
+// thread did not cause (the scheduler, the hypervisor, an interrupt): a tick that meets one is
+// that much slower whatever the solver does, so the report puts the stalls beside the ticks.
+//
 // Usage: BenchProbeTail OUT.json [--quick] [--seeds N]
 //   --quick: one seed, radii 0.5 and 2 mm, for a short check; default 3 seeds, all radii.
 #include "IO/Mesh/MeshReader.h"
@@ -358,6 +363,47 @@ double medianEdgeLength(const TriangleMesh& mesh)
   return *middle;
 }
 
+constexpr double kFloorSeconds = 2.0;
+constexpr double kStallNanoseconds = 10e3;
+
+// The busy loop of the header: stalls per second longer than 10, 30 and 100 us, the longest,
+// and the share of the time spent in stalls.
+nlohmann::json measurePlatformStalls()
+{
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> stalls;
+  const auto start = Clock::now();
+  const auto end = start + std::chrono::duration<double>(kFloorSeconds);
+  auto last = start;
+  for (auto now = Clock::now(); now < end; now = Clock::now())
+  {
+    const double gap = std::chrono::duration<double, std::nano>(now - last).count();
+    if (gap > kStallNanoseconds)
+    {
+      stalls.push_back(gap);
+    }
+    last = now;
+  }
+  const double seconds = std::chrono::duration<double>(last - start).count();
+  auto perSecond = [&](double threshold) {
+    return static_cast<double>(std::count_if(stalls.begin(), stalls.end(),
+                                             [&](double gap) { return gap > threshold; })) /
+           seconds;
+  };
+  double stalled = 0.0;
+  for (double gap : stalls)
+  {
+    stalled += gap;
+  }
+  return {
+    {"seconds", seconds},
+    {"stalls_over_10us_per_s", perSecond(10e3)},
+    {"stalls_over_30us_per_s", perSecond(30e3)},
+    {"stalls_over_100us_per_s", perSecond(100e3)},
+    {"longest_stall_ns", stalls.empty() ? 0.0 : *std::max_element(stalls.begin(), stalls.end())},
+    {"stalled_fraction", stalled / (seconds * 1e9)}};
+}
+
 double millisecondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -416,6 +462,14 @@ int main(int argc, char** argv)
   const std::vector<double> radii =
     quick ? std::vector<double>{0.0005, 0.002} : std::vector<double>{0.0005, 0.001, 0.002, 0.003};
 
+  const nlohmann::json platformFloor = measurePlatformStalls();
+  std::fprintf(stderr,
+               "platform floor: %.0f stalls/s over 30 us, %.1f over 100 us, longest %.0f us, "
+               "%.2f%% of the time stalled\n",
+               platformFloor["stalls_over_30us_per_s"].get<double>(),
+               platformFloor["stalls_over_100us_per_s"].get<double>(),
+               platformFloor["longest_stall_ns"].get<double>() / 1e3,
+               100.0 * platformFloor["stalled_fraction"].get<double>());
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json cases = nlohmann::json::array();
   nlohmann::json pooled = nlohmann::json::array();
@@ -531,6 +585,7 @@ int main(int argc, char** argv)
                                  {"rate_hz", kRate},
                                  {"budget_s", TickWorkBudget::servoSafe().seconds},
                                  {"run_s", millisecondsSince(start) / 1e3},
+                                 {"platform_floor", platformFloor},
                                  {"cases", cases},
                                  {"pooled", pooled},
                                  {"meshes", meshes},

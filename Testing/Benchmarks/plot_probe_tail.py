@@ -108,6 +108,21 @@ def plot_iteration_cost(report, path, title):
     figure.savefig(path, dpi=110)
 
 
+def platform_floor(report):
+    """The busy loop BenchProbeTail runs first: the stalls no solver can avoid on this machine."""
+    floor = report.get("platform_floor")
+    if floor is None:
+        return "Platform floor: not measured by this BenchProbeTail."
+    return (
+        f"Platform floor, measured first in the same run: a busy loop that only reads the clock "
+        f"for {floor['seconds']:.0f} s was stalled {floor['stalls_over_30us_per_s']:.0f} times a "
+        f"second for over 30 us and {floor['stalls_over_100us_per_s']:.1f} times for over "
+        f"100 us, the longest {microseconds(floor['longest_stall_ns']):.0f} us, "
+        f"{100 * floor['stalled_fraction']:.2f} % of the time in all. A tick that meets such a "
+        "stall is that much slower whatever the solver does: the maxima below, and the p99.9 of "
+        "ticks that take tens of microseconds, include them.")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("bench")
@@ -183,6 +198,8 @@ def main():
         "*recovery* is the length in ticks of a run of limited ticks, up to the first tick that "
         "is not limited. The budget is checked between iterations, so a tick can pass it by one "
         "iteration's time.",
+        "",
+        platform_floor(report),
         "",
         "## Probe paths (`proxima path probe`), per mesh and radius",
         "",
