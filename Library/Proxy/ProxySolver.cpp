@@ -119,6 +119,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_numPlanes = 0;
   m_coherenceMargin =
     parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin : parameters.radius;
+  m_cacheMargin = m_coherenceMargin;
   m_cache.invalidate();
   m_planesValid = false;
   m_reachRadius = 0.0;
@@ -173,13 +174,36 @@ void ProxySolver::rebuildCache(QueryStats& stats)
   // left every query of the tick to the trees; a smaller margin still holds the contact's
   // neighbourhood, at the price of re-centring sooner.
   const double contactReach = m_parameters.radius + contactEpsilon();
-  for (double margin = m_coherenceMargin; margin >= m_coherenceMargin / 16.0; margin /= 4.0)
+  for (double margin = m_cacheMargin; margin >= m_coherenceMargin / 16.0; margin /= 4.0)
   {
     m_cache.rebuild(*m_scene, m_proxy, contactReach + margin, m_scratch, stats);
     if (m_cache.valid())
     {
+      adaptCacheMargin(margin, m_cache.size());
       return;
     }
+  }
+}
+
+void ProxySolver::adaptCacheMargin(double margin, int numCached)
+{
+  // Every sweep and gather scans the whole cache, and every re-centring rebuilds it: a crowded
+  // ball makes each iteration slow, a sparse one re-centres often. The margin follows the number
+  // of triangles the last ball held toward kCacheTriangles, between a sixteenth of the
+  // coherence margin and all of it. On the shared bunny probe path (2 mm proxy, 0.5 mm facets)
+  // the full margin held 300-450 triangles, and the solver's instructions fell by a fifth at
+  // half of it, while on the screw path (0.5 mm proxy) a smaller margin cost more than it saved.
+  if (numCached > 2 * kCacheTriangles)
+  {
+    m_cacheMargin = std::max(margin / 2.0, m_coherenceMargin / 16.0);
+  }
+  else if (numCached < kCacheTriangles / 2)
+  {
+    m_cacheMargin = std::min(margin * 2.0, m_coherenceMargin);
+  }
+  else
+  {
+    m_cacheMargin = margin;
   }
 }
 
@@ -292,6 +316,7 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
       stored += kept;
     }
   }
+  sortNearby(stored);
   for (std::uint32_t i = 0; i < stored; ++i)
   {
     const NearbyTriangle& near = m_nearby[i];
@@ -341,6 +366,44 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     complete = dressPlane(m_planes[k], !sharesTouchedFeature(m_planes[k], stored)) && complete;
   }
   return complete;
+}
+
+void ProxySolver::sortNearby(std::uint32_t count)
+{
+  // The planes are deduplicated and solved in the order the triangles come, and the candidate
+  // cache and the trees list the same triangles in different orders: near-duplicate normals
+  // (within 1.5e-7 rad) then kept a different representative, and the goal solve rounded
+  // differently. On a deep crawl that was enough for a tick to end at another local minimum
+  // (0.36 mm away on the shared liver probe path) depending on where the cache was centred,
+  // and a tick replayed from a fresh solver did not end where the running one did. Sorted by
+  // object and triangle, the planes at a point are the same whichever structure found them.
+  struct Key
+  {
+    std::uint64_t objectAndTriangle;
+    std::uint32_t index;
+  };
+  Key keys[kMaxNearbyTriangles];
+  bool sorted = true;
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    keys[i] = Key{(static_cast<std::uint64_t>(m_nearbyObject[i]) << 32) | m_nearby[i].triangle, i};
+    sorted = sorted && (i == 0 || keys[i - 1].objectAndTriangle < keys[i].objectAndTriangle);
+  }
+  if (sorted)
+  {
+    return;
+  }
+  std::sort(keys, keys + count,
+            [](const Key& a, const Key& b) { return a.objectAndTriangle < b.objectAndTriangle; });
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    m_sortedNearby[i] = m_nearby[keys[i].index];
+  }
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    m_nearby[i] = m_sortedNearby[i];
+    m_nearbyObject[i] = static_cast<std::uint32_t>(keys[i].objectAndTriangle >> 32);
+  }
 }
 
 bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t numNearby) const

@@ -85,6 +85,8 @@ class ProxySolver
 {
 public:
   static constexpr int kMaxNearbyTriangles = 256;
+  /// The number of cached triangles the candidate cache's margin aims at (adaptCacheMargin).
+  static constexpr int kCacheTriangles = 96;
 
   ProxySolver() = default;
 
@@ -208,6 +210,11 @@ private:
   /// Rebuilds the candidate cache around the proxy, with a smaller margin if the ball is too
   /// crowded for it.
   void rebuildCache(QueryStats& stats);
+  /// Puts the first `count` triangles of m_nearby (and their objects) in the order of object,
+  /// then triangle.
+  void sortNearby(std::uint32_t count);
+  /// After a rebuild with `margin` that cached `numCached` triangles: the next rebuild's margin.
+  void adaptCacheMargin(double margin, int numCached);
   /// Whether temporal coherence is on and the candidate cache is invalid or the proxy beyond
   /// half its margin of its centre.
   bool cacheNeedsRebuild() const;
@@ -219,6 +226,8 @@ private:
   SphereTreeScratch m_scratch;
   CandidateCache m_cache;
   double m_coherenceMargin = 0.0;
+  /// The margin of the next cache rebuild (adaptCacheMargin), at most m_coherenceMargin.
+  double m_cacheMargin = 0.0;
   /// A shaded target that moves less than this between update stages is settled.
   double m_shadingTolerance = 1e-9;
   double m_lastTravel = 0.0;
@@ -226,6 +235,8 @@ private:
   double m_reachRadius = 0.0;
   NearbyTriangle m_nearby[kMaxNearbyTriangles];
   std::uint32_t m_nearbyObject[kMaxNearbyTriangles];
+  /// Scratch of sortNearby.
+  NearbyTriangle m_sortedNearby[kMaxNearbyTriangles];
   ContactPlane m_planes[kMaxConstraintPlanes];
   Vec3 m_normals[kMaxConstraintPlanes];
   /// The first pass's planes: shaded (and bumped, one per bump map) where the surface is, true

@@ -7,6 +7,7 @@
 
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "Proxy/ProxySolver.h"
 #include "Runtime/PathGenerators.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace proxima
 {
@@ -153,6 +156,71 @@ TEST_P(SharedProbePaths, InvariantsHoldOnEveryTick)
   }
   const scripted::ScriptedOutcome outcome = scripted::runScriptedCase(c);
   scripted::expectInvariants(c.name, outcome);
+}
+
+// The candidate cache is only a faster way to ask the trees (Proxy/CandidateCache.h): with it,
+// without it, and with a cache re-centred eight times as often, every tick of the whole path
+// ends at the same proxy, bit for bit, in as many iterations. The trees alone are the oracle;
+// a tick that depended on where the cache was centred would also fail the invariants' replay
+// check, but only on the ticks that check visits. (PROXIMA_STRESS_SCALE shortens the path in
+// the sanitizer builds.)
+TEST_P(SharedProbePaths, CandidateCacheChangesNoTick)
+{
+  const SharedProbePath& probe = GetParam();
+  const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.mesh;
+  const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/../paths/" + probe.path;
+  if (!std::filesystem::exists(mesh) || !std::filesystem::exists(file))
+  {
+    GTEST_SKIP() << "shared mesh or path not found: " << mesh << ", " << file
+                 << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  scene->addObject(loadTriangleMesh(mesh, probe.scale));
+  const FingerPath path = readFingerPathFile(file);
+  const auto ticks =
+    static_cast<std::size_t>(static_cast<double>(path.size()) * environmentScale());
+  struct Tick
+  {
+    Vec3 proxy;
+    int iterations;
+  };
+  auto play = [&](bool coherence, double margin) {
+    ProxyParameters parameters;
+    parameters.radius = probe.radius;
+    parameters.temporalCoherence = coherence;
+    parameters.coherenceMargin = margin;
+    auto solver = std::make_unique<ProxySolver>();
+    solver->setScene(scene.get(), parameters);
+    solver->resetProxy(path.positions.front());
+    std::vector<Tick> out;
+    for (std::size_t i = 0; i < ticks; ++i)
+    {
+      const ProxyTickResult result = solver->update(path.positions[i]);
+      out.push_back(Tick{result.proxy, result.iterations});
+    }
+    return out;
+  };
+  const std::vector<Tick> trees = play(false, 0.0);
+  const std::vector<std::pair<const char*, std::vector<Tick>>> cached = {
+    {"the default cache", play(true, 0.0)},
+    {"a cache of radius / 8", play(true, probe.radius / 8.0)}};
+  for (const auto& [name, run] : cached)
+  {
+    int differing = 0;
+    for (std::size_t i = 0; i < ticks && differing < 5; ++i)
+    {
+      if (!(run[i].proxy == trees[i].proxy) || run[i].iterations != trees[i].iterations)
+      {
+        ++differing;
+        ADD_FAILURE() << probe.path << ", " << name << ": tick " << i << " ends at "
+                      << run[i].proxy.x << ", " << run[i].proxy.y << ", " << run[i].proxy.z
+                      << " in " << run[i].iterations
+                      << " iterations; the trees alone: " << trees[i].proxy.x << ", "
+                      << trees[i].proxy.y << ", " << trees[i].proxy.z << " in "
+                      << trees[i].iterations;
+      }
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
