@@ -90,7 +90,10 @@ public:
 
   ProxySolver() = default;
 
-  /// Uses `scene` (not owned; must outlive its use here) with `parameters`, and places the proxy.
+  /// Uses `scene` (not owned; must outlive its use here) with `parameters`. The proxy stays where
+  /// it was (at the origin for a new solver): place it with resetProxy, or with placeProxyStart
+  /// (ProxyStart.h), which moves a start inside a closed object out of it; HapticSession
+  /// (Runtime/HapticSession.h) does that at the first finger it is given.
   void setScene(const CollisionScene* scene, const ProxyParameters& parameters);
   /// Places the proxy without moving through the scene (start of a run, or a teleport).
   void resetProxy(const Vec3& position)
