@@ -2,20 +2,60 @@
 
 set(PROXIMA_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion)
 
-# proxima_add_library(NAME SOURCES ... DEPENDS ...): a layer under Library/, target Proxima::NAME.
+include(GNUInstallDirs)
+
+# The component of find_package(Proxima COMPONENTS ...) a layer belongs to, from its folder
+# (Documentation/Library.md): the real-time kernel (Core, Geometry, Proxy, Runtime), IO, the VTK
+# pipeline and the devices.
+function(proxima_component_of folder result)
+  if(folder MATCHES "^IO(/|$)")
+    set(${result} IO PARENT_SCOPE)
+  elseif(folder MATCHES "^(VTK|Devices)(/|$)")
+    set(${result} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  else()
+    set(${result} Kernel PARENT_SCOPE)
+  endif()
+endfunction()
+
+# proxima_install_library(TARGET COMPONENT HEADER_FOLDER [HEADERS...]): installs a library into
+# the component's export set (ProximaCOMPONENTTargets.cmake, targets Proxima::NAME) and its public
+# headers under include/proxima/HEADER_FOLDER, where `#include "HEADER_FOLDER/Name.h"` finds them
+# as it does in the source tree.
+function(proxima_install_library target component folder)
+  get_target_property(exportName ${target} EXPORT_NAME)
+  install(TARGETS ${target} EXPORT Proxima${component}Targets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${component}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima)
+  if(ARGN)
+    install(FILES ${ARGN} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima/${folder}
+            COMPONENT ${component})
+  endif()
+  set_property(GLOBAL APPEND PROPERTY PROXIMA_INSTALLED_COMPONENTS ${component})
+endfunction()
+
+# proxima_add_library(NAME SOURCES ... DEPENDS ... PRIVATE_DEPENDS ...): a layer under Library/,
+# target Proxima::NAME, installed with its public headers (those of its folder; Private/ and
+# Testing/ stay out) into the component its folder belongs to.
 function(proxima_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
+  set(includes "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/Library>"
+               "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/proxima>")
   if(ARG_SOURCES)
     add_library(Proxima${name} STATIC ${ARG_SOURCES})
-    target_include_directories(Proxima${name} PUBLIC "${PROJECT_SOURCE_DIR}/Library")
+    target_include_directories(Proxima${name} PUBLIC ${includes})
     target_link_libraries(Proxima${name} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
     target_compile_options(Proxima${name} PRIVATE ${PROXIMA_WARNINGS})
   else()
     add_library(Proxima${name} INTERFACE)
-    target_include_directories(Proxima${name} INTERFACE "${PROJECT_SOURCE_DIR}/Library")
+    target_include_directories(Proxima${name} INTERFACE ${includes})
     target_link_libraries(Proxima${name} INTERFACE ${ARG_DEPENDS})
   endif()
+  set_target_properties(Proxima${name} PROPERTIES EXPORT_NAME ${name})
   add_library(Proxima::${name} ALIAS Proxima${name})
+  file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}/Library" "${CMAKE_CURRENT_SOURCE_DIR}")
+  proxima_component_of("${folder}" component)
+  file(GLOB headers CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.h")
+  proxima_install_library(Proxima${name} ${component} "${folder}" ${headers})
 endfunction()
 
 # proxima_add_test(NAME SOURCES ... DEPENDS ... [LABELS label] [DEFINITIONS ...]

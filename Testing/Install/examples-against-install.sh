@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Install.ExamplesAgainstInstall (issue 19): `cmake --install` this build into a prefix, move the
+# prefix elsewhere (an installation must not remember where it was made), configure Examples/
+# against it with find_package(Proxima), build them, and run them:
+#   - probe_mesh on an STL icosphere (read through the VTK readers' module) and the bundled
+#     press-and-stroke path, against the installed `proxima run` on the same files: the proxy and
+#     force columns must be the same numbers, and the module must be the installed one;
+#   - kernel_only (the kernel alone), also built with nothing but pkg-config's flags;
+#   - haptic_pipeline (the VTK pipeline with the threaded runtime), which checks its own answer;
+#   - the examples' own ctest suite (the exported scripted-path harness and oracle).
+# Usage: examples-against-install.sh BUILD_DIR SOURCE_DIR [COMPILER_AND_LINKER_FLAGS]
+set -euo pipefail
+build="$1"
+source="$2"
+flags="${3:-}"
+work="$build/install-check"
+rm -rf "$work"
+mkdir -p "$work"
+
+cmake --install "$build" --prefix "$work/made-here" > "$work/install.log"
+mv "$work/made-here" "$work/prefix"
+prefix="$work/prefix"
+
+cmake -G Ninja -S "$source/Examples" -B "$work/examples" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" \
+  > "$work/configure.log"
+cmake --build "$work/examples" --parallel 2 > "$work/build.log"
+
+mesh="$work/icosphere.stl"
+path="$source/Data/Paths/icosphere-4-press-stroke.csv"
+"$prefix/bin/proxima" generate icosphere --subdivisions 4 --radius 0.05 --out "$mesh" > /dev/null
+"$prefix/bin/proxima" run --mesh "$mesh" --path "$path" --radius 0.001 \
+  --out "$work/proxima-run.csv" > /dev/null
+LD_DEBUG=files "$work/examples/probe_mesh" "$mesh" 1 0.001 "$path" \
+  > "$work/probe_mesh.csv" 2> "$work/probe_mesh.log"
+
+loaded="$(grep -o '/[^[:space:]]*proxima-vtk-mesh-readers\.so' "$work/probe_mesh.log" | head -n 1 || true)"
+case "$loaded" in
+  "$prefix"/lib/proxima/*) ;;
+  *)
+    echo "probe_mesh loaded the mesh readers' module from '${loaded:-nowhere}', not from $prefix" >&2
+    exit 1
+    ;;
+esac
+
+/usr/bin/python3 - "$work/proxima-run.csv" "$work/probe_mesh.csv" <<'PYTHON'
+import csv
+import sys
+
+
+def rows(name, columns):
+    with open(name) as f:
+        reader = csv.DictReader(line for line in f if not line.startswith("#"))
+        return [[float(row[c]) for c in columns] for row in reader]
+
+
+columns = ["proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z"]
+trace = rows(sys.argv[1], columns)
+example = rows(sys.argv[2], columns)
+if len(trace) != len(example):
+    sys.exit(f"proxima run wrote {len(trace)} ticks, probe_mesh {len(example)}")
+for tick, (a, b) in enumerate(zip(trace, example)):
+    if a != b:
+        sys.exit(f"tick {tick}: proxima run {a}, probe_mesh {b}")
+pressed = sum(1 for row in example if row[3] ** 2 + row[4] ** 2 + row[5] ** 2 > 0.25)
+if pressed < 100:
+    sys.exit(f"only {pressed} ticks pressed the sphere: the comparison says little")
+print(f"probe_mesh: {len(example)} ticks, the same as proxima run's trace ({pressed} pressing)")
+PYTHON
+
+"$work/examples/kernel_only"
+# The kernel without CMake: pkg-config's flags alone.
+PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --exists proxima-kernel
+# shellcheck disable=SC2046 # the flags are words
+g++ $flags -O2 "$source/Examples/kernel_only.cpp" -o "$work/kernel_only_pkg_config" \
+  $(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs proxima-kernel)
+"$work/kernel_only_pkg_config"
+"$work/examples/haptic_pipeline"
+ctest --test-dir "$work/examples" --output-on-failure
+echo "examples built and run against the installation in $prefix"
