@@ -114,29 +114,40 @@ std::ostream& operator<<(std::ostream& out, const SharedProbePath& c)
 }
 
 class SharedProbePaths : public testing::TestWithParam<SharedProbePath>
-{};
+{
+protected:
+  // The shared mesh at the path's scale, and the whole path; skipped, saying so, when either
+  // file is absent.
+  void SetUp() override
+  {
+    const SharedProbePath& probe = GetParam();
+    const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.mesh;
+    const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/../paths/" + probe.path;
+    if (!std::filesystem::exists(mesh) || !std::filesystem::exists(file))
+    {
+      GTEST_SKIP() << "shared mesh or path not found: " << mesh << ", " << file
+                   << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
+    }
+    scene = std::make_unique<CollisionScene>();
+    scene->addObject(loadTriangleMesh(mesh, probe.scale));
+    whole = readFingerPathFile(file);
+  }
+
+  std::unique_ptr<CollisionScene> scene;
+  FingerPath whole;
+};
 
 // The person-like paths of ../shared/data/paths at their scale and radius: the ones whose worst
 // ticks took 170-216 iterations before the crease stretch. Every tick under the oracle.
 TEST_P(SharedProbePaths, InvariantsHoldOnEveryTick)
 {
   const SharedProbePath& probe = GetParam();
-  const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.mesh;
-  const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/../paths/" + probe.path;
-  if (!std::filesystem::exists(mesh) || !std::filesystem::exists(file))
-  {
-    GTEST_SKIP() << "shared mesh or path not found: " << mesh << ", " << file
-                 << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
-  }
-  auto scene = std::make_unique<CollisionScene>();
-  scene->addObject(loadTriangleMesh(mesh, probe.scale));
   const oracle::MeshOracle oracle(*scene);
   scripted::ScriptedCase c;
   c.name = probe.path;
   c.scene = scene.get();
   c.oracle = &oracle;
   c.proxy.radius = probe.radius;
-  const FingerPath whole = readFingerPathFile(file);
   const char* full = std::getenv("PROXIMA_PROBE_FULL");
   if (full != nullptr && std::string(full) == "1")
   {
@@ -167,16 +178,7 @@ TEST_P(SharedProbePaths, InvariantsHoldOnEveryTick)
 TEST_P(SharedProbePaths, CandidateCacheChangesNoTick)
 {
   const SharedProbePath& probe = GetParam();
-  const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/" + probe.mesh;
-  const std::string file = std::string(PROXIMA_SHARED_MESHES) + "/../paths/" + probe.path;
-  if (!std::filesystem::exists(mesh) || !std::filesystem::exists(file))
-  {
-    GTEST_SKIP() << "shared mesh or path not found: " << mesh << ", " << file
-                 << " (set the CMake cache variable PROXIMA_SHARED_DATA)";
-  }
-  auto scene = std::make_unique<CollisionScene>();
-  scene->addObject(loadTriangleMesh(mesh, probe.scale));
-  const FingerPath path = readFingerPathFile(file);
+  const FingerPath& path = whole;
   const auto ticks =
     static_cast<std::size_t>(static_cast<double>(path.size()) * environmentScale());
   struct Tick
