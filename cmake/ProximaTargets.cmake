@@ -33,6 +33,16 @@ function(proxima_install_library target component folder)
   set_property(GLOBAL APPEND PROPERTY PROXIMA_INSTALLED_COMPONENTS ${component})
 endfunction()
 
+# proxima_add_umbrella(NAME COMPONENT TARGETS...): Proxima::NAME, an interface target that links
+# every library of a component, installed with it (Proxima::Kernel, Proxima::IO).
+function(proxima_add_umbrella name component)
+  add_library(Proxima${name} INTERFACE)
+  target_link_libraries(Proxima${name} INTERFACE ${ARGN})
+  set_target_properties(Proxima${name} PROPERTIES EXPORT_NAME ${name})
+  add_library(Proxima::${name} ALIAS Proxima${name})
+  proxima_install_library(Proxima${name} ${component} "")
+endfunction()
+
 # proxima_add_library(NAME SOURCES ... DEPENDS ... PRIVATE_DEPENDS ...): a layer under Library/,
 # target Proxima::NAME, installed with its public headers (those of its folder; Private/ and
 # Testing/ stay out) into the component its folder belongs to.
