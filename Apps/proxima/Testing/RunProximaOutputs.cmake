@@ -45,14 +45,8 @@ execute_process(COMMAND ${LAUNCHER} ${command} WORKING_DIRECTORY "${FOLDER}"
 if(NOT status STREQUAL "${EXPECT_STATUS}")
   message(FATAL_ERROR "exit status ${status}, expected ${EXPECT_STATUS}\nstderr:\n${err}")
 endif()
-if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
-  message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}':\n${err}")
-endif()
-string(REGEX MATCHALL "\n" newlines "${err}")
-list(LENGTH newlines numLines)
-if(EXPECT_STATUS STREQUAL "2" AND NOT numLines EQUAL 1)
-  message(FATAL_ERROR "expected one line on stderr, got ${numLines}:\n${err}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/CheckStderr.cmake")
+proxima_check_stderr("${err}")
 
 # Hidden files too: a temporary left behind is named .<name>.XXXXXX.
 file(GLOB left RELATIVE "${FOLDER}" LIST_DIRECTORIES true "${FOLDER}/*" "${FOLDER}/.*")
