@@ -22,7 +22,6 @@ endfunction()
 # headers under include/proxima/HEADER_FOLDER, where `#include "HEADER_FOLDER/Name.h"` finds them
 # as it does in the source tree.
 function(proxima_install_library target component folder)
-  get_target_property(exportName ${target} EXPORT_NAME)
   install(TARGETS ${target} EXPORT Proxima${component}Targets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${component}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima)
