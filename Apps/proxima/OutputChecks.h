@@ -4,13 +4,14 @@
 
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/ScriptedRun/ScriptedRunSettings.h"
 
 #include <vector>
 
 namespace proxima::cli
 {
 
-struct SceneOptions;
+using SceneOptions = ScriptedRunSettings;
 struct DeviceChoiceOptions;
 
 /// The mesh files a scene file named, as "the mesh of the scene's objects[i]".

@@ -14,12 +14,11 @@
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/PathAndTrace/TraceWriter.h"
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
 #include "Proxy/ProxySolver.h"
 #include "Proxy/ProxyStart.h"
-#include "Runtime/BudgetResidual.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/RunSummary.h"
 #include "Runtime/ServoRate.h"
 #include "Runtime/ThreadedRuntime.h"
 
@@ -90,21 +89,6 @@ private:
   bool m_enabled;
   int m_lastPercent = -1;
 };
-
-// The surface keys of the summary, for a one-mesh run and for each object of a scene alike.
-void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
-                    const SurfaceMaterial& material)
-{
-  json["shading"] = object.shaded;
-  json["point_normals"] = normalsSourceName(object.normals);
-  if (object.normals == NormalsSource::Computed)
-  {
-    json["feature_angle_deg"] = object.featureAngleDegrees;
-  }
-  json["static_friction"] = material.staticFriction;
-  json["dynamic_friction"] = material.dynamicFriction;
-  json["viscosity_N_s_per_m"] = material.viscosity;
-}
 
 nlohmann::ordered_json loopJson(const LoopStatistics& statistics,
                                 const std::string& scheduling = {})
@@ -228,14 +212,19 @@ int run(const RunOptions& options)
   const auto readStart = std::chrono::steady_clock::now();
   LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
-  const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
+  ScriptedRunReportContext context;
+  context.device = options.device.device;
+  context.trace = options.out;
+  context.realtime = options.realtime;
+  context.readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
   checkRadiusAgainstScene(shared, loaded);
   checkPathStart(shared, loaded, fingerPath);
   // Before a trace row is written: a path row at t = 1e9 s would otherwise fill the disk.
-  checkTickCount(
-    static_cast<double>(ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate)),
-    shared.rate, options.maxTicks,
-    shared.path + " (" + shortNumber(fingerPath.endTime() - fingerPath.startTime()) + " s)");
+  const std::uint64_t numTicks =
+    ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate);
+  checkTickCount(static_cast<double>(numTicks), shared.rate, options.maxTicks,
+                 shared.path + " (" + shortNumber(fingerPath.endTime() - fingerPath.startTime()) +
+                   " s)");
   // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
   // outputs into one file.
   refuseOverlappingFiles({{options.out, "--out"},
@@ -246,209 +235,45 @@ int run(const RunOptions& options)
   const std::shared_ptr<const CollisionScene> sceneHolder(std::move(loaded.scene));
   const CollisionScene& scene = *sceneHolder;
 
-  // Lockstep runs default to no budget, so that their traces stay reproducible bit for bit; the
-  // threaded runtime defaults to the budget that keeps a 4 kHz servo fed.
-  const TickWorkBudget budget =
-    tickBudget(shared, options.realtime ? TickWorkBudget::servoSafe() : TickWorkBudget{});
-  ProxyParameters parameters = proxyParameters(shared);
-  budget.applyTo(parameters);
-  ProxySolver solver;
-  solver.setScene(&scene, parameters);
-  // A finger that starts inside a closed object would trap the proxy there: it starts outside.
-  ProxyStartPlacement start;
-  if (!options.realtime)
-  {
-    start = placeProxyStart(scene, parameters, fingerPath.positions.front());
-    resetProxyTo(solver, start);
-  }
-
-  LockstepSettings settings;
-  settings.rate = shared.rate;
-  settings.startTime = fingerPath.startTime();
-  settings.numTicks = ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate);
-  const ServoParameters servo = servoParameters(shared);
-
-  RunDevice device(options.device, fingerPath, settings.numTicks);
+  RunDevice device(options.device, fingerPath, numTicks);
   TraceWriter trace(options.out);
-  RunSummary summary;
-  const auto runStart = std::chrono::steady_clock::now();
-  double replayMilliseconds = 0.0;
-  nlohmann::ordered_json realtimeReport;
+  const auto writeTick = [&trace](const HapticState& record) { trace.write(record); };
+  ScriptedRunOutcome outcome;
+  std::string realtimeJson;
   if (options.realtime)
   {
+    // The threaded runtime defaults to the budget that keeps a 4 kHz servo fed.
+    outcome.budget = tickBudget(shared, TickWorkBudget::servoSafe());
+    // The skin the runtime's solver takes: the settings', or the scene's when they give 0.
+    auto solver = std::make_unique<ProxySolver>();
+    solver->setScene(&scene, proxyParameters(shared));
+    outcome.skin = solver->skin();
+    const auto runStart = std::chrono::steady_clock::now();
+    nlohmann::ordered_json realtimeReport;
     runRealtime(
-      options, sceneHolder, fingerPath, settings.numTicks, device.device(),
+      options, sceneHolder, fingerPath, numTicks, device.device(),
       [&](const HapticState& record) {
-        trace.write(record);
-        summary.add(record);
+        writeTick(record);
+        outcome.summary.add(record);
       },
-      realtimeReport, start);
+      realtimeReport, outcome.start);
+    outcome.runMilliseconds = millisecondsSince(runStart);
+    realtimeJson = realtimeReport.dump();
   }
   else
   {
-    Progress progress(settings.numTicks);
-    // The residual of a budget-limited tick: the same tick replayed without the budget, after
-    // the tick's timed update, so that solve_ns stays the budgeted tick's own time.
-    BudgetResidualProbe residualProbe(scene, parameters);
-    Vec3 tickStart = solver.proxy();
-    runLockstep(settings, solver, device.device(), servo, [&](const HapticState& record) {
-      trace.write(record);
-      summary.add(record);
-      if (record.budgetLimited)
-      {
-        const auto replayStart = std::chrono::steady_clock::now();
-        summary.addBudgetResidual(residualProbe.residual(tickStart, record.finger, record.proxy));
-        replayMilliseconds += millisecondsSince(replayStart);
-      }
-      tickStart = record.proxy;
-      if ((record.tick & 1023u) == 0)
-      {
-        progress.update(record.tick);
-      }
-    });
-    progress.update(settings.numTicks);
+    Progress progress(numTicks);
+    outcome = playScriptedPath(shared, scene, fingerPath, device.device(), writeTick,
+                               [&progress](std::uint64_t done) { progress.update(done); });
     progress.finish();
   }
   // The trace is put in place last, once the recording and the summary are written: a failure
   // of either then leaves no trace behind.
   trace.finish();
   device.finish();
-  const double runMilliseconds = millisecondsSince(runStart) - replayMilliseconds;
 
-  std::uint64_t numTriangles = 0;
-  std::uint64_t numDegenerate = 0;
-  for (const LoadedObject& object : loaded.objects)
-  {
-    numTriangles += object.numTriangles;
-    numDegenerate += object.numDegenerateTriangles;
-  }
-  nlohmann::ordered_json json;
-  if (shared.scene.empty())
-  {
-    json["mesh"] = shared.mesh;
-  }
-  else
-  {
-    json["scene"] = shared.scene;
-  }
-  json["path"] = shared.path;
-  json["device"] = options.device.device;
-  json["trace"] = options.out;
-  json["triangles"] = numTriangles;
-  json["degenerate_triangles"] = numDegenerate;
-  json["radius_m"] = shared.radius;
-  json["skin_m"] = solver.skin();
-  json["stiffness_N_per_m"] = shared.stiffness;
-  json["rate_hz"] = shared.rate;
-  json["mode"] = options.realtime ? "realtime" : "lockstep";
-  if (shared.scene.empty())
-  {
-    // The keys of a one-mesh run, as before scene files.
-    const LoadedObject& object = loaded.objects.front();
-    const SurfaceMaterial& material = scene.objects.front().material;
-    addSurfaceKeys(json, object, material);
-    if (!shared.texture.empty())
-    {
-      nlohmann::ordered_json texture;
-      texture["image"] = shared.texture;
-      texture["role"] = shared.textureRole;
-      if (material.textures.front().role == TextureRole::Bump)
-      {
-        texture["amplitude_m"] = material.textures.front().amplitude;
-      }
-      texture["channel"] = shared.textureChannel;
-      json["texture"] = std::move(texture);
-    }
-  }
-  else
-  {
-    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < loaded.objects.size(); ++i)
-    {
-      const LoadedObject& object = loaded.objects[i];
-      const SurfaceMaterial& material = scene.objects[i].material;
-      nlohmann::ordered_json entry;
-      entry["mesh"] = object.mesh;
-      entry["triangles"] = object.numTriangles;
-      entry["degenerate_triangles"] = object.numDegenerateTriangles;
-      addSurfaceKeys(entry, object, material);
-      entry["textures"] = material.textures.size();
-      objects.push_back(std::move(entry));
-    }
-    json["objects"] = std::move(objects);
-  }
-  json["ticks"] = summary.ticks();
-  json["contact_ticks"] = summary.contactTicks();
-  json["iterations"] = {{"total", summary.totalIterations()},
-                        {"mean", summary.ticks() > 0
-                                   ? static_cast<double>(summary.totalIterations()) /
-                                       static_cast<double>(summary.ticks())
-                                   : 0.0},
-                        {"max", summary.maxIterations()},
-                        {"cap", shared.maxIterations},
-                        {"ticks_at_cap", summary.iterationCapTicks()}};
-  json["refused_finger_ticks"] = summary.refusedTicks();
-  json["contact_overflow_ticks"] = summary.overflowTicks();
-  json["clamped_force_ticks"] = summary.clampedTicks();
-  json["fading_force_ticks"] = summary.fadingTicks();
-  json["device_lost_ticks"] = summary.deviceLostTicks();
-  json["stuck_ticks"] = summary.stuckTicks();
-  json["friction_limited_ticks"] = summary.frictionLimitedTicks();
-  if (start.movedOutside)
-  {
-    json["started_inside"] = {
-      {"object", start.object},
-      {"winding_number", start.windingNumber},
-      {"moved_m", start.movedDistance},
-      {"proxy_start", {start.position.x, start.position.y, start.position.z}},
-      {"ticks", summary.startedOutsideTicks()}};
-  }
-  else
-  {
-    json["started_inside"] = nullptr;
-  }
-  json["max_force_N"] = summary.maxForce();
-  json["solve_ns"] = {{"median", summary.solveNanosecondsQuantile(0.5)},
-                      {"p99", summary.solveNanosecondsQuantile(0.99)},
-                      {"p99.9", summary.solveNanosecondsQuantile(0.999)},
-                      {"max", summary.solveNanosecondsQuantile(1.0)}};
-  json["triangles_tested_per_tick"] = summary.meanTrianglesTested();
-  nlohmann::ordered_json budgetJson;
-  budgetJson["tick_budget"] = budget.text();
-  budgetJson["seconds"] = budget.seconds;
-  budgetJson["iterations"] = budget.iterations;
-  budgetJson["limited_ticks"] = summary.budgetLimitedTicks();
-  if (options.realtime)
-  {
-    // A realtime tick cannot be replayed as it ran: its start and its budget were the clock's.
-    budgetJson["residual_m"] = nullptr;
-  }
-  else
-  {
-    budgetJson["residual_m"] = {{"max", summary.budgetResidualQuantile(1.0)},
-                                {"median", summary.budgetResidualQuantile(0.5)}};
-  }
-  nlohmann::ordered_json histogram = nlohmann::ordered_json::object();
-  for (const auto& [ticks, runs] : summary.recoveryHistogram())
-  {
-    histogram[std::to_string(ticks)] = runs;
-  }
-  budgetJson["recovery_ticks"] = {{"runs", summary.recoveries()},
-                                  {"max", summary.recoveryTicksQuantile(1.0)},
-                                  {"p99", summary.recoveryTicksQuantile(0.99)},
-                                  {"histogram", std::move(histogram)},
-                                  {"unrecovered_at_end", summary.unrecoveredLimitedTicks()}};
-  budgetJson["replay_ms"] = replayMilliseconds;
-  json["budget"] = std::move(budgetJson);
-  json["read_ms"] = readMilliseconds;
-  json["tree_build_ms"] = loaded.treeBuildMilliseconds;
-  json["run_ms"] = runMilliseconds;
-  if (options.realtime)
-  {
-    json["realtime"] = std::move(realtimeReport);
-  }
-
-  const std::string text = json.dump(2) + "\n";
+  const std::string text =
+    scriptedRunSummaryJson(shared, loaded, scene, outcome, context, realtimeJson);
   if (!options.summary.empty())
   {
     writeFileAtomically(options.summary, text);

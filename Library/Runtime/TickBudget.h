@@ -38,4 +38,15 @@ struct TickWorkBudget
   std::string text() const;
 };
 
+/// The largest --tick-budget terms taken: a proxy tick of more than a second, or of more than a
+/// million iterations, is a typo, not a budget.
+inline constexpr double kMaxTickBudgetMicroseconds = 1e6;
+inline constexpr long kMaxTickBudgetIterations = 1000000;
+
+/// Parses a --tick-budget value: `none`, or one or two comma-separated terms `<N>us` (microseconds
+/// of wall time, N > 0, fractions allowed) and `<N>it` (move/update iterations, a whole N > 0),
+/// each at most once: `50us`, `40it`, `50us,40it`. Returns why `text` is refused, empty when it
+/// is taken (and `budget` holds it).
+std::string parseTickBudget(const std::string& text, TickWorkBudget& budget);
+
 } // namespace proxima

@@ -5,6 +5,8 @@
 // NaN is refused before it runs: a scale of 1e200 froze the proxy, a rate of 1e9 filled the disk.
 #pragma once
 
+#include "IO/InputChecks/InputError.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -85,5 +87,17 @@ inline constexpr ParameterRange kPathDurationRange{0.0, false, 3600.0, " s"};
 /// 4 kHz, a trace of a few GB. A path row at t = 1e9 s would otherwise write until the disk is
 /// full.
 inline constexpr double kDefaultMaxTicks = 1e7;
+
+/// Refuses a run or path of more than `maxTicks` ticks before it writes anything, in words
+/// that say how long it would be and how to go past the limit.
+inline void checkTickCount(double ticks, double rate, double maxTicks, const std::string& what)
+{
+  if (ticks > maxTicks)
+  {
+    throw InputError("--max-ticks", what + " is " + shortNumber(ticks) + " ticks at " +
+                                      shortNumber(rate) + " Hz, more than the limit of " +
+                                      shortNumber(maxTicks) + " (give --max-ticks to go past it)");
+  }
+}
 
 } // namespace proxima

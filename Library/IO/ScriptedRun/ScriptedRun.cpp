@@ -1,0 +1,102 @@
+#include "IO/ScriptedRun/ScriptedRun.h"
+
+#include "Proxy/ProxySolver.h"
+#include "Runtime/BudgetResidual.h"
+#include "Runtime/LockstepRuntime.h"
+#include "Runtime/SimulatedDevice.h"
+
+#include <chrono>
+#include <memory>
+
+namespace proxima
+{
+namespace
+{
+double millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
+}
+} // namespace
+
+ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
+                                    const CollisionScene& scene, const FingerPath& path,
+                                    HapticDevice& device,
+                                    const std::function<void(const HapticState&)>& onTick,
+                                    const std::function<void(std::uint64_t)>& progress)
+{
+  ScriptedRunOutcome outcome;
+  // Lockstep runs default to no budget, so that their traces stay reproducible bit for bit.
+  outcome.budget = tickBudget(settings, TickWorkBudget{});
+  ProxyParameters parameters = proxyParameters(settings);
+  outcome.budget.applyTo(parameters);
+  auto solver = std::make_unique<ProxySolver>(); // large (fixed buffers): on the heap
+  solver->setScene(&scene, parameters);
+  outcome.skin = solver->skin();
+  // A finger that starts inside a closed object would trap the proxy there: it starts outside.
+  outcome.start = placeProxyStart(scene, parameters, path.positions.front());
+  resetProxyTo(*solver, outcome.start);
+
+  LockstepSettings lockstep;
+  lockstep.rate = settings.rate;
+  lockstep.startTime = path.startTime();
+  lockstep.numTicks = ticksCovering(path.startTime(), path.endTime(), settings.rate);
+  // The residual of a budget-limited tick: the same tick replayed without the budget, after the
+  // tick's timed update, so that solve_ns stays the budgeted tick's own time.
+  BudgetResidualProbe residualProbe(scene, parameters);
+  Vec3 tickStart = solver->proxy();
+  const auto runStart = std::chrono::steady_clock::now();
+  runLockstep(lockstep, *solver, device, servoParameters(settings), [&](const HapticState& record) {
+    onTick(record);
+    outcome.summary.add(record);
+    if (record.budgetLimited)
+    {
+      const auto replayStart = std::chrono::steady_clock::now();
+      outcome.summary.addBudgetResidual(
+        residualProbe.residual(tickStart, record.finger, record.proxy));
+      outcome.replayMilliseconds += millisecondsSince(replayStart);
+    }
+    tickStart = record.proxy;
+    if (progress && (record.tick & 1023u) == 0)
+    {
+      progress(record.tick);
+    }
+  });
+  if (progress)
+  {
+    progress(lockstep.numTicks);
+  }
+  outcome.runMilliseconds = millisecondsSince(runStart) - outcome.replayMilliseconds;
+  return outcome;
+}
+
+ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                                  double maxTicks)
+{
+  checkScriptedRunSettings(settings);
+  if (path.positions.empty())
+  {
+    throw InputError(settings.path, "the path has no samples");
+  }
+  checkTickCount(
+    static_cast<double>(ticksCovering(path.startTime(), path.endTime(), settings.rate)),
+    settings.rate, maxTicks, settings.path);
+  const auto readStart = std::chrono::steady_clock::now();
+  LoadedScene loaded = loadScene(settings);
+  const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
+  checkRadiusAgainstScene(settings, loaded);
+  checkPathStart(settings, loaded, path);
+
+  ScriptedRunResult result;
+  result.ticks.reserve(ticksCovering(path.startTime(), path.endTime(), settings.rate));
+  SimulatedDevice device(path);
+  const ScriptedRunOutcome outcome =
+    playScriptedPath(settings, *loaded.scene, path, device,
+                     [&result](const HapticState& record) { result.ticks.push_back(record); });
+  ScriptedRunReportContext context;
+  context.readMilliseconds = readMilliseconds;
+  result.summaryJson = scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, context);
+  return result;
+}
+
+} // namespace proxima

@@ -1,0 +1,86 @@
+// A scripted run: a finger path played through a scene in lockstep (the virtual clock of
+// Runtime/LockstepRuntime.h), one HapticState per tick, and the summary `proxima run` prints.
+// The command line and the Python module both run paths through here, so that a trace is the
+// same, bit for bit but the solve times, whoever asked for it.
+#pragma once
+
+#include "IO/InputChecks/ParameterRanges.h"
+#include "IO/Scene/SceneBuilder.h"
+#include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Proxy/ProxyStart.h"
+#include "Runtime/FingerPath.h"
+#include "Runtime/HapticDevice.h"
+#include "Runtime/HapticState.h"
+#include "Runtime/RunSummary.h"
+#include "Runtime/TickBudget.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// What playing a path gave, beside the ticks themselves.
+struct ScriptedRunOutcome
+{
+  RunSummary summary;
+  /// Where the proxy started: at the path's first sample, or moved out of a closed object.
+  ProxyStartPlacement start;
+  /// The budget the ticks ran with.
+  TickWorkBudget budget;
+  /// The contact skin the solver used (the settings', or the scene's when they give 0).
+  double skin = 0.0;
+  /// Wall time of the ticks, and of replaying the budget-limited ones to measure their residual
+  /// (not part of the run's time).
+  double runMilliseconds = 0.0;
+  double replayMilliseconds = 0.0;
+};
+
+/// Plays `path` through `scene` in lockstep at the settings' rate, reading the finger from
+/// `device` (a SimulatedDevice of `path` for a plain scripted run). The proxy starts at the
+/// path's first sample, or outside the closed object that holds it (ProxyStart.h). Each tick is
+/// handed to `onTick` as it ends, then added to the summary; a budget-limited tick is replayed
+/// without the budget for its residual. `byDefault` is the budget when the settings give none.
+/// `progress`, when set, is called now and then with the ticks done.
+ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
+                                    const CollisionScene& scene, const FingerPath& path,
+                                    HapticDevice& device,
+                                    const std::function<void(const HapticState&)>& onTick,
+                                    const std::function<void(std::uint64_t)>& progress = {});
+
+/// What the summary names beside the settings and the outcome.
+struct ScriptedRunReportContext
+{
+  /// "sim" for a scripted path, or the device the finger came from.
+  std::string device = "sim";
+  /// The trace file written, empty when none was.
+  std::string trace;
+  bool realtime = false;
+  /// Wall time of reading the scene and the path (without building the trees).
+  double readMilliseconds = 0.0;
+};
+
+/// The summary of a run as `proxima run` prints it (Documentation/CommandLine.md): JSON text,
+/// indented by two, ending in a newline. `loaded` gives the objects' files and triangle counts,
+/// `scene` their materials; `realtimeJson`, when not empty, is the JSON object of the threaded
+/// runtime's loops (the summary's "realtime").
+std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const LoadedScene& loaded,
+                                   const CollisionScene& scene, const ScriptedRunOutcome& outcome,
+                                   const ScriptedRunReportContext& context,
+                                   const std::string& realtimeJson = {});
+
+/// A whole scripted run as a library call: loads the settings' scene, checks the path's start
+/// against it, plays `path` (with no budget unless the settings give one) and returns every tick
+/// and the summary. Throws InputError for settings, files or a path that cannot be used, naming
+/// the option or file (`settings.path` names the path in messages); nothing is written.
+struct ScriptedRunResult
+{
+  std::vector<HapticState> ticks;
+  std::string summaryJson;
+};
+ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                                  double maxTicks = kDefaultMaxTicks);
+
+} // namespace proxima

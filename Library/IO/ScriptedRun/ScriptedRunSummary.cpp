@@ -1,0 +1,178 @@
+#include "IO/ScriptedRun/ScriptedRun.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace proxima
+{
+namespace
+{
+// The surface keys of the summary, for a one-mesh run and for each object of a scene alike.
+void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
+                    const SurfaceMaterial& material)
+{
+  json["shading"] = object.shaded;
+  json["point_normals"] = normalsSourceName(object.normals);
+  if (object.normals == NormalsSource::Computed)
+  {
+    json["feature_angle_deg"] = object.featureAngleDegrees;
+  }
+  json["static_friction"] = material.staticFriction;
+  json["dynamic_friction"] = material.dynamicFriction;
+  json["viscosity_N_s_per_m"] = material.viscosity;
+}
+
+} // namespace
+
+std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const LoadedScene& loaded,
+                                   const CollisionScene& scene, const ScriptedRunOutcome& outcome,
+                                   const ScriptedRunReportContext& context,
+                                   const std::string& realtimeJson)
+{
+  std::uint64_t numTriangles = 0;
+  std::uint64_t numDegenerate = 0;
+  for (const LoadedObject& object : loaded.objects)
+  {
+    numTriangles += object.numTriangles;
+    numDegenerate += object.numDegenerateTriangles;
+  }
+  nlohmann::ordered_json json;
+  if (settings.scene.empty())
+  {
+    json["mesh"] = settings.mesh;
+  }
+  else
+  {
+    json["scene"] = settings.scene;
+  }
+  json["path"] = settings.path;
+  json["device"] = context.device;
+  if (context.trace.empty())
+  {
+    json["trace"] = nullptr; // a library run keeps its ticks in memory
+  }
+  else
+  {
+    json["trace"] = context.trace;
+  }
+  json["triangles"] = numTriangles;
+  json["degenerate_triangles"] = numDegenerate;
+  json["radius_m"] = settings.radius;
+  json["skin_m"] = outcome.skin;
+  json["stiffness_N_per_m"] = settings.stiffness;
+  json["rate_hz"] = settings.rate;
+  json["mode"] = context.realtime ? "realtime" : "lockstep";
+  if (settings.scene.empty())
+  {
+    // The keys of a one-mesh run, as before scene files.
+    const LoadedObject& object = loaded.objects.front();
+    const SurfaceMaterial& material = scene.objects.front().material;
+    addSurfaceKeys(json, object, material);
+    if (!settings.texture.empty())
+    {
+      nlohmann::ordered_json texture;
+      texture["image"] = settings.texture;
+      texture["role"] = settings.textureRole;
+      if (material.textures.front().role == TextureRole::Bump)
+      {
+        texture["amplitude_m"] = material.textures.front().amplitude;
+      }
+      texture["channel"] = settings.textureChannel;
+      json["texture"] = std::move(texture);
+    }
+  }
+  else
+  {
+    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < loaded.objects.size(); ++i)
+    {
+      const LoadedObject& object = loaded.objects[i];
+      const SurfaceMaterial& material = scene.objects[i].material;
+      nlohmann::ordered_json entry;
+      entry["mesh"] = object.mesh;
+      entry["triangles"] = object.numTriangles;
+      entry["degenerate_triangles"] = object.numDegenerateTriangles;
+      addSurfaceKeys(entry, object, material);
+      entry["textures"] = material.textures.size();
+      objects.push_back(std::move(entry));
+    }
+    json["objects"] = std::move(objects);
+  }
+  json["ticks"] = outcome.summary.ticks();
+  json["contact_ticks"] = outcome.summary.contactTicks();
+  json["iterations"] = {{"total", outcome.summary.totalIterations()},
+                        {"mean", outcome.summary.ticks() > 0
+                                   ? static_cast<double>(outcome.summary.totalIterations()) /
+                                       static_cast<double>(outcome.summary.ticks())
+                                   : 0.0},
+                        {"max", outcome.summary.maxIterations()},
+                        {"cap", settings.maxIterations},
+                        {"ticks_at_cap", outcome.summary.iterationCapTicks()}};
+  json["refused_finger_ticks"] = outcome.summary.refusedTicks();
+  json["contact_overflow_ticks"] = outcome.summary.overflowTicks();
+  json["clamped_force_ticks"] = outcome.summary.clampedTicks();
+  json["fading_force_ticks"] = outcome.summary.fadingTicks();
+  json["device_lost_ticks"] = outcome.summary.deviceLostTicks();
+  json["stuck_ticks"] = outcome.summary.stuckTicks();
+  json["friction_limited_ticks"] = outcome.summary.frictionLimitedTicks();
+  if (outcome.start.movedOutside)
+  {
+    json["started_inside"] = {
+      {"object", outcome.start.object},
+      {"winding_number", outcome.start.windingNumber},
+      {"moved_m", outcome.start.movedDistance},
+      {"proxy_start",
+       {outcome.start.position.x, outcome.start.position.y, outcome.start.position.z}},
+      {"ticks", outcome.summary.startedOutsideTicks()}};
+  }
+  else
+  {
+    json["started_inside"] = nullptr;
+  }
+  json["max_force_N"] = outcome.summary.maxForce();
+  json["solve_ns"] = {{"median", outcome.summary.solveNanosecondsQuantile(0.5)},
+                      {"p99", outcome.summary.solveNanosecondsQuantile(0.99)},
+                      {"p99.9", outcome.summary.solveNanosecondsQuantile(0.999)},
+                      {"max", outcome.summary.solveNanosecondsQuantile(1.0)}};
+  json["triangles_tested_per_tick"] = outcome.summary.meanTrianglesTested();
+  nlohmann::ordered_json budgetJson;
+  budgetJson["tick_budget"] = outcome.budget.text();
+  budgetJson["seconds"] = outcome.budget.seconds;
+  budgetJson["iterations"] = outcome.budget.iterations;
+  budgetJson["limited_ticks"] = outcome.summary.budgetLimitedTicks();
+  if (context.realtime)
+  {
+    // A realtime tick cannot be replayed as it ran: its start and its budget were the clock's.
+    budgetJson["residual_m"] = nullptr;
+  }
+  else
+  {
+    budgetJson["residual_m"] = {{"max", outcome.summary.budgetResidualQuantile(1.0)},
+                                {"median", outcome.summary.budgetResidualQuantile(0.5)}};
+  }
+  nlohmann::ordered_json histogram = nlohmann::ordered_json::object();
+  for (const auto& [ticks, runs] : outcome.summary.recoveryHistogram())
+  {
+    histogram[std::to_string(ticks)] = runs;
+  }
+  budgetJson["recovery_ticks"] = {
+    {"runs", outcome.summary.recoveries()},
+    {"max", outcome.summary.recoveryTicksQuantile(1.0)},
+    {"p99", outcome.summary.recoveryTicksQuantile(0.99)},
+    {"histogram", std::move(histogram)},
+    {"unrecovered_at_end", outcome.summary.unrecoveredLimitedTicks()}};
+  budgetJson["replay_ms"] = outcome.replayMilliseconds;
+  json["budget"] = std::move(budgetJson);
+  json["read_ms"] = context.readMilliseconds;
+  json["tree_build_ms"] = loaded.treeBuildMilliseconds;
+  json["run_ms"] = outcome.runMilliseconds;
+  if (!realtimeJson.empty())
+  {
+    json["realtime"] = nlohmann::ordered_json::parse(realtimeJson);
+  }
+
+  return json.dump(2) + "\n";
+}
+
+} // namespace proxima
