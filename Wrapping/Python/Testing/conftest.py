@@ -1,0 +1,60 @@
+"""What the Python tests share: where the build, the sources and the shared meshes are (ctest
+sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_SHARED_DATA), and the cases they run."""
+import os
+import subprocess
+
+import numpy
+import pytest
+
+BUILD = os.environ.get("PROXIMA_BUILD_DIR", "")
+SHARED = os.environ.get("PROXIMA_SHARED_DATA", "")
+MESHES = os.path.join(SHARED, "meshes")
+PATHS = os.path.join(SHARED, "paths")
+
+#: The shared probe paths with the settings their README gives: mesh, scale, radius.
+SHARED_CASES = {
+    "bunny": ("stanford-bunny.obj", 0.4, 0.002),
+    "liver": ("VH_M_Liver.glb", 0.5, 0.002),
+    "screw": ("M3x10_screw.stl", 0.005, 0.0005),
+}
+
+#: Summary keys measured on the clock: the rest must be equal between two runs of a case.
+TIMED_KEYS = ("solve_ns", "read_ms", "tree_build_ms", "run_ms")
+
+
+def needs_shared_data():
+    return pytest.mark.skipif(not os.path.isdir(MESHES),
+                              reason=f"shared meshes not found in {MESHES}")
+
+
+def shared_case(name):
+    mesh, scale, radius = SHARED_CASES[name]
+    return os.path.join(MESHES, mesh), os.path.join(PATHS, f"{name}-probe.csv"), scale, radius
+
+
+def first_rows(path_file, rows, folder):
+    """The first `rows` samples of a path file, as a file of their own in `folder`."""
+    with open(path_file) as source:
+        lines = source.readlines()[: rows + 1]
+    short = os.path.join(folder, f"first-{rows}-{os.path.basename(path_file)}")
+    with open(short, "w") as out:
+        out.writelines(lines)
+    return short
+
+
+def proxima_cli(*arguments):
+    """Runs build/bin/proxima; returns its standard output, failing the test on an error."""
+    done = subprocess.run([os.path.join(BUILD, "bin", "proxima"), *arguments],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def read_cli_trace(file):
+    """A trace CSV as named float64 columns: %.17g values parse back to the same doubles."""
+    table = numpy.genfromtxt(file, delimiter=",", names=True, dtype=numpy.float64)
+    return {name: table[name] for name in table.dtype.names}
+
+
+def without_timing(summary):
+    return {k: v for k, v in summary.items() if k not in TIMED_KEYS + ("budget",)}

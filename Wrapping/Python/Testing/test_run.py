@@ -1,0 +1,60 @@
+"""proxima.run against `proxima run`: the same trace, bit for bit (but solve_ns), and the same
+summary (but the clock's figures), on shared meshes read by each of the readers involved."""
+import json
+import os
+
+import numpy
+import pytest
+
+import proxima
+from conftest import (needs_shared_data, proxima_cli, read_cli_trace, shared_case,
+                      without_timing)
+
+
+@needs_shared_data()
+@pytest.mark.parametrize("name", ["bunny", "liver", "screw"])
+def test_run_gives_the_command_lines_trace(name, tmp_path):
+    mesh, path, scale, radius = shared_case(name)
+    out = tmp_path / "trace.csv"
+    cli_summary = json.loads(proxima_cli("run", "--mesh", mesh, "--scale", str(scale),
+                                         "--radius", str(radius), "--path", path,
+                                         "--out", str(out)))
+    trace, summary = proxima.run(mesh=mesh, path=path, scale=scale, radius=radius)
+    cli_trace = read_cli_trace(out)
+    assert list(trace) == list(proxima.TRACE_COLUMNS)
+    for column in proxima.TRACE_COLUMNS:
+        if column == "solve_ns":
+            continue
+        assert numpy.array_equal(trace[column].astype(numpy.float64), cli_trace[column]), column
+    assert trace["proxy_x"].dtype == numpy.float64
+    assert len(trace["tick"]) == cli_summary["ticks"] > 7000
+    assert summary["contact_ticks"] > 1000  # the path touches: the comparison is not of free air
+    cli_summary["trace"] = None  # the library run keeps its ticks in memory
+    assert without_timing(summary) == without_timing(cli_summary)
+    assert summary["budget"]["limited_ticks"] == 0
+
+
+@needs_shared_data()
+def test_a_path_array_runs_as_its_file(tmp_path):
+    mesh, path, scale, radius = shared_case("screw")
+    rows = proxima.read_path(path)
+    assert rows.shape[1] == 4 and rows.dtype == numpy.float64
+    from_file, _ = proxima.run(mesh=mesh, path=path, scale=scale, radius=radius)
+    from_array, summary = proxima.run(mesh=mesh, path=rows, scale=scale, radius=radius)
+    assert summary["path"] == "path array"
+    for column in ("proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z", "flags"):
+        assert numpy.array_equal(from_file[column], from_array[column]), column
+
+
+@needs_shared_data()
+def test_tick_budget_and_friction_keywords_reach_the_run(tmp_path):
+    mesh, path, scale, radius = shared_case("bunny")
+    short = proxima.read_path(path)[:2000]
+    _, budgeted = proxima.run(mesh=mesh, path=short, scale=scale, radius=radius,
+                              tick_budget="2it")
+    assert budgeted["budget"]["tick_budget"] == "2it"
+    assert budgeted["budget"]["limited_ticks"] > 0
+    _, sticky = proxima.run(mesh=mesh, path=short, scale=scale, radius=radius,
+                            static_friction=0.6, dynamic_friction=0.4)
+    assert sticky["static_friction"] == 0.6
+    assert sticky["stuck_ticks"] > 0
