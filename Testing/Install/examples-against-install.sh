@@ -7,7 +7,9 @@
 #     force columns must be the same numbers, and the module must be the installed one;
 #   - kernel_only (the kernel alone), also built with nothing but pkg-config's flags;
 #   - haptic_pipeline (the VTK pipeline with the threaded runtime), which checks its own answer;
-#   - the examples' own ctest suite (the exported scripted-path harness and oracle).
+#   - the examples' own ctest suite (the exported scripted-path harness and oracle);
+#   - probe_mesh.py, the same program in Python on the installed package proxima, against the
+#     same trace, with the same check of where the module came from (when the build made Python).
 # Usage: examples-against-install.sh BUILD_DIR SOURCE_DIR [COMPILER_AND_LINKER_FLAGS]
 set -euo pipefail
 build="$1"
@@ -34,16 +36,22 @@ path="$source/Data/Paths/icosphere-4-press-stroke.csv"
 LD_DEBUG=files "$work/examples/probe_mesh" "$mesh" 1 0.001 "$path" \
   > "$work/probe_mesh.csv" 2> "$work/probe_mesh.log"
 
-loaded="$(grep -o '/[^[:space:]]*proxima-vtk-mesh-readers\.so' "$work/probe_mesh.log" | head -n 1 || true)"
-case "$loaded" in
-  "$prefix"/lib/proxima/*) ;;
-  *)
-    echo "probe_mesh loaded the mesh readers' module from '${loaded:-nowhere}', not from $prefix" >&2
-    exit 1
-    ;;
-esac
+# The mesh readers' module must come from the moved installation: `log` is LD_DEBUG's.
+check_module_location() {
+  local program="$1" log="$2" loaded
+  loaded="$(grep -o '/[^[:space:]]*proxima-vtk-mesh-readers\.so' "$log" | head -n 1 || true)"
+  case "$loaded" in
+    "$prefix"/lib/proxima/*) ;;
+    *)
+      echo "$program loaded the mesh readers' module from '${loaded:-nowhere}', not from $prefix" >&2
+      exit 1
+      ;;
+  esac
+}
 
-/usr/bin/python3 - "$work/proxima-run.csv" "$work/probe_mesh.csv" <<'PYTHON'
+# Every tick of `example` must hold proxima run's proxy and force.
+compare_with_run() {
+  /usr/bin/python3 - "$work/proxima-run.csv" "$1" "$2" <<'PYTHON'
 import csv
 import sys
 
@@ -58,15 +66,18 @@ columns = ["proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z"]
 trace = rows(sys.argv[1], columns)
 example = rows(sys.argv[2], columns)
 if len(trace) != len(example):
-    sys.exit(f"proxima run wrote {len(trace)} ticks, probe_mesh {len(example)}")
+    sys.exit(f"proxima run wrote {len(trace)} ticks, {sys.argv[3]} {len(example)}")
 for tick, (a, b) in enumerate(zip(trace, example)):
     if a != b:
-        sys.exit(f"tick {tick}: proxima run {a}, probe_mesh {b}")
+        sys.exit(f"tick {tick}: proxima run {a}, {sys.argv[3]} {b}")
 pressed = sum(1 for row in example if row[3] ** 2 + row[4] ** 2 + row[5] ** 2 > 0.25)
 if pressed < 100:
     sys.exit(f"only {pressed} ticks pressed the sphere: the comparison says little")
-print(f"probe_mesh: {len(example)} ticks, the same as proxima run's trace ({pressed} pressing)")
+print(f"{sys.argv[3]}: {len(example)} ticks, the same as proxima run's trace ({pressed} pressing)")
 PYTHON
+}
+check_module_location probe_mesh "$work/probe_mesh.log"
+compare_with_run "$work/probe_mesh.csv" probe_mesh
 
 "$work/examples/kernel_only"
 # The kernel without CMake: pkg-config's flags alone.
@@ -77,4 +88,13 @@ g++ $flags -O2 "$source/Examples/kernel_only.cpp" -o "$work/kernel_only_pkg_conf
 "$work/kernel_only_pkg_config"
 "$work/examples/haptic_pipeline"
 ctest --test-dir "$work/examples" --output-on-failure
+
+# Python, when this build made the module: the package found by PYTHONPATH alone.
+package="$prefix/lib/python3/dist-packages"
+if [ -d "$package/proxima" ]; then
+  PYTHONPATH="$package" LD_DEBUG=files /usr/bin/python3 "$source/Examples/probe_mesh.py" \
+    "$mesh" 1 0.001 "$path" > "$work/probe_mesh_py.csv" 2> "$work/probe_mesh_py.log"
+  check_module_location probe_mesh.py "$work/probe_mesh_py.log"
+  compare_with_run "$work/probe_mesh_py.csv" probe_mesh.py
+fi
 echo "examples built and run against the installation in $prefix"
