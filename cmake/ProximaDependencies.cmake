@@ -23,6 +23,12 @@ endif()
 if(PROXIMA_BUILD_APPS)
   list(APPEND _vtkComponents IOImage RenderingOpenGL2 InteractionStyle RenderingFreeType)
 endif()
+if(PROXIMA_BUILD_PYTHON)
+  # Debian's python3: the modules are built for it. Found before VTK, whose VTK::Python (used by
+  # the wrapping of the vtkHaptic* classes, Wrapping/VTKPython) links Python3::Module.
+  set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Debian's python3, for which the Python modules are built")
+  find_package(Python3 REQUIRED COMPONENTS Interpreter Development.Module)
+endif()
 if(_vtkComponents)
   list(REMOVE_DUPLICATES _vtkComponents)
   find_package(VTK 9.1 REQUIRED COMPONENTS ${_vtkComponents})

@@ -7,6 +7,7 @@
 
 #include <vtkObjectFactory.h>
 
+#include <cmath>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkHapticRenderer);
@@ -59,6 +60,23 @@ void vtkHapticRenderer::SetFingerPath(const proxima::FingerPath& path)
   m_ownedDevice = std::make_unique<proxima::SimulatedDevice>(path);
   m_device = m_ownedDevice.get();
   this->Modified();
+}
+
+void vtkHapticRenderer::AddFingerSample(double time, double x, double y, double z)
+{
+  if (!m_addedPath.empty() && !(time >= m_addedPath.endTime()))
+  {
+    vtkErrorMacro("AddFingerSample: time " << time << " s goes back before the last sample's "
+                                           << m_addedPath.endTime() << " s.");
+    return;
+  }
+  if (!std::isfinite(time) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+  {
+    vtkErrorMacro("AddFingerSample: a sample that is not finite.");
+    return;
+  }
+  m_addedPath.append(time, proxima::Vec3{x, y, z});
+  this->SetFingerPath(m_addedPath);
 }
 
 bool vtkHapticRenderer::SetServoRate(double rate)
@@ -170,7 +188,7 @@ bool vtkHapticRenderer::IsFinished() const
   return m_runtime && m_runtime->finished();
 }
 
-std::uint64_t vtkHapticRenderer::UpdateScene()
+vtkTypeUInt64 vtkHapticRenderer::UpdateScene()
 {
   if (this->Scene)
   {
@@ -193,7 +211,42 @@ proxima::HapticState vtkHapticRenderer::GetState() const
   return m_runtime ? m_runtime->latestState() : proxima::HapticState{};
 }
 
-std::uint64_t vtkHapticRenderer::GetLiveSceneVersion() const
+namespace
+{
+void copyTo(const proxima::Vec3& v, double out[3])
+{
+  out[0] = v.x;
+  out[1] = v.y;
+  out[2] = v.z;
+}
+} // namespace
+
+void vtkHapticRenderer::GetProxyPosition(double position[3]) const
+{
+  copyTo(this->GetState().proxy, position);
+}
+
+void vtkHapticRenderer::GetFingerPosition(double position[3]) const
+{
+  copyTo(this->GetState().finger, position);
+}
+
+void vtkHapticRenderer::GetForce(double force[3]) const
+{
+  copyTo(this->GetState().force, force);
+}
+
+int vtkHapticRenderer::GetNumberOfContacts() const
+{
+  return this->GetState().numContacts;
+}
+
+vtkTypeUInt64 vtkHapticRenderer::GetStateTick() const
+{
+  return this->GetState().tick;
+}
+
+vtkTypeUInt64 vtkHapticRenderer::GetLiveSceneVersion() const
 {
   return m_runtime ? m_runtime->liveSceneVersion() : 0;
 }

@@ -47,6 +47,9 @@ public:
   /// the renderer owns. Set one before Start.
   void SetDevice(proxima::HapticDevice* device);
   void SetFingerPath(const proxima::FingerPath& path);
+  /// The same, a sample at a time (time in seconds, never going back; position in metres): the
+  /// way in from VTK's Python, where FingerPath is not wrapped.
+  void AddFingerSample(double time, double x, double y, double z);
 
   ///@{
   /// Proxy radius in metres (default 0.001), spring stiffness kp in N/m (default 1000), force
@@ -126,12 +129,22 @@ public:
 
   /// Updates the vtkHapticScene and, if it made a new snapshot, publishes it (or keeps it for
   /// Start). Returns the runtime's version of the newest published scene (0 before any).
-  std::uint64_t UpdateScene();
+  vtkTypeUInt64 UpdateScene();
 
   /// The latest state of the haptic threads (a default state before Start).
   proxima::HapticState GetState() const;
+  ///@{
+  /// Parts of the latest state, for VTK's Python, where HapticState is not wrapped: the proxy's
+  /// and the finger's centres (metres), the force on the device (N), the active contacts, and the
+  /// servo tick that produced it. Each call reads the latest state anew.
+  void GetProxyPosition(double position[3]) const;
+  void GetFingerPosition(double position[3]) const;
+  void GetForce(double force[3]) const;
+  int GetNumberOfContacts() const;
+  vtkTypeUInt64 GetStateTick() const;
+  ///@}
   /// The runtime's version of the scene the proxy loop uses (0 before the first is live).
-  std::uint64_t GetLiveSceneVersion() const;
+  vtkTypeUInt64 GetLiveSceneVersion() const;
   proxima::LoopStatistics GetServoStatistics() const;
   proxima::LoopStatistics GetProxyStatistics() const;
   /// The runtime itself (null before Start), for what this class does not forward.
@@ -161,6 +174,8 @@ private:
   bool Publish(std::shared_ptr<const proxima::CollisionScene> scene);
 
   std::unique_ptr<proxima::SimulatedDevice> m_ownedDevice;
+  /// The samples of AddFingerSample so far.
+  proxima::FingerPath m_addedPath;
   proxima::HapticDevice* m_device = nullptr;
   std::unique_ptr<proxima::ThreadedRuntime> m_runtime;
   /// The newest snapshot (published, or waiting for Start).

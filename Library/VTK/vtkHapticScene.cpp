@@ -97,6 +97,11 @@ int vtkHapticScene::AddObjectData(vtkPolyData* polyData)
   return this->AddObject(producer->GetOutputPort());
 }
 
+int vtkHapticScene::AddObject(vtkPolyData* polyData)
+{
+  return this->AddObjectData(polyData);
+}
+
 int vtkHapticScene::GetNumberOfObjects()
 {
   return this->GetNumberOfInputConnections(0);
@@ -217,7 +222,7 @@ std::shared_ptr<const proxima::CollisionScene> vtkHapticScene::GetCollisionScene
   return m_scene;
 }
 
-std::uint64_t vtkHapticScene::GetSceneVersion() const
+vtkTypeUInt64 vtkHapticScene::GetSceneVersion() const
 {
   const std::lock_guard<std::mutex> lock(m_sceneMutex);
   return m_sceneVersion;

@@ -35,8 +35,10 @@ public:
   /// Adds an object: returns its index (the input connection's). Same as AddInputConnection.
   int AddObject(vtkAlgorithmOutput* polyData);
   /// Adds an object from a data set (wrapped in a trivial producer); editing `polyData` and
-  /// calling its Modified() rebuilds the object at the next Update.
+  /// calling its Modified() rebuilds the object at the next Update. AddObject(vtkPolyData*) is
+  /// the same, for callers (VTK's Python) that pass a data set where a connection also goes.
   int AddObjectData(vtkPolyData* polyData);
+  int AddObject(vtkPolyData* polyData);
   int GetNumberOfObjects();
 
   // The per-object setters refuse (vtkErrorMacro, no change) an index that is not an object's:
@@ -112,7 +114,7 @@ public:
   /// build runs.
   std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const;
   /// 1 for the first snapshot, then +1 for each rebuilt one (0 before the first).
-  std::uint64_t GetSceneVersion() const;
+  vtkTypeUInt64 GetSceneVersion() const;
   /// Wall time in milliseconds from the start of the execution that made the last snapshot to
   /// the snapshot complete.
   double GetLastBuildMilliseconds() const;

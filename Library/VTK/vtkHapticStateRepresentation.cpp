@@ -88,6 +88,26 @@ vtkHapticStateRepresentation::vtkHapticStateRepresentation()
 
 vtkHapticStateRepresentation::~vtkHapticStateRepresentation() = default;
 
+vtkActor* vtkHapticStateRepresentation::GetProxyActor()
+{
+  return m_proxyActor;
+}
+
+vtkActor* vtkHapticStateRepresentation::GetFingerActor()
+{
+  return m_fingerActor;
+}
+
+vtkActor* vtkHapticStateRepresentation::GetSpringActor()
+{
+  return m_springActor;
+}
+
+vtkActor* vtkHapticStateRepresentation::GetForceActor()
+{
+  return m_forceActor;
+}
+
 vtkActor* vtkHapticStateRepresentation::GetContactDiscActor(int contact)
 {
   return contact >= 0 && contact < kMaxContacts ? m_discActors[contact].Get() : nullptr;

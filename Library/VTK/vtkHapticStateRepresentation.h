@@ -63,11 +63,12 @@ public:
   vtkGetMacro(ContactDiscOpacity, double);
   ///@}
 
-  /// The parts, to restyle them (colours, visibility); SetState sets their visibility.
-  vtkActor* GetProxyActor() { return m_proxyActor; }
-  vtkActor* GetFingerActor() { return m_fingerActor; }
-  vtkActor* GetSpringActor() { return m_springActor; }
-  vtkActor* GetForceActor() { return m_forceActor; }
+  /// The parts, to restyle them (colours, visibility); SetState sets their visibility. Out of
+  /// line, so that the header needs no vtkActor (VTK's Python wrapping compiles it as is).
+  vtkActor* GetProxyActor();
+  vtkActor* GetFingerActor();
+  vtkActor* GetSpringActor();
+  vtkActor* GetForceActor();
   vtkActor* GetContactDiscActor(int contact);
   vtkActor* GetFrictionConeActor(int contact);
 

@@ -9,7 +9,8 @@
 #   - haptic_pipeline (the VTK pipeline with the threaded runtime), which checks its own answer;
 #   - the examples' own ctest suite (the exported scripted-path harness and oracle);
 #   - probe_mesh.py, the same program in Python on the installed package proxima, against the
-#     same trace, with the same check of where the module came from (when the build made Python).
+#     same trace, with the same check of where the module came from, and proxima.vtk on a
+#     vtkPolyData made in Python (when the build made Python).
 # Usage: examples-against-install.sh BUILD_DIR SOURCE_DIR [COMPILER_AND_LINKER_FLAGS]
 set -euo pipefail
 build="$1"
@@ -96,5 +97,27 @@ if [ -d "$package/proxima" ]; then
     "$mesh" 1 0.001 "$path" > "$work/probe_mesh_py.csv" 2> "$work/probe_mesh_py.log"
   check_module_location probe_mesh.py "$work/probe_mesh_py.log"
   compare_with_run "$work/probe_mesh_py.csv" probe_mesh.py
+  # The vtkHaptic* classes in VTK's Python, from the moved installation's own library.
+  if [ -f "$package/proxima/vtk.py" ]; then
+    PYTHONPATH="$package" LD_DEBUG=files /usr/bin/python3 - 2> "$work/vtk_py.log" <<'PYTHON'
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from proxima.vtk import vtkHapticScene
+sphere = vtkSphereSource()
+sphere.Update()
+scene = vtkHapticScene()
+scene.AddObject(sphere.GetOutput())
+scene.Update()
+assert scene.GetNumberOfObjects() == 1 and scene.GetSceneVersion() == 1
+print("proxima.vtk: a vtkPolyData made in Python became a haptic scene")
+PYTHON
+    loaded="$(grep -o '/[^[:space:]]*vtkProximaHaptic[^[:space:]]*\.so' "$work/vtk_py.log" | head -n 1 || true)"
+    case "$loaded" in
+      "$prefix"/lib/*) ;;
+      *)
+        echo "proxima.vtk loaded vtkProximaHaptic from '${loaded:-nowhere}', not from $prefix" >&2
+        exit 1
+        ;;
+    esac
+  fi
 fi
 echo "examples built and run against the installation in $prefix"
