@@ -29,6 +29,8 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the format check of CI (Tools/check-format.sh, .clang-format)
   clang-format-14
+  # rigid bodies and mechanisms (Library/Dynamics)
+  libmujoco-dev
   # the Python module (pybind11), the vtkHaptic* classes in VTK's Python, its tests (pytest)
   # and batch runs on a Dask cluster
   pybind11-dev python3-dev python3-numpy python3-vtk9 python3-pytest python3-distributed

@@ -23,6 +23,10 @@ endif()
 if(PROXIMA_BUILD_APPS)
   list(APPEND _vtkComponents IOImage RenderingOpenGL2 InteractionStyle RenderingFreeType)
 endif()
+if(PROXIMA_BUILD_DYNAMICS)
+  # Rigid bodies and mechanisms (Library/Dynamics), integrated at the haptic rate.
+  find_package(mujoco CONFIG REQUIRED)
+endif()
 if(PROXIMA_BUILD_PYTHON)
   # Debian's python3: the modules are built for it. Found before VTK, whose VTK::Python (used by
   # the wrapping of the vtkHaptic* classes, Wrapping/VTKPython) links Python3::Module.

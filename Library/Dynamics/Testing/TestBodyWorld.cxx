@@ -1,0 +1,248 @@
+// The bodies' integration against closed forms: a physical pendulum's period, a lever's static
+// deflection against its torsional spring (F L / k), a mass on a spring's natural frequency, a free
+// body's momentum (F t = m v), no energy gained by a damped mechanism, and bad bodies refused.
+#include "Dynamics/BodyWorld.h"
+#include "Geometry/ProceduralMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace proxima
+{
+namespace
+{
+constexpr double kRate = 1000.0;
+
+TriangleMesh boxMesh(const Vec3& half, const Vec3& center)
+{
+  TriangleMesh mesh;
+  MeshError error;
+  EXPECT_TRUE(mesh.build(makeBox(half, center), error));
+  return mesh;
+}
+
+BodyDescription body(const char* name, const TriangleMesh& mesh, double density,
+                     const JointDescription& joint)
+{
+  BodyDescription description;
+  description.name = name;
+  description.joint = joint;
+  description.mass = solidMassProperties(mesh, density);
+  return description;
+}
+
+DynamicsSettings settings(const Vec3& gravity = {})
+{
+  DynamicsSettings s;
+  s.timeStep = 1.0 / kRate;
+  s.gravity = gravity;
+  return s;
+}
+
+// Times at which q crosses zero going up, interpolated within the step.
+std::vector<double> upwardCrossings(BodyWorld& world, double seconds)
+{
+  std::vector<double> crossings;
+  double previous = world.jointPosition(0);
+  const auto steps = static_cast<int>(seconds * kRate);
+  for (int i = 0; i < steps; ++i)
+  {
+    world.step();
+    const double q = world.jointPosition(0);
+    if (previous < 0.0 && q >= 0.0)
+    {
+      crossings.push_back(world.time() - (q / (q - previous)) / kRate);
+    }
+    previous = q;
+  }
+  return crossings;
+}
+
+// The measured against the analytic, in the test's output (Documentation/Dynamics.md quotes it).
+void report(const char* what, double measured, double analytic)
+{
+  std::printf("%s: measured %.9g, analytic %.9g, error %.4f %%\n", what, measured, analytic,
+              100.0 * (measured - analytic) / analytic);
+}
+
+double meanPeriod(const std::vector<double>& crossings)
+{
+  EXPECT_GE(crossings.size(), 3u);
+  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+TEST(BodyWorld, PhysicalPendulumPeriod)
+{
+  // A 20 cm bar hanging from a hinge at its top end, swinging a few hundredths of a radian.
+  const Vec3 half{0.01, 0.01, 0.1};
+  const TriangleMesh bar = boxMesh(half, {0.0, 0.0, -0.1});
+  JointDescription hinge;
+  hinge.axis = {1.0, 0.0, 0.0};
+  BodyWorld world({body("pendulum", bar, 1000.0, hinge)}, settings({0.0, 0.0, -9.81}));
+  // A short push sideways starts the swing.
+  for (int i = 0; i < 5; ++i)
+  {
+    world.applyForce(0, {0.0, 0.0, -0.2}, {0.0, 0.2, 0.0});
+    world.step();
+  }
+  const SolidMassProperties& mass = solidMassProperties(bar, 1000.0);
+  const double d = 0.1; // pivot to centre of mass
+  const double pivotInertia = mass.inertia[0] + mass.mass * d * d;
+  const double analytic = 2.0 * std::numbers::pi * std::sqrt(pivotInertia / (mass.mass * 9.81 * d));
+  const double period = meanPeriod(upwardCrossings(world, 10.0));
+  report("pendulum period (s)", period, analytic);
+  EXPECT_NEAR(period, analytic, 0.01 * analytic);
+}
+
+TEST(BodyWorld, LeverDeflectsByForceTimesLengthOverStiffness)
+{
+  // A 20 cm lever on a hinge about z at the origin, a torsional spring k, pushed at its tip.
+  const double length = 0.2;
+  const double k = 2.0;
+  const double force = 1.0;
+  const TriangleMesh lever = boxMesh({0.1, 0.01, 0.01}, {0.1, 0.0, 0.0});
+  JointDescription hinge;
+  hinge.stiffness = k;
+  hinge.damping = 0.05;
+  BodyWorld world({body("lever", lever, 1000.0, hinge)}, settings());
+  const Vec3 tip{length, 0.0, 0.0};
+  for (int i = 0; i < 8000; ++i)
+  {
+    // Perpendicular to the lever as it turns: the torque is F L whatever the angle.
+    const BodyPose pose = world.pose(0);
+    const Vec3 along = pose.apply(tip) - pose.apply({0.0, 0.0, 0.0});
+    const Vec3 perpendicular = cross(Vec3{0.0, 0.0, 1.0}, along) * (1.0 / norm(along));
+    world.applyForce(0, pose.apply(tip), perpendicular * force);
+    world.step();
+  }
+  report("lever deflection, force across the lever (rad)", world.jointPosition(0),
+         force * length / k);
+  EXPECT_NEAR(world.jointPosition(0), force * length / k, 1e-6);
+  EXPECT_NEAR(world.jointVelocity(0), 0.0, 1e-6);
+
+  // A force fixed in the world (+y) at the tip: the equilibrium solves k q = F L cos q.
+  BodyWorld fixed({body("lever", lever, 1000.0, hinge)}, settings());
+  for (int i = 0; i < 8000; ++i)
+  {
+    fixed.applyForce(0, fixed.pose(0).apply(tip), {0.0, force, 0.0});
+    fixed.step();
+  }
+  double q = force * length / k;
+  for (int i = 0; i < 50; ++i)
+  {
+    q -= (k * q - force * length * std::cos(q)) / (k + force * length * std::sin(q));
+  }
+  report("lever deflection, force fixed in the world (rad)", fixed.jointPosition(0), q);
+  EXPECT_NEAR(fixed.jointPosition(0), q, 1e-6);
+}
+
+TEST(BodyWorld, MassOnASpringOscillatesAtItsNaturalFrequency)
+{
+  // The micro-sensor's test mass: a slider on a spring, pushed once.
+  const TriangleMesh mass = boxMesh({0.01, 0.01, 0.01}, {0.0, 0.0, 0.0});
+  JointDescription slide;
+  slide.type = JointType::Slide;
+  slide.axis = {1.0, 0.0, 0.0};
+  slide.stiffness = 50.0;
+  BodyWorld world({body("test mass", mass, 1000.0, slide)}, settings());
+  world.applyForce(0, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0});
+  world.step();
+  const double m = solidMassProperties(mass, 1000.0).mass;
+  const double analytic = 2.0 * std::numbers::pi * std::sqrt(m / 50.0);
+  const double period = meanPeriod(upwardCrossings(world, 20.0 * analytic));
+  report("spring-mass period (s)", period, analytic);
+  EXPECT_NEAR(period, analytic, 0.01 * analytic);
+}
+
+TEST(BodyWorld, FreeBodyGainsTheImpulsesMomentum)
+{
+  const TriangleMesh block = boxMesh({0.05, 0.02, 0.01}, {0.3, 0.0, 0.0});
+  JointDescription free;
+  free.type = JointType::Free;
+  BodyWorld world({body("block", block, 500.0, free)}, settings());
+  const SolidMassProperties mass = solidMassProperties(block, 500.0);
+  const Vec3 force{0.0, 2.0, 0.0};
+  const int steps = 100;
+  for (int i = 0; i < steps; ++i)
+  {
+    // At the centre of mass: a pure translation.
+    world.applyForce(0, world.pose(0).apply(mass.centroid), force);
+    world.step();
+  }
+  const double seconds = steps / kRate;
+  const Vec3 velocity = world.pointVelocity(0, world.pose(0).apply(mass.centroid));
+  EXPECT_NEAR(velocity.y, force.y * seconds / mass.mass, 1e-12);
+  EXPECT_NEAR(velocity.x, 0.0, 1e-12);
+  // Semi-implicit Euler: y = sum over steps of v_k dt = F dt^2 n (n + 1) / (2 m).
+  const Vec3 moved = world.pose(0).apply(mass.centroid) - mass.centroid;
+  EXPECT_NEAR(moved.y, force.y * seconds * seconds * (steps + 1) / (2.0 * steps * mass.mass),
+              1e-12);
+}
+
+TEST(BodyWorld, DampedMechanismGainsNoEnergy)
+{
+  // A pendulum with hinge damping, kicked, then left alone: its energy only falls.
+  const TriangleMesh bar = boxMesh({0.01, 0.01, 0.1}, {0.0, 0.0, -0.1});
+  JointDescription hinge;
+  hinge.axis = {1.0, 0.0, 0.0};
+  hinge.damping = 0.002;
+  BodyWorld world({body("pendulum", bar, 1000.0, hinge)}, settings({0.0, 0.0, -9.81}));
+  for (int i = 0; i < 20; ++i)
+  {
+    world.applyForce(0, {0.0, 0.0, -0.2}, {0.0, 1.0, 0.0});
+    world.step();
+  }
+  BodyEnergy start = world.energy();
+  double previous = start.kinetic + start.potential;
+  double rise = 0.0;
+  for (int i = 0; i < 5000; ++i)
+  {
+    world.step();
+    const BodyEnergy now = world.energy();
+    const double total = now.kinetic + now.potential;
+    rise = std::max(rise, total - previous);
+    previous = total;
+  }
+  EXPECT_GT(start.kinetic, 0.0);
+  EXPECT_LT(previous, start.kinetic + start.potential);
+  EXPECT_LE(rise, 1e-9 * start.kinetic) << "energy rose in a step by " << rise << " J";
+}
+
+TEST(BodyWorld, BadBodiesAreRefusedByName)
+{
+  const TriangleMesh bar = boxMesh({0.01, 0.01, 0.1}, {0.0, 0.0, -0.1});
+  const auto refusal = [&](const JointDescription& joint) {
+    try
+    {
+      BodyWorld world({body("crank", bar, 1000.0, joint)}, settings());
+    }
+    catch (const std::invalid_argument& error)
+    {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  JointDescription zeroAxis;
+  zeroAxis.axis = {0.0, 0.0, 0.0};
+  EXPECT_EQ(refusal(zeroAxis), "body 'crank': the joint's axis is zero");
+  JointDescription empty;
+  empty.limited = true;
+  empty.range[0] = 1.0;
+  empty.range[1] = -1.0;
+  EXPECT_NE(refusal(empty).find("range is empty"), std::string::npos);
+  JointDescription negative;
+  negative.damping = -1.0;
+  EXPECT_NE(refusal(negative).find("damping is negative"), std::string::npos);
+  BodyDescription weightless = body("crank", bar, 1000.0, JointDescription{});
+  weightless.mass.mass = 0.0;
+  EXPECT_THROW(BodyWorld({weightless}, settings()), std::invalid_argument);
+}
+} // namespace
+} // namespace proxima
