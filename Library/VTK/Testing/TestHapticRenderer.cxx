@@ -8,6 +8,8 @@
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticScene.h"
 
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -145,5 +147,53 @@ TEST(HapticRenderer, ARunThatFinishedStartsAgainOnTheSameScene)
   ASSERT_TRUE(waitFor([&] { return renderer->GetLiveSceneVersion() == 1; }));
   ASSERT_TRUE(waitFor([&] { return renderer->IsFinished(); }));
   renderer->Stop();
+}
+} // namespace
+
+namespace
+{
+TEST(HapticRenderer, FingerSamplesAndThePlainGettersAreThePathAndTheState)
+{
+  // The way in from VTK's Python: a finger sample at a time, and the state as plain numbers.
+  auto sphere = proxima::vtk::testing::polyDataOf(makeIcosphere(3, 0.01));
+  vtkNew<vtkHapticScene> scene;
+  scene->AddObject(sphere.Get()); // the vtkPolyData overload
+  vtkNew<vtkHapticRenderer> renderer;
+  renderer->SetScene(scene);
+  renderer->SetServoRate(1000.0);
+  renderer->SetDuration(0.1);
+  renderer->AddFingerSample(0.0, 0.0, 0.0, 0.02);
+  renderer->AddFingerSample(0.05, 0.0, 0.0, 0.008);
+  // A sample going back in time is refused (an error event), and the path stays as it was.
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> countErrors;
+  countErrors->SetClientData(&errors);
+  countErrors->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  renderer->AddObserver(vtkCommand::ErrorEvent, countErrors);
+  renderer->AddFingerSample(0.01, 0.0, 0.0, 0.0);
+  renderer->RemoveObserver(countErrors);
+  EXPECT_EQ(errors, 1);
+  renderer->AddFingerSample(1.0, 0.0, 0.0, 0.008);
+  ASSERT_TRUE(renderer->Start()) << renderer->GetStartMessage();
+  ASSERT_TRUE(waitFor([&] { return renderer->IsFinished(); }));
+  renderer->Stop();
+  const HapticState state = renderer->GetState();
+  double proxy[3];
+  double finger[3];
+  double force[3];
+  renderer->GetProxyPosition(proxy);
+  renderer->GetFingerPosition(finger);
+  renderer->GetForce(force);
+  EXPECT_EQ(proxy[2], state.proxy.z);
+  EXPECT_EQ(finger[2], state.finger.z);
+  EXPECT_EQ(force[2], state.force.z);
+  EXPECT_EQ(renderer->GetNumberOfContacts(), state.numContacts);
+  EXPECT_EQ(renderer->GetStateTick(), state.tick);
+  // Held 2 mm inside the sphere's top (the refused sample never reached the path): in contact,
+  // pushed back up.
+  EXPECT_EQ(finger[2], 0.008);
+  EXPECT_GE(state.numContacts, 1);
+  EXPECT_GT(force[2], 0.0);
 }
 } // namespace
