@@ -29,6 +29,8 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the format check of CI (Tools/check-format.sh, .clang-format)
   clang-format-14
+  # remote runs (Library/Net): gRPC, protobuf and their compilers
+  libgrpc++-dev libprotobuf-dev protobuf-compiler protobuf-compiler-grpc
   # rigid bodies and mechanisms (Library/Dynamics)
   libmujoco-dev
   # the Python module (pybind11), the vtkHaptic* classes in VTK's Python, its tests (pytest)

@@ -27,6 +27,11 @@ if(PROXIMA_BUILD_DYNAMICS)
   # Rigid bodies and mechanisms (Library/Dynamics), integrated at the haptic rate.
   find_package(mujoco CONFIG REQUIRED)
 endif()
+if(PROXIMA_BUILD_NET)
+  # Remote runs (Library/Net): messages and their compiler, and the RPC framework.
+  find_package(Protobuf REQUIRED)
+  find_package(gRPC CONFIG REQUIRED)
+endif()
 if(PROXIMA_BUILD_PYTHON)
   # Debian's python3: the modules are built for it. Found before VTK, whose VTK::Python (used by
   # the wrapping of the vtkHaptic* classes, Wrapping/VTKPython) links Python3::Module.

@@ -38,5 +38,7 @@ Command addPathCommand(CLI::App& parent);
 Command addTreeCommand(CLI::App& parent);
 Command addGenerateCommand(CLI::App& parent);
 Command addDevicesCommand(CLI::App& parent);
+Command addServeCommand(CLI::App& parent);
+Command addRemoteCommand(CLI::App& parent);
 
 } // namespace proxima::cli

@@ -28,7 +28,18 @@ inline constexpr CommandSummary kGenerateSummary{
 inline constexpr CommandSummary kDevicesSummary{
   "devices", "List the haptic devices connected now, by the name proxima run --device takes"};
 
+inline constexpr CommandSummary kServeSummary{
+  "serve", "Serve remote runs over gRPC: play clients' finger paths in lockstep and stream the "
+           "ticks back"};
+inline constexpr CommandSummary kRemoteSummary{
+  "remote", "Run a command on a proxima serve elsewhere: remote --server HOST:PORT run ..."};
+
+// PROXIMA_HAS_NET: whether this build made the Net layer's commands (Apps/proxima/CMakeLists.txt).
 inline constexpr CommandSummary kCommandSummaries[] = {
-  kRunSummary, kViewSummary, kPathSummary, kTreeSummary, kGenerateSummary, kDevicesSummary};
+  kRunSummary,   kViewSummary,   kPathSummary, kTreeSummary, kGenerateSummary, kDevicesSummary,
+#if PROXIMA_HAS_NET
+  kServeSummary, kRemoteSummary,
+#endif
+};
 
 } // namespace proxima::cli

@@ -21,4 +21,20 @@ std::uint32_t tickFlags(const HapticState& state)
   return flags;
 }
 
+void setTickFlags(HapticState& state, std::uint32_t flags)
+{
+  const auto has = [flags](TickFlag flag) { return (flags & flag) != 0; };
+  state.budgetLimited = has(kTickBudgetLimited);
+  state.hitIterationCap = has(kTickIterationCap);
+  state.forceClamped = has(kTickForceClamped);
+  state.fading = has(kTickForceFading);
+  state.deviceLost = has(kTickDeviceLost);
+  state.fingerRefused = has(kTickFingerRefused);
+  state.stuck = has(kTickStuck);
+  state.frictionLimited = has(kTickFrictionLimited);
+  state.contactOverflow = has(kTickContactOverflow);
+  state.rateLimited = has(kTickForceRateLimited);
+  state.startedOutside = has(kTickStartedOutside);
+}
+
 } // namespace proxima

@@ -117,5 +117,8 @@ enum TickFlag : std::uint32_t
 
 /// The state's conditions as a TickFlag bitmask.
 std::uint32_t tickFlags(const HapticState& state);
+/// Sets the state's conditions from a TickFlag bitmask (the inverse of tickFlags): for a state
+/// rebuilt from a trace row or a remote run's stream.
+void setTickFlags(HapticState& state, std::uint32_t flags);
 
 } // namespace proxima

@@ -70,8 +70,9 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
   return outcome;
 }
 
-ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
-                                  double maxTicks)
+std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                            const std::function<void(const HapticState&)>& onTick,
+                            const ScriptedRunReportContext& context, double maxTicks)
 {
   checkScriptedRunSettings(settings);
   if (path.positions.empty())
@@ -83,19 +84,23 @@ ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const Fin
     settings.rate, maxTicks, settings.path);
   const auto readStart = std::chrono::steady_clock::now();
   LoadedScene loaded = loadScene(settings);
-  const double readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
+  ScriptedRunReportContext report = context;
+  report.readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
   checkRadiusAgainstScene(settings, loaded);
   checkPathStart(settings, loaded, path);
-
-  ScriptedRunResult result;
-  result.ticks.reserve(ticksCovering(path.startTime(), path.endTime(), settings.rate));
   SimulatedDevice device(path);
   const ScriptedRunOutcome outcome =
-    playScriptedPath(settings, *loaded.scene, path, device,
-                     [&result](const HapticState& record) { result.ticks.push_back(record); });
-  ScriptedRunReportContext context;
-  context.readMilliseconds = readMilliseconds;
-  result.summaryJson = scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, context);
+    playScriptedPath(settings, *loaded.scene, path, device, onTick);
+  return scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, report);
+}
+
+ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                                  double maxTicks)
+{
+  ScriptedRunResult result;
+  result.summaryJson = runScriptedPath(
+    settings, path, [&result](const HapticState& record) { result.ticks.push_back(record); },
+    ScriptedRunReportContext{}, maxTicks);
   return result;
 }
 

@@ -82,5 +82,10 @@ struct ScriptedRunResult
 };
 ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                                   double maxTicks = kDefaultMaxTicks);
+/// The same, handing each tick to `onTick` as it ends instead of keeping it (a server streams
+/// them); returns the summary.
+std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                            const std::function<void(const HapticState&)>& onTick,
+                            const ScriptedRunReportContext& context, double maxTicks);
 
 } // namespace proxima

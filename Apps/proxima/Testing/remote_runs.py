@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""proxima.remote-runs: `proxima serve` on loopback and `proxima remote ... run` against it.
+
+- A remote run's trace equals a local `proxima run`'s bit for bit but for solve_ns, and its
+  summary equals the local one but for the clock's figures and the trace's name (the shared screw
+  and liver paths: STL and glTF read on the server).
+- Bad input is refused as a local run refuses it, naming the client's file, and leaves no trace.
+- With --token-file, a wrong token is refused (--token-file) and the right one runs.
+- A server that is not there, or that stops, is a clear error naming --server.
+- The server leaves none of the runs' files behind.
+Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR
+"""
+import csv
+import glob
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+
+build, shared = sys.argv[1], sys.argv[2]
+proxima = os.path.join(build, "bin", "proxima")
+meshes, paths = os.path.join(shared, "meshes"), os.path.join(shared, "paths")
+work = tempfile.mkdtemp(prefix="proxima-remote-test-")
+TIMED = ("solve_ns", "read_ms", "tree_build_ms", "run_ms")
+
+
+def fail(message):
+    sys.exit(f"remote-runs: {message}")
+
+
+def start_server(*extra):
+    server = subprocess.Popen([proxima, "serve", "--listen", "127.0.0.1:0", *extra],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = server.stdout.readline()
+    if "listening on" not in line:
+        fail(f"the server did not start: {line!r} {server.stderr.read()}")
+    return server, line.strip().rsplit(" ", 1)[1]
+
+
+def run(*arguments):
+    return subprocess.run([proxima, *arguments], capture_output=True, text=True)
+
+
+def rows(file):
+    with open(file) as source:
+        return [row[:13] + row[14:] for row in csv.reader(source)]  # all but solve_ns
+
+
+def untimed(summary):
+    kept = {k: v for k, v in summary.items() if k not in TIMED + ("trace",)}
+    kept["budget"] = {k: v for k, v in summary["budget"].items() if k != "replay_ms"}
+    return kept
+
+
+def leftovers():
+    return set(glob.glob(os.path.join(tempfile.gettempdir(), "proxima-remote-??????")))
+
+
+before = leftovers()
+server, address = start_server()
+for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"),
+                                  ("liver", "VH_M_Liver.glb", "0.5", "0.002")):
+    options = ["--mesh", os.path.join(meshes, mesh), "--scale", scale, "--radius", radius,
+               "--path", os.path.join(paths, f"{name}-probe.csv")]
+    local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"))
+    remote = run("remote", "--server", address, "run", *options,
+                 "--out", os.path.join(work, f"{name}-remote.csv"))
+    if local.returncode != 0 or remote.returncode != 0:
+        fail(f"{name}: local {local.returncode} {local.stderr} remote {remote.returncode} "
+             f"{remote.stderr}")
+    local_rows = rows(os.path.join(work, f"{name}-local.csv"))
+    remote_rows = rows(os.path.join(work, f"{name}-remote.csv"))
+    if local_rows != remote_rows:
+        first = next(i for i, (a, b) in enumerate(zip(local_rows, remote_rows)) if a != b)
+        fail(f"{name}: the remote trace differs from the local one at row {first}")
+    if untimed(json.loads(local.stdout)) != untimed(json.loads(remote.stdout)):
+        fail(f"{name}: the remote summary differs from the local one")
+    contact = json.loads(remote.stdout)["contact_ticks"]
+    if contact < 1000:
+        fail(f"{name}: only {contact} contact ticks: the comparison says little")
+    print(f"{name}: {len(remote_rows) - 1} ticks ({contact} in contact), the same as proxima run")
+
+# Bad input: the client's file named, as locally; no trace written.
+bad_path = os.path.join(work, "bad-path.csv")
+with open(bad_path, "w") as out:
+    out.write("t,x,y,z\n0,1,2\n")
+bad_trace = os.path.join(work, "bad.csv")
+refused = run("remote", "--server", address, "run", "--mesh",
+              os.path.join(meshes, "M3x10_screw.stl"), "--scale", "0.005", "--path", bad_path,
+              "--out", bad_trace)
+if refused.returncode != 2 or f"{bad_path}: line 2: expected 4 values" not in refused.stderr:
+    fail(f"a bad path: status {refused.returncode}, {refused.stderr!r}")
+if os.path.exists(bad_trace):
+    fail("a refused run left a trace")
+server.send_signal(signal.SIGTERM)
+if server.wait(timeout=30) != 0:
+    fail(f"the server ended with {server.returncode}")
+
+# The token.
+token_file = os.path.join(work, "token")
+with open(token_file, "w") as out:
+    out.write("s3cret-token\n")
+wrong_file = os.path.join(work, "wrong-token")
+with open(wrong_file, "w") as out:
+    out.write("guess\n")
+server, address = start_server("--token-file", token_file)
+short = os.path.join(work, "short.csv")
+with open(os.path.join(paths, "screw-probe.csv")) as source, open(short, "w") as out:
+    out.writelines(source.readlines()[:500])
+options = ["--mesh", os.path.join(meshes, "M3x10_screw.stl"), "--scale", "0.005", "--radius",
+           "0.0005", "--path", short, "--out", os.path.join(work, "token.csv")]
+wrong = run("remote", "--server", address, "--token-file", wrong_file, "run", *options)
+if wrong.returncode != 2 or "--token-file" not in wrong.stderr:
+    fail(f"a wrong token: status {wrong.returncode}, {wrong.stderr!r}")
+right = run("remote", "--server", address, "--token-file", token_file, "run", *options)
+if right.returncode != 0:
+    fail(f"the right token: status {right.returncode}, {right.stderr!r}")
+server.send_signal(signal.SIGTERM)
+server.wait(timeout=30)
+
+# No server there.
+gone = run("remote", "--server", address, "run", *options)
+if gone.returncode != 2 or "--server: no Proxima server answers" not in gone.stderr:
+    fail(f"no server: status {gone.returncode}, {gone.stderr!r}")
+if leftovers() - before:
+    fail(f"the server left its runs' files: {sorted(leftovers() - before)}")
+print("remote runs: the same traces as local runs; bad input, tokens and a missing server "
+      "refused clearly")

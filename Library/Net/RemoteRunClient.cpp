@@ -1,0 +1,144 @@
+#include "Net/RemoteRuns.h"
+
+#include "IO/InputChecks/FileChecks.h"
+#include "IO/InputChecks/InputError.h"
+#include "Net/Private/TickColumns.h"
+
+#include "proxima_remote.grpc.pb.h"
+
+#include <grpcpp/grpcpp.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+namespace proxima
+{
+namespace
+{
+void readFile(const std::string& path, const char* kind, net::FileContent& file)
+{
+  detail::requireReadableFile(path, kind);
+  std::ifstream in(path, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof())
+  {
+    throw InputError(path, "cannot read the file");
+  }
+  file.set_name(path);
+  file.set_data(std::move(data));
+}
+
+net::RunSettings settingsMessage(const ScriptedRunSettings& s, double maxTicks)
+{
+  net::RunSettings out;
+  out.set_scale(s.scale);
+  out.set_radius(s.radius);
+  out.set_stiffness(s.stiffness);
+  out.set_rate(s.rate);
+  out.set_max_force(s.maxForce);
+  out.set_max_iterations(s.maxIterations);
+  out.set_skin(s.skin);
+  out.set_shading(s.shading);
+  out.set_feature_angle(s.featureAngle);
+  out.set_static_friction(s.staticFriction);
+  out.set_dynamic_friction(s.dynamicFriction);
+  out.set_viscosity(s.viscosity);
+  out.set_texture_role(s.textureRole);
+  out.set_texture_amplitude(s.textureAmplitude);
+  out.set_texture_channel(s.textureChannel);
+  out.set_tick_budget(s.tickBudget);
+  out.set_max_ticks(maxTicks);
+  return out;
+}
+} // namespace
+
+std::string runRemotely(const std::string& server, const std::string& token,
+                        const RemoteRunRequest& request,
+                        const std::function<void(const HapticState&)>& onTick)
+{
+  const ScriptedRunSettings& settings = request.settings;
+  if (!settings.scene.empty())
+  {
+    throw InputError("--scene", "a remote run takes --mesh: a scene file's many files are not "
+                                "sent to the server");
+  }
+  // The settings are checked here first: a typo costs no upload.
+  checkScriptedRunSettings(settings);
+  net::RunRequest message;
+  *message.mutable_settings() = settingsMessage(settings, request.maxTicks);
+  readFile(settings.mesh, "mesh file", *message.mutable_mesh());
+  readFile(settings.path, "finger path file", *message.mutable_path());
+  if (!settings.texture.empty())
+  {
+    readFile(settings.texture, "texture image", *message.mutable_texture());
+  }
+  message.set_trace_name(request.traceName);
+
+  grpc::ChannelArguments arguments;
+  arguments.SetMaxSendMessageSize(std::numeric_limits<int>::max());
+  const auto channel =
+    grpc::CreateCustomChannel(server, grpc::InsecureChannelCredentials(), arguments);
+  if (!channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(10)))
+  {
+    throw InputError("--server", "no Proxima server answers at " + server +
+                                   " (is `proxima serve` running there?)");
+  }
+  const auto stub = net::RemoteRuns::NewStub(channel);
+  grpc::ClientContext context;
+  if (!token.empty())
+  {
+    context.AddMetadata("proxima-token", token);
+  }
+  std::string summary;
+  const auto reader = stub->Run(&context, message);
+  net::RunReply reply;
+  try
+  {
+    while (reader->Read(&reply))
+    {
+      if (reply.has_ticks())
+      {
+        forEachTick(reply.ticks(), onTick);
+      }
+      else
+      {
+        summary = reply.summary_json();
+      }
+    }
+  }
+  catch (...)
+  {
+    // The client cannot go on (its trace cannot be written): the server stops the run.
+    context.TryCancel();
+    reader->Finish();
+    throw;
+  }
+  const grpc::Status status = reader->Finish();
+  switch (status.error_code())
+  {
+    case grpc::StatusCode::OK:
+      if (summary.empty())
+      {
+        throw std::runtime_error("the server ended the run without its summary");
+      }
+      return summary;
+    case grpc::StatusCode::INVALID_ARGUMENT:
+      // The server's refusal, in a local run's words: the option or the client's file, the defect.
+      throw InputError(status.error_details(), status.error_message());
+    case grpc::StatusCode::UNAUTHENTICATED:
+      throw InputError("--token-file", status.error_message());
+    case grpc::StatusCode::RESOURCE_EXHAUSTED:
+      throw InputError("--mesh", "the run's files are larger than the server takes (" +
+                                   status.error_message() + ")");
+    case grpc::StatusCode::UNAVAILABLE:
+      throw InputError("--server",
+                       "the server at " + server + " went away (" + status.error_message() + ")");
+    default:
+      throw std::runtime_error("the server at " + server +
+                               " failed the run: " + status.error_message());
+  }
+}
+
+} // namespace proxima

@@ -1,0 +1,71 @@
+// Remote scripted runs over gRPC (Documentation/Server.md; paper section 7's split between the
+// haptic server and the application's computer): a server that plays paths in lockstep for its
+// clients, and the client call that sends a run and receives its ticks. The protocol is
+// proxima_remote.proto; gRPC and protobuf stay in this layer's .cpp files.
+#pragma once
+
+#include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Runtime/HapticState.h"
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace proxima
+{
+
+struct RemoteServerSettings
+{
+  /// HOST:PORT; port 0 takes a free one (RemoteRunServer::port says which).
+  std::string listen = "127.0.0.1:50051";
+  /// The token clients must send; empty for none, which only a loopback address may have.
+  std::string token;
+  /// The largest request taken (its mesh, path and texture files together).
+  std::size_t maxRequestBytes = std::size_t{512} << 20;
+};
+
+/// True for 127.0.0.1, localhost and ::1 (with or without brackets), with any port.
+bool isLoopbackAddress(const std::string& hostAndPort);
+
+class RemoteRunServer
+{
+public:
+  /// Starts serving on its own threads. Throws InputError naming --listen for an address that
+  /// cannot be bound, or a non-loopback one without a token.
+  explicit RemoteRunServer(const RemoteServerSettings& settings);
+  ~RemoteRunServer();
+  RemoteRunServer(const RemoteRunServer&) = delete;
+  RemoteRunServer& operator=(const RemoteRunServer&) = delete;
+
+  /// The port bound.
+  int port() const;
+  /// Stops taking runs and ends those in progress (they end with an error).
+  void shutdown();
+  /// Blocks until shutdown.
+  void wait();
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+struct RemoteRunRequest
+{
+  /// As a local run's: `mesh`, `path` and `texture` name the client's files, which are sent whole.
+  /// A scene file is not sent (its files are many): remote runs take a mesh.
+  ScriptedRunSettings settings;
+  double maxTicks = 1e7;
+  /// The trace file the client writes, for the summary's "trace".
+  std::string traceName;
+};
+
+/// Sends `request` to the server at `server` (HOST:PORT) with `token`, hands each tick to `onTick`
+/// as it arrives and returns the summary. Throws InputError: the server's refusal of the run (the
+/// option or the client's file named, as a local run would), "--server" when no server answers,
+/// "--token-file" when the token is refused.
+std::string runRemotely(const std::string& server, const std::string& token,
+                        const RemoteRunRequest& request,
+                        const std::function<void(const HapticState&)>& onTick);
+
+} // namespace proxima
