@@ -2,8 +2,8 @@
 # Install.ExamplesAgainstInstall (issue 19): `cmake --install` this build into a prefix, move the
 # prefix elsewhere (an installation must not remember where it was made), configure Examples/
 # against it with find_package(Proxima), build them, and run them:
-#   - probe_mesh on an STL icosphere (read through the VTK readers' module) and the bundled
-#     press-and-stroke path, against the installed `proxima run` on the same files: the proxy and
+#   - probe_mesh on the shared screw and its probe path (an STL icosphere and the bundled
+#     press-and-stroke path without the shared data), read through the VTK readers' module, against the installed `proxima run` on the same files: the proxy and
 #     force columns must be the same numbers, and the module must be the installed one;
 #   - kernel_only (the kernel alone), also built with nothing but pkg-config's flags;
 #   - haptic_pipeline (the VTK pipeline with the threaded runtime), which checks its own answer;
@@ -29,12 +29,24 @@ cmake -G Ninja -S "$source/Examples" -B "$work/examples" -DCMAKE_BUILD_TYPE=Rele
   > "$work/configure.log"
 cmake --build "$work/examples" --parallel 2 > "$work/build.log"
 
-mesh="$work/icosphere.stl"
-path="$source/Data/Paths/icosphere-4-press-stroke.csv"
-"$prefix/bin/proxima" generate icosphere --subdivisions 4 --radius 0.05 --out "$mesh" > /dev/null
-"$prefix/bin/proxima" run --mesh "$mesh" --path "$path" --radius 0.001 \
+# The shared screw (an STL scan of a real part) and its person-like probe path when the shared
+# data is there (PROXIMA_SHARED_DATA), else an STL icosphere and the bundled path.
+shared="${PROXIMA_SHARED_DATA:-}"
+if [ -n "$shared" ] && [ -f "$shared/meshes/M3x10_screw.stl" ]; then
+  mesh="$shared/meshes/M3x10_screw.stl"
+  path="$shared/paths/screw-probe.csv"
+  scale=0.005
+  radius=0.0005
+else
+  mesh="$work/icosphere.stl"
+  path="$source/Data/Paths/icosphere-4-press-stroke.csv"
+  scale=1
+  radius=0.001
+  "$prefix/bin/proxima" generate icosphere --subdivisions 4 --radius 0.05 --out "$mesh" > /dev/null
+fi
+"$prefix/bin/proxima" run --mesh "$mesh" --scale "$scale" --path "$path" --radius "$radius" \
   --out "$work/proxima-run.csv" > /dev/null
-LD_DEBUG=files "$work/examples/probe_mesh" "$mesh" 1 0.001 "$path" \
+LD_DEBUG=files "$work/examples/probe_mesh" "$mesh" "$scale" "$radius" "$path" \
   > "$work/probe_mesh.csv" 2> "$work/probe_mesh.log"
 
 # The mesh readers' module must come from the moved installation: `log` is LD_DEBUG's.
@@ -94,7 +106,7 @@ ctest --test-dir "$work/examples" --output-on-failure
 package="$prefix/lib/python3/dist-packages"
 if [ -d "$package/proxima" ]; then
   PYTHONPATH="$package" LD_DEBUG=files /usr/bin/python3 "$source/Examples/probe_mesh.py" \
-    "$mesh" 1 0.001 "$path" > "$work/probe_mesh_py.csv" 2> "$work/probe_mesh_py.log"
+    "$mesh" "$scale" "$radius" "$path" > "$work/probe_mesh_py.csv" 2> "$work/probe_mesh_py.log"
   check_module_location probe_mesh.py "$work/probe_mesh_py.log"
   compare_with_run "$work/probe_mesh_py.csv" probe_mesh.py
   # The vtkHaptic* classes in VTK's Python, from the moved installation's own library.
