@@ -58,3 +58,21 @@ def test_tick_budget_and_friction_keywords_reach_the_run(tmp_path):
                             static_friction=0.6, dynamic_friction=0.4)
     assert sticky["static_friction"] == 0.6
     assert sticky["stuck_ticks"] > 0
+
+
+def test_a_scene_file_runs_as_on_the_command_line(tmp_path):
+    source = os.environ.get("PROXIMA_SOURCE_DIR", "")
+    scene = os.path.join(source, "Data", "Scenes", "spheres-on-table.json")
+    path = os.path.join(source, "Data", "Paths", "spheres-on-table-press-stroke.csv")
+    out = tmp_path / "trace.csv"
+    cli_summary = json.loads(proxima_cli("run", "--scene", scene, "--path", path,
+                                         "--radius", "0.002", "--out", str(out)))
+    trace, summary = proxima.run(scene=scene, path=path, radius=0.002)
+    cli_trace = read_cli_trace(out)
+    for column in proxima.TRACE_COLUMNS:
+        if column != "solve_ns":
+            assert numpy.array_equal(trace[column].astype(numpy.float64), cli_trace[column]), column
+    assert len(summary["objects"]) == 3
+    assert set(trace["object"]) >= {0, 1}  # two of the three objects touched, at least
+    cli_summary["trace"] = None
+    assert without_timing(summary) == without_timing(cli_summary)
