@@ -15,7 +15,7 @@
 #include "IO/PathAndTrace/TraceWriter.h"
 #include "IO/Scene/SceneBuilder.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
-#include "Proxy/ProxySolver.h"
+#include "Proxy/ProxyParameters.h"
 #include "Proxy/ProxyStart.h"
 #include "Runtime/DeadlineClock.h"
 #include "Runtime/LockstepRuntime.h"
@@ -245,9 +245,7 @@ int run(const RunOptions& options)
     // The threaded runtime defaults to the budget that keeps a 4 kHz servo fed.
     outcome.budget = tickBudget(shared, TickWorkBudget::servoSafe());
     // The skin the runtime's solver takes: the settings', or the scene's when they give 0.
-    auto solver = std::make_unique<ProxySolver>();
-    solver->setScene(&scene, proxyParameters(shared));
-    outcome.skin = solver->skin();
+    outcome.skin = resolveSkin(proxyParameters(shared), scene.diagonal(), scene.maxAbsCoordinate());
     const auto runStart = std::chrono::steady_clock::now();
     nlohmann::ordered_json realtimeReport;
     runRealtime(

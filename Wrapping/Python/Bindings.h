@@ -18,11 +18,10 @@ namespace proxima::python
 {
 namespace py = pybind11;
 
-/// Settings from keywords named as `proxima run`'s options with '_' for '-' (max_force=...).
-/// Keywords in `ignored` are skipped (the caller's own); any other unknown keyword is a
-/// TypeError. The values are checked (checkScriptedRunSettings) and InputError names the option.
-ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords,
-                                         std::initializer_list<const char*> ignored = {});
+/// Settings from keywords named as `proxima run`'s options with '_' for '-' (max_force=...);
+/// None means the option's default, any other unknown keyword is a TypeError. The values are
+/// checked (checkScriptedRunSettings) and InputError names the option.
+ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords);
 
 /// A finger path from a CSV file name (read as `proxima run --path` reads it; `settings.path`
 /// becomes the name) or from an (N, 4) array of rows t, x, y, z (`settings.path` becomes

@@ -60,19 +60,13 @@ const std::map<std::string, Setter>& setters()
 }
 } // namespace
 
-ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords,
-                                         std::initializer_list<const char*> ignored)
+ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords)
 {
   ScriptedRunSettings settings;
   for (const auto& [key, value] : keywords)
   {
     const std::string name = py::str(key).cast<std::string>();
-    bool skip = false;
-    for (const char* own : ignored)
-    {
-      skip = skip || name == own;
-    }
-    if (skip || value.is_none())
+    if (value.is_none())
     {
       continue; // None: the option's default, as when it is not given
     }
