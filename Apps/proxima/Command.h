@@ -2,10 +2,11 @@
 // add function that registers its options on the parent CLI11 app and returns what to run once
 // the command line is parsed; it runs in its own program, proxima-<command>, which the front
 // (main.cpp) hands the command line to. To add one (say `bench`): write BenchCommand.cpp defining
-// addBenchCommand, declare it below, give it a summary in CommandSummaries.h (kCommandSummaries
+// addBenchCommand, declare it in CommandProgram.h, give it a summary in CommandSummaries.h (kCommandSummaries
 // is what the front knows of it) and a proxima_add_command line in CMakeLists.txt.
 #pragma once
 
+#include "CommandProgram.h"
 #include "CommandSummaries.h"
 
 #include <CLI/CLI.hpp>
@@ -31,14 +32,5 @@ struct Command
   /// input (main prints it and exits with 2); any other exception is an internal error (1).
   std::function<int()> run;
 };
-
-Command addRunCommand(CLI::App& parent);
-Command addViewCommand(CLI::App& parent);
-Command addPathCommand(CLI::App& parent);
-Command addTreeCommand(CLI::App& parent);
-Command addGenerateCommand(CLI::App& parent);
-Command addDevicesCommand(CLI::App& parent);
-Command addServeCommand(CLI::App& parent);
-Command addRemoteCommand(CLI::App& parent);
 
 } // namespace proxima::cli
