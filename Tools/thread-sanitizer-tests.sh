@@ -13,4 +13,4 @@ cmake -G Ninja -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build build-tsan --parallel 2 --target RuntimeTests ThreadedRuntimeTests
 # halt_on_error: the first race fails the test that found it, with both stacks printed.
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \
-  ctest --test-dir build-tsan --output-on-failure -j2 -R '^(ThreadedRuntime|SnapshotChannel|LoopStatistics|ServoForce|Lockstep)'
+  ctest --test-dir build-tsan --output-on-failure -j2 -R '^(ThreadedRuntime|SnapshotChannel|LoopStatistics|ServoForce|Lockstep|PointerDevice)'

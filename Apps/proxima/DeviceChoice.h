@@ -32,6 +32,8 @@ public:
   RunDevice(const DeviceChoiceOptions& options, const FingerPath& path, std::size_t numTicks);
   /// What the servo reads: the device, or its recorder when --record-device is given.
   HapticDevice& device();
+  /// The device itself, under its recorder if any (the view aims a mouse's).
+  HapticDevice& openedDevice() { return *m_device; }
   /// Writes the recording (--record-device); throws InputError if the file cannot be written.
   void finish();
 

@@ -204,6 +204,11 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
 int run(const RunOptions& options)
 {
   const SceneOptions& shared = options.scene;
+  if (options.device.device == "mouse")
+  {
+    throw InputError("--device", "mouse: the mouse aims the finger from a window's pointer, "
+                                 "which run has not (use proxima view --device mouse)");
+  }
   if (options.realtime && !isServoRate(shared.rate))
   {
     throw InputError("--rate",

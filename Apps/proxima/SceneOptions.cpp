@@ -7,7 +7,7 @@
 namespace proxima::cli
 {
 
-void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options)
+void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options, bool pathRequired)
 {
   CLI::Option* mesh = app.add_option("--mesh", options.mesh,
                                      "Mesh file (STL, OBJ, PLY, VTP, OFF, glTF/GLB); or --scene");
@@ -20,7 +20,11 @@ void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options)
     ->check(numberIn(kProxyRadiusRange));
   app.add_option("--stiffness", options.stiffness, "Spring stiffness kp in N/m (default 1000)")
     ->check(numberIn(kStiffnessRange));
-  app.add_option("--path", options.path, "Finger path CSV (t,x,y,z)")->required();
+  CLI::Option* path = app.add_option("--path", options.path, "Finger path CSV (t,x,y,z)");
+  if (pathRequired)
+  {
+    path->required();
+  }
 }
 
 void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)

@@ -18,7 +18,7 @@ using SceneOptions = ScriptedRunSettings;
 /// Registers --mesh, --scene, --radius, --stiffness and --path on `app`. Separate from
 /// addSceneOptionsAfterPath so that a command can put its own options (run's --out, --summary)
 /// where `--help` has always listed them.
-void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options);
+void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options, bool pathRequired = true);
 /// Registers --rate, --max-force, --max-iterations, --skin and the --mesh-only surface options
 /// (--scale, --shading, --feature-angle, friction, viscosity, --texture*), which --scene
 /// excludes.

@@ -2,7 +2,12 @@
 // draws it in a VTK window: the surface, the proxy, the finger's ghost, the spring, the contact
 // planes, the friction cones and the force, with the loops' statistics. `--screenshot PNG`
 // renders offscreen at a chosen moment of the path and exits instead: for a scripted finger
-// (--device sim) from the lockstep run up to that moment, without waiting for it.
+// (--device sim) from the lockstep run up to that moment, without waiting for it. With
+// `--device mouse` the cursor aims the finger (vtkHapticMouseFinger) and no path is needed.
+//
+// The camera first frames the whole scene; then, but for the mouse (whose cursor must stay over
+// the spot it aims at), it follows the proxy, keeping the direction and distance the user gives it
+// with the mouse ('c' switches following on and off).
 #include "Command.h"
 #include "DeviceChoice.h"
 #include "DisplayCheck.h"
@@ -18,9 +23,11 @@
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
+#include "Runtime/PointerDevice.h"
 #include "Runtime/ServoRate.h"
 #include "VTK/LockstepStates.h"
 #include "VTK/ScenePolyData.h"
+#include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticStateRepresentation.h"
 
@@ -89,17 +96,75 @@ struct ViewOptions
   double forceScale = 0.0;
 };
 
-std::string statusText(const HapticState& state, const LoopStatistics& servo)
+// The HUD's lines: what is touched and how hard, the servo's health, and for the mouse how deep
+// the finger is pressed and how to press it.
+std::string statusText(const HapticState& state, const LoopStatistics& servo,
+                       const vtkHapticMouseFinger* mouse)
 {
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "t %.3f s   contacts %d%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   "
-                "missed %llu",
-                state.time, state.numContacts, state.stuck ? "   sticking" : "",
-                state.fading ? "   FADING" : "", norm(state.force), servo.rate,
-                servo.jitterQuantileNanoseconds(0.99) / 1000.0,
-                static_cast<unsigned long long>(servo.missedDeadlines));
+  char touched[64] = "free";
+  if (state.contactObject >= 0)
+  {
+    std::snprintf(touched, sizeof touched, "touching object %d, %d contact%s", state.contactObject,
+                  state.numContacts, state.numContacts == 1 ? "" : "s");
+  }
+  char text[512];
+  int length = std::snprintf(
+    text, sizeof text,
+    "t %.3f s   %s%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   missed %llu",
+    state.time, touched, state.stuck ? "   sticking" : "", state.fading ? "   FADING" : "",
+    norm(state.force), servo.rate, servo.jitterQuantileNanoseconds(0.99) / 1000.0,
+    static_cast<unsigned long long>(servo.missedDeadlines));
+  if (mouse != nullptr && length > 0 && static_cast<std::size_t>(length) < sizeof text)
+  {
+    std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+                  "\nmouse: pressed %.2f mm   wheel or held space presses, Backspace lifts, "
+                  "a drag turns the camera",
+                  mouse->GetDepth() * 1000.0);
+  }
   return text;
+}
+
+// The HUD on a dark, half-transparent box: legible over a light organ and a dark background.
+void styleHud(vtkTextActor* hud)
+{
+  vtkTextProperty* text = hud->GetTextProperty();
+  text->SetFontSize(15);
+  text->SetColor(1.0, 1.0, 1.0);
+  text->SetBackgroundColor(0.05, 0.05, 0.08);
+  text->SetBackgroundOpacity(0.7);
+  text->SetFrame(1);
+  text->SetFrameColor(0.4, 0.4, 0.45);
+  hud->SetPosition(10, 10);
+}
+
+// Moves the camera by the proxy's motion since the last frame, keeping its direction and
+// distance (the user's), eased so that a jittering proxy does not shake the picture.
+void followProxy(vtkCamera* camera, const Vec3& proxy)
+{
+  double focus[3];
+  double position[3];
+  camera->GetFocalPoint(focus);
+  camera->GetPosition(position);
+  constexpr double kEase = 0.25;
+  const Vec3 shift = (proxy - Vec3{focus[0], focus[1], focus[2]}) * kEase;
+  camera->SetFocalPoint(focus[0] + shift.x, focus[1] + shift.y, focus[2] + shift.z);
+  camera->SetPosition(position[0] + shift.x, position[1] + shift.y, position[2] + shift.z);
+}
+
+// Where a mouse's finger starts without a path: above the scene's top (z, the default camera's
+// up-facing side), two radii clear of its bounding box, over its centre.
+FingerPath mouseStartPath(const CollisionScene& scene, double radius)
+{
+  Aabb box;
+  for (const CollisionObject& object : scene.objects)
+  {
+    box.expand(object.mesh.bounds().lower);
+    box.expand(object.mesh.bounds().upper);
+  }
+  const Vec3 centre = (box.lower + box.upper) * 0.5;
+  FingerPath path;
+  path.append(0.0, {centre.x, centre.y, box.upper.z + 2.0 * radius});
+  return path;
 }
 
 // The mean of the contact normals: the side of free space the proxy is on.
@@ -173,8 +238,20 @@ int view(const ViewOptions& options)
   {
     throw InputError("--rate", "must be " + servoRateRange() + " (the servo loop's range)");
   }
+  const bool mouse = options.device.device == "mouse";
+  if (shared.path.empty() && !mouse)
+  {
+    throw InputError("--path", "is required (but with --device mouse, where the cursor aims)");
+  }
+  if (mouse && !options.screenshot.empty())
+  {
+    throw InputError("--screenshot", "the mouse moves the finger only in a window: give "
+                                     "--screenshot a --path, or take the window's picture");
+  }
   LoadedScene loaded = loadScene(shared);
-  const FingerPath fingerPath = readFingerPathFile(shared.path);
+  const FingerPath fingerPath = shared.path.empty()
+                                  ? mouseStartPath(*loaded.scene, shared.radius)
+                                  : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, loaded);
   checkPathStart(shared, loaded, fingerPath);
   std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
@@ -207,7 +284,11 @@ int view(const ViewOptions& options)
   }
   // The finger's device, as for `proxima run --device` (sim plays the path); made before the
   // renderer, so that it outlives the haptic threads.
-  RunDevice device(options.device, shifted, ticksCovering(0.0, pathSeconds + 0.5, shared.rate));
+  // A mouse session has no end: --record-device keeps its first ten minutes.
+  constexpr double kMouseRecordingSeconds = 600.0;
+  RunDevice device(options.device, shifted,
+                   ticksCovering(0.0, mouse ? kMouseRecordingSeconds : pathSeconds + 0.5,
+                                 shared.rate));
   // Last of the checks, so that every refusal of the input above comes first and alike with or
   // without a display; before the first VTK window object.
   const std::string noDisplay = displayProblem();
@@ -251,9 +332,7 @@ int view(const ViewOptions& options)
     options.forceScale > 0.0 ? options.forceScale : 30.0 * shared.radius / shared.maxForce;
   representation->SetForceScale(forceScale);
   vtkNew<vtkTextActor> status;
-  status->GetTextProperty()->SetFontSize(14);
-  status->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
-  status->SetPosition(10, 10);
+  styleHud(status);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(surface);
@@ -302,7 +381,7 @@ int view(const ViewOptions& options)
       haptics->Stop();
     }
     representation->SetState(state);
-    status->SetInput(statusText(state, servo).c_str());
+    status->SetInput(statusText(state, servo, nullptr).c_str());
     aimAtProxy(renderer->GetActiveCamera(), state, distance);
     renderer->ResetCameraClippingRange();
     window->SetOffScreenRendering(1);
@@ -334,17 +413,34 @@ int view(const ViewOptions& options)
     return kExitOk;
   }
 
-  // Interactive: the path plays in real time, looped by restarting when it ends; a timer at
-  // about 60 Hz moves the representation to the latest state.
+  // Interactive: the path plays in real time, looped by restarting when it ends (the mouse's run
+  // has no end); a timer at about 60 Hz moves the representation to the latest state.
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   interactor->SetInteractorStyle(style);
   interactor->SetRenderWindow(window);
   interactor->Initialize();
-  haptics->SetDuration(pathSeconds + 0.5);
+  vtkNew<vtkHapticMouseFinger> mouseFinger;
+  if (mouse)
+  {
+    // A wheel notch presses half a radius; a held space bar five radii a second.
+    mouseFinger->SetDevice(static_cast<PointerDevice*>(&device.openedDevice()));
+    mouseFinger->SetHapticRenderer(haptics);
+    mouseFinger->SetRenderer(renderer);
+    mouseFinger->SetInteractor(interactor);
+    mouseFinger->SetDepthStep(0.5 * shared.radius);
+    mouseFinger->SetPressSpeed(5.0 * shared.radius);
+  }
+  haptics->SetDuration(mouse ? 0.0 : pathSeconds + 0.5);
   if (!haptics->Start())
   {
     throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+  }
+  if (options.viewDistance > 0.0)
+  {
+    // The scene framed, then brought to the distance asked for.
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetDistance(options.viewDistance);
   }
   struct Frame
   {
@@ -352,9 +448,11 @@ int view(const ViewOptions& options)
     vtkHapticStateRepresentation* representation;
     vtkTextActor* status;
     vtkRenderer* renderer;
-    double distance;
-    bool aimed;
-  } frame{haptics, representation, status, renderer, distance, false};
+    vtkHapticMouseFinger* mouse;
+    bool follow;
+    std::chrono::steady_clock::time_point last;
+  } frame{haptics, representation, status, renderer, mouse ? mouseFinger.Get() : nullptr,
+          !mouse, std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
   onTimer->SetClientData(&frame);
   onTimer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
@@ -364,19 +462,35 @@ int view(const ViewOptions& options)
       f->haptics->Stop();
       f->haptics->Start();
     }
+    const auto now = std::chrono::steady_clock::now();
+    if (f->mouse != nullptr)
+    {
+      f->mouse->Update(std::chrono::duration<double>(now - f->last).count());
+    }
+    f->last = now;
     const HapticState state = f->haptics->GetState();
     f->representation->SetState(state);
-    f->status->SetInput(statusText(state, f->haptics->GetServoStatistics()).c_str());
-    if (!f->aimed && state.tick > 0)
+    f->status->SetInput(
+      statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
+    if (f->follow && state.tick > 0)
     {
-      // Once, at the start: close to the proxy; the mouse moves the camera from there.
-      aimAtProxy(f->renderer->GetActiveCamera(), state, f->distance * 4.0);
-      f->aimed = true;
+      followProxy(f->renderer->GetActiveCamera(), state.proxy);
     }
     f->renderer->ResetCameraClippingRange();
     static_cast<vtkRenderWindowInteractor*>(caller)->Render();
   });
   interactor->AddObserver(vtkCommand::TimerEvent, onTimer);
+  vtkNew<vtkCallbackCommand> onKey;
+  onKey->SetClientData(&frame);
+  onKey->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
+    const char* key = static_cast<vtkRenderWindowInteractor*>(caller)->GetKeySym();
+    if (key != nullptr && std::string(key) == "c")
+    {
+      auto* f = static_cast<Frame*>(clientData);
+      f->follow = !f->follow;
+    }
+  });
+  interactor->AddObserver(vtkCommand::KeyPressEvent, onKey);
   interactor->CreateRepeatingTimer(16);
   window->Render();
   interactor->Start();
@@ -390,7 +504,8 @@ Command addViewCommand(CLI::App& parent)
 {
   auto options = std::make_shared<ViewOptions>();
   CLI::App* app = parent.add_subcommand(kViewSummary.name, kViewSummary.description);
-  addSceneOptionsThroughPath(*app, options->scene);
+  // Not required here: --device mouse aims the finger without one (checked in view()).
+  addSceneOptionsThroughPath(*app, options->scene, false);
   app->add_option("--screenshot", options->screenshot,
                   "Render offscreen to this PNG at --at and exit, instead of opening a window");
   app
@@ -403,7 +518,8 @@ Command addViewCommand(CLI::App& parent)
     ->check(CLI::Range(64, 8192));
   app
     ->add_option("--view-distance", options->viewDistance,
-                 "Camera distance from the proxy in metres (default 40 proxy radii)")
+                 "Camera distance from the proxy in metres (default: 40 proxy radii for a "
+                 "--screenshot; the whole scene framed in the window)")
     ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
   app
     ->add_option("--force-scale", options->forceScale,

@@ -5,6 +5,7 @@
 #include "Devices/LibusbTransport.h"
 #include "Devices/ReplayDevice.h"
 #include "Devices/SpaceMouseDevice.h"
+#include "Runtime/PointerDevice.h"
 #include "Runtime/SimulatedDevice.h"
 
 #include <algorithm>
@@ -99,7 +100,7 @@ std::unique_ptr<HapticDevice> openFalcon(const DeviceOptions& options, std::stri
 }
 } // namespace
 
-const char* const kDeviceNames = "sim, replay:FILE, spacemouse, falcon";
+const char* const kDeviceNames = "sim, replay:FILE, mouse, spacemouse, falcon";
 
 bool isSpaceMouse(std::uint16_t vendorId, std::uint16_t productId)
 {
@@ -114,7 +115,7 @@ bool isSpaceMouse(std::uint16_t vendorId, std::uint16_t productId)
 
 bool isDeviceSpec(const std::string& spec)
 {
-  return spec == "sim" || spec == "spacemouse" || spec == "falcon" ||
+  return spec == "sim" || spec == "mouse" || spec == "spacemouse" || spec == "falcon" ||
          (spec.rfind("replay:", 0) == 0 && spec.size() > 7);
 }
 
@@ -138,6 +139,13 @@ std::unique_ptr<HapticDevice> openDevice(const std::string& spec, const DeviceOp
       return nullptr;
     }
     return std::make_unique<ReplayDevice>(std::move(*samples));
+  }
+  if (spec == "mouse")
+  {
+    // The window that owns the pointer aims it (proxima view); it starts where the path does.
+    PointerDeviceSettings settings;
+    settings.start = options.path.empty() ? Vec3{} : options.path.positions.front();
+    return std::make_unique<PointerDevice>(settings);
   }
   if (spec == "spacemouse")
   {

@@ -1,5 +1,6 @@
 // Devices by name, as `proxima run --device` and `proxima devices` take them: sim (the scripted
-// finger path), replay:FILE (a recording), spacemouse (the first 3Dconnexion device hidapi sees),
+// finger path), replay:FILE (a recording), mouse (a pointer in a window aims the finger:
+// PointerDevice), spacemouse (the first 3Dconnexion device hidapi sees),
 // falcon (the first Novint Falcon libusb sees). Opening a real device never throws: a device that
 // is absent, inaccessible or without its firmware gives nullptr and a one-line reason.
 #pragma once

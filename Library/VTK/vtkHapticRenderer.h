@@ -42,6 +42,9 @@ public:
   /// Or a snapshot built elsewhere (a scene file): published at Start, or at once when running.
   /// Used when no vtkHapticScene is set.
   void SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene);
+  /// The newest scene snapshot (published, or waiting for Start); null before any. For the
+  /// thread that sets scenes, as the snapshot is replaced there.
+  std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const { return m_current; }
 
   /// The device (not owned; must outlive the run), or a finger path played by a simulated device
   /// the renderer owns. Set one before Start.
