@@ -110,9 +110,9 @@ std::string statusText(const HapticState& state, const LoopStatistics& servo,
   char text[512];
   int length = std::snprintf(
     text, sizeof text,
-    "t %.3f s   %s%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   missed %llu",
-    state.time, touched, state.stuck ? "   sticking" : "", state.fading ? "   FADING" : "",
-    norm(state.force), servo.rate, servo.jitterQuantileNanoseconds(0.99) / 1000.0,
+    "t %.3f s   %s%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   missed %llu", state.time,
+    touched, state.stuck ? "   sticking" : "", state.fading ? "   FADING" : "", norm(state.force),
+    servo.rate, servo.jitterQuantileNanoseconds(0.99) / 1000.0,
     static_cast<unsigned long long>(servo.missedDeadlines));
   if (mouse != nullptr && length > 0 && static_cast<std::size_t>(length) < sizeof text)
   {
@@ -249,9 +249,8 @@ int view(const ViewOptions& options)
                                      "--screenshot a --path, or take the window's picture");
   }
   LoadedScene loaded = loadScene(shared);
-  const FingerPath fingerPath = shared.path.empty()
-                                  ? mouseStartPath(*loaded.scene, shared.radius)
-                                  : readFingerPathFile(shared.path);
+  const FingerPath fingerPath = shared.path.empty() ? mouseStartPath(*loaded.scene, shared.radius)
+                                                    : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, loaded);
   checkPathStart(shared, loaded, fingerPath);
   std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
@@ -286,9 +285,9 @@ int view(const ViewOptions& options)
   // renderer, so that it outlives the haptic threads.
   // A mouse session has no end: --record-device keeps its first ten minutes.
   constexpr double kMouseRecordingSeconds = 600.0;
-  RunDevice device(options.device, shifted,
-                   ticksCovering(0.0, mouse ? kMouseRecordingSeconds : pathSeconds + 0.5,
-                                 shared.rate));
+  RunDevice device(
+    options.device, shifted,
+    ticksCovering(0.0, mouse ? kMouseRecordingSeconds : pathSeconds + 0.5, shared.rate));
   // Last of the checks, so that every refusal of the input above comes first and alike with or
   // without a display; before the first VTK window object.
   const std::string noDisplay = displayProblem();
@@ -451,8 +450,13 @@ int view(const ViewOptions& options)
     vtkHapticMouseFinger* mouse;
     bool follow;
     std::chrono::steady_clock::time_point last;
-  } frame{haptics, representation, status, renderer, mouse ? mouseFinger.Get() : nullptr,
-          !mouse, std::chrono::steady_clock::now()};
+  } frame{haptics,
+          representation,
+          status,
+          renderer,
+          mouse ? mouseFinger.Get() : nullptr,
+          !mouse,
+          std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
   onTimer->SetClientData(&frame);
   onTimer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
@@ -470,8 +474,7 @@ int view(const ViewOptions& options)
     f->last = now;
     const HapticState state = f->haptics->GetState();
     f->representation->SetState(state);
-    f->status->SetInput(
-      statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
+    f->status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
     if (f->follow && state.tick > 0)
     {
       followProxy(f->renderer->GetActiveCamera(), state.proxy);

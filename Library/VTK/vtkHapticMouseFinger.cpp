@@ -143,7 +143,8 @@ void vtkHapticMouseFinger::Aim()
     double first = 1.0;
     for (const proxima::CollisionObject& object : scene->objects)
     {
-      const proxima::SweepContact contact = object.tree.firstContact(object.mesh, sweep, *m_scratch);
+      const proxima::SweepContact contact =
+        object.tree.firstContact(object.mesh, sweep, *m_scratch);
       if (contact.hit && contact.t < first)
       {
         first = contact.t;
@@ -187,14 +188,10 @@ void vtkHapticMouseFinger::OnEvent(vtkObject* caller, unsigned long event, void*
       break;
     case vtkCommand::LeftButtonPressEvent:
     case vtkCommand::MiddleButtonPressEvent:
-    case vtkCommand::RightButtonPressEvent:
-      self->m_buttonHeld = true;
-      break;
+    case vtkCommand::RightButtonPressEvent: self->m_buttonHeld = true; break;
     case vtkCommand::LeftButtonReleaseEvent:
     case vtkCommand::MiddleButtonReleaseEvent:
-    case vtkCommand::RightButtonReleaseEvent:
-      self->m_buttonHeld = false;
-      break;
+    case vtkCommand::RightButtonReleaseEvent: self->m_buttonHeld = false; break;
     case vtkCommand::KeyPressEvent:
     case vtkCommand::KeyReleaseEvent:
     {
@@ -211,7 +208,6 @@ void vtkHapticMouseFinger::OnEvent(vtkObject* caller, unsigned long event, void*
       }
       break;
     }
-    default:
-      break;
+    default: break;
   }
 }

@@ -38,7 +38,8 @@ class vtkHapticMouseFinger : public vtkObject
 {
 public:
   static vtkHapticMouseFinger* New();
-  vtkTypeMacro(vtkHapticMouseFinger, vtkObject) void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkHapticMouseFinger, vtkObject) void PrintSelf(ostream& os,
+                                                               vtkIndent indent) override;
 
   /// The device to aim (not owned; it must outlive this object's use).
   void SetDevice(proxima::PointerDevice* device) { m_device = device; }
