@@ -510,7 +510,11 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
     plane.shadedNormal = tiltedRimNormal(object.mesh, plane);
   }
   plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
-  plane.stiffnessScale = 1.0;
+  plane.stiffnessScale = material.stiffness;
+  for (const StiffnessRegion& region : material.stiffnessRegions)
+  {
+    plane.stiffnessScale *= stiffnessRegionScale(region, plane.closest.point);
+  }
   plane.staticFriction = material.staticFriction;
   plane.dynamicFriction = material.dynamicFriction;
   plane.viscosity = material.viscosity;
@@ -527,7 +531,7 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
     plane.staticFriction *= friction;
     plane.dynamicFriction *= friction;
     plane.viscosity *= textureScale(material, TextureRole::Viscosity, plane.texCoord);
-    plane.stiffnessScale = textureScale(material, TextureRole::Stiffness, plane.texCoord);
+    plane.stiffnessScale *= textureScale(material, TextureRole::Stiffness, plane.texCoord);
     for (const TextureMap& map : material.textures)
     {
       Vec3 bumped;

@@ -2,6 +2,7 @@
 // bare algorithm of section 2: each effect costs nothing on a surface that does not use it.
 #pragma once
 
+#include "Core/Vec3.h"
 #include "Proxy/TextureImage.h"
 
 #include <memory>
@@ -33,6 +34,30 @@ struct TextureMap
   double amplitude = 0.0;
 };
 
+/// A region of another stiffness under the surface: a solid stiffness map, such as a hard nodule
+/// in soft tissue that a trainee finds by touch. At a contact within `radius` of `center` (metres,
+/// the scene's frame) the servo's kp is scaled by 1 + (scale - 1) s(1 - d / radius), where d is
+/// the contact's distance from the centre and s the smoothstep x^2 (3 - 2x): `scale` at the
+/// centre, 1 at the edge, with no step in the force anywhere as the proxy slides across.
+struct StiffnessRegion
+{
+  Vec3 center;
+  double radius = 0.0;
+  double scale = 1.0;
+};
+
+/// The factor `region` puts on kp at `point`.
+inline double stiffnessRegionScale(const StiffnessRegion& region, const Vec3& point)
+{
+  const double distance = norm(point - region.center);
+  if (!(distance < region.radius))
+  {
+    return 1.0;
+  }
+  const double x = 1.0 - distance / region.radius;
+  return 1.0 + (region.scale - 1.0) * x * x * (3.0 - 2.0 * x);
+}
+
 struct SurfaceMaterial
 {
   /// Force shading (paper 3, 3.1): constraint planes from the point normals interpolated with the
@@ -48,6 +73,11 @@ struct SurfaceMaterial
   double viscosity = 0.0;
   /// Texture maps (paper 4.3); they need the mesh's texture coordinates.
   std::vector<TextureMap> textures;
+  /// The surface's own factor on the servo's kp: a tissue softer (below 1) or harder than the
+  /// scene's stiffness. Stiffness maps and regions scale it further.
+  double stiffness = 1.0;
+  /// Solid stiffness maps: regions under the surface where kp changes (StiffnessRegion).
+  std::vector<StiffnessRegion> stiffnessRegions;
 
   bool hasFriction() const
   {

@@ -61,6 +61,11 @@ inline constexpr ParameterRange kMaxForceRange{0.0, true, 1000.0, " N"};
 // Surface effects (paper section 4).
 inline constexpr ParameterRange kFrictionRange{0.0, false, 10.0, ""};
 inline constexpr ParameterRange kViscosityRange{0.0, false, 1e4, " N s/m"};
+/// A surface's factor on kp, and a stiffness region's at its centre: from a thousandth (a fluid
+/// against bone) to a thousand times the scene's spring.
+inline constexpr ParameterRange kStiffnessScaleRange{0.001, false, 1000.0, ""};
+/// A stiffness region's radius.
+inline constexpr ParameterRange kStiffnessRegionRadiusRange{0.0, true, 1e3, " m"};
 
 /// Empty when mu_s and mu_d go together; else why not. Sliding never holds harder than sticking
 /// (Coulomb; paper section 4.1), so with a static phase (mu_s > 0) mu_d must not be above mu_s.

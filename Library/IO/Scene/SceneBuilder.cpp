@@ -97,6 +97,8 @@ LoadedScene buildScene(const SceneDescription& description, const SphereTreeOpti
     material.staticFriction = object.material.staticFriction;
     material.dynamicFriction = object.material.dynamicFriction;
     material.viscosity = object.material.viscosity;
+    material.stiffness = object.material.stiffness;
+    material.stiffnessRegions = object.material.stiffnessRegions;
     for (const SceneTexture& texture : object.material.textures)
     {
       material.textures.push_back(

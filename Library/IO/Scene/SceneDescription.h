@@ -46,6 +46,9 @@ struct SceneMaterial
   /// N s/m.
   double viscosity = 0.0;
   std::vector<SceneTexture> textures;
+  /// The factor on kp, and the solid stiffness maps (SurfaceMaterial.h), in the scene's frame.
+  double stiffness = 1.0;
+  std::vector<StiffnessRegion> stiffnessRegions;
 };
 
 struct SceneObject

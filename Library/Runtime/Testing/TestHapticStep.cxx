@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -106,6 +107,52 @@ TEST(HapticStepStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
     EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x; // the skin: 1e-12 m
     EXPECT_NEAR(pressed.force.x, 0.0, 1e-12);
   }
+}
+
+TEST(HapticStepStiffnessMap, StiffnessRegionsScaleTheSpringWithASmoothFalloff)
+{
+  // A floor of softness 0.5 with a nodule under it: a region of scale 4 and radius 2 cm centred 5
+  // mm below the floor at the origin. Pressing 3 mm, the force is kp 0.5 (1 + 3 s(1 - d / R))
+  // 3 mm, with d the contact's distance from the centre and s(x) = x^2 (3 - 2x): checked at the
+  // nodule, on its slope and beyond it.
+  CollisionScene scene;
+  TriangleMesh mesh;
+  MeshError error;
+  ASSERT_TRUE(mesh.build(makeGrid(0.2, 16, 0.0), error));
+  SurfaceMaterial material;
+  material.stiffness = 0.5;
+  const StiffnessRegion nodule{{0.0, 0.0, -0.005}, 0.02, 4.0};
+  material.stiffnessRegions.push_back(nodule);
+  scene.addObject(std::move(mesh), SphereTreeOptions{}, material);
+  ProxyParameters parameters;
+  parameters.radius = 0.001;
+  ServoParameters servo;
+  servo.stiffness = 1000.0;
+  servo.maxForce = 100.0;
+  for (const double x : {0.0, 0.01, 0.015, 0.03})
+  {
+    ProxySolver solver;
+    solver.setScene(&scene, parameters);
+    solver.resetProxy({x, 0.0, 0.01});
+    FakeDevice device;
+    ServoForce stage(servo);
+    device.next = DeviceSample{{x, 0.0, -0.002}, true};
+    const HapticState pressed = hapticStep(0, 0.0, solver, device, stage);
+    const double d = std::sqrt(x * x + 0.005 * 0.005);
+    const double u = std::max(0.0, 1.0 - d / 0.02);
+    const double scale = 0.5 * (1.0 + 3.0 * u * u * (3.0 - 2.0 * u));
+    EXPECT_NEAR(pressed.stiffnessScale, scale, 1e-12) << "x " << x;
+    EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x;
+  }
+  // The region's edge: the factor is 1 there and its slope 0, so sliding across never steps the
+  // force.
+  EXPECT_EQ(stiffnessRegionScale(nodule, {0.02, 0.0, -0.005}), 1.0);
+  // A tenth of a micrometre inside: x = 5e-6 of the way in, a factor of 1 + 3 x^2 (3 - 2x).
+  const double x = 1.0 - 0.0199999 / 0.02;
+  EXPECT_NEAR(stiffnessRegionScale(nodule, {0.0199999, 0.0, -0.005}),
+              1.0 + 3.0 * x * x * (3.0 - 2.0 * x), 1e-15);
+  EXPECT_LT(stiffnessRegionScale(nodule, {0.0199999, 0.0, -0.005}), 1.0 + 1e-9);
+  EXPECT_EQ(stiffnessRegionScale(nodule, nodule.center), 4.0);
 }
 
 TEST_F(HapticStepTest, ForceIsStiffnessTimesProxyMinusFinger)

@@ -390,6 +390,39 @@ TEST_F(SceneFile, NegativeViscosity)
                 "objects[0].material.viscosity: must be a number from 0 to 10000 N s/m, got -1");
 }
 
+TEST_F(SceneFile, StiffnessAndStiffnessRegionsAreRead)
+{
+  const proxima::SceneDescription scene = proxima::readSceneFile(
+    oneObject("nodule.json", R"("material": {"stiffness": 0.4, "stiffness_regions": [
+      {"center": [0.01, -0.02, 0.03], "radius": 0.008, "scale": 5}]})"));
+  const proxima::SceneMaterial& material = scene.objects[0].material;
+  EXPECT_EQ(material.stiffness, 0.4);
+  ASSERT_EQ(material.stiffnessRegions.size(), 1u);
+  EXPECT_EQ(material.stiffnessRegions[0].center, (proxima::Vec3{0.01, -0.02, 0.03}));
+  EXPECT_EQ(material.stiffnessRegions[0].radius, 0.008);
+  EXPECT_EQ(material.stiffnessRegions[0].scale, 5.0);
+}
+
+TEST_F(SceneFile, StiffnessRegionDefects)
+{
+  expectRefused(oneObject("k.json", R"("material": {"stiffness": 0})"),
+                "objects[0].material.stiffness: must be a number from 0.001 to 1000, got 0");
+  expectRefused(oneObject("r.json", R"("material": {"stiffness_regions": {"radius": 1}})"),
+                "objects[0].material.stiffness_regions: must be an array of regions "
+                R"([{"center": [x, y, z], "radius": r, "scale": s}], got {"radius":1})");
+  expectRefused(
+    oneObject("c.json", R"("material": {"stiffness_regions": [{"radius": 0.01, "scale": 2}]})"),
+    R"(objects[0].material.stiffness_regions[0]: missing the required key "center")");
+  expectRefused(oneObject("z.json", R"("material": {"stiffness_regions": [
+                             {"center": [0, 0, 0], "radius": 0, "scale": 2}]})"),
+                "objects[0].material.stiffness_regions[0].radius: must be a number above 0 and "
+                "at most 1000 m, got 0");
+  expectRefused(oneObject("s.json", R"("material": {"stiffness_regions": [
+                             {"center": [0, 0], "radius": 0.01, "scale": 2}]})"),
+                "objects[0].material.stiffness_regions[0].center: must be an array of 3 numbers "
+                "[x, y, z] in metres, got [0,0]");
+}
+
 TEST_F(SceneFile, BooleanIsNotANumber)
 {
   expectRefused(oneObject("bool.json", R"("material": {"dynamic_friction": true})"),
