@@ -1,0 +1,43 @@
+#include "Exercises/HeadlessSession.h"
+
+#include "IO/ScriptedRun/ScriptedRun.h"
+#include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Runtime/SimulatedDevice.h"
+
+namespace proxima::trainer
+{
+
+ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& path,
+                                  const std::string& pathName, const std::vector<double>& markTimes)
+{
+  ScriptedRunSettings settings;
+  settings.scene = exercise.scene;
+  settings.radius = exercise.radius;
+  settings.stiffness = exercise.stiffness;
+  settings.rate = exercise.rate;
+  settings.maxForce = exercise.maxForce;
+  settings.path = pathName;
+  const LoadedScene loaded = loadScene(settings);
+  checkRadiusAgainstScene(settings, loaded);
+  checkPathStart(settings, loaded, path);
+  ExerciseScorer scorer(exercise, *loaded.scene);
+  std::size_t nextMark = 0;
+  SimulatedDevice device(path);
+  playScriptedPath(settings, *loaded.scene, path, device, [&](const HapticState& state) {
+    // A mark at t belongs to the last tick at or before t: apply those due before this tick.
+    while (nextMark < markTimes.size() && markTimes[nextMark] < state.time)
+    {
+      scorer.mark();
+      ++nextMark;
+    }
+    scorer.addTick(state);
+  });
+  // Marks at or after the last tick mark its contact.
+  for (; nextMark < markTimes.size(); ++nextMark)
+  {
+    scorer.mark();
+  }
+  return scorer.score();
+}
+
+} // namespace proxima::trainer

@@ -1,0 +1,24 @@
+// A scripted training session without a window: the exercise's scene loaded with its proxy
+// settings, a finger path played through it in lockstep (IO/ScriptedRun, the same steps as the
+// threaded runtime on a virtual clock), the marks applied at their times, and the ticks scored.
+// What `proxima-trainer --exercise E --path P --report R` runs, and its tests.
+#pragma once
+
+#include "Exercises/Exercise.h"
+#include "Exercises/ExerciseScorer.h"
+#include "Runtime/FingerPath.h"
+
+#include <string>
+#include <vector>
+
+namespace proxima::trainer
+{
+
+/// Plays `path` (named `pathName` in messages) through the exercise's scene and scores it; a mark
+/// at time t marks the contact of the last tick at or before t. Throws InputError for a scene,
+/// path or exercise reference that cannot be used.
+ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& path,
+                                  const std::string& pathName,
+                                  const std::vector<double>& markTimes);
+
+} // namespace proxima::trainer

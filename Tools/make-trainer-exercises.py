@@ -1,0 +1,288 @@
+#!/usr/bin/python3
+"""Makes the surgical trainer's shipped liver exercises and their scripted paths.
+
+Reads the shared liver (../shared/data/meshes/VH_M_Liver.glb at scale 0.5, 10 cm across) with
+VTK, picks spots on its upper surface (the side a default camera looks at, +z) and writes:
+
+  Data/Scenes/liver-nodule.json.in         the liver, soft, with a hard nodule 6 mm under one spot
+  Data/Exercises/liver-palpation.json.in   find the nodule and mark it
+  Data/Exercises/liver-targets.json.in     touch three spots in order with 0.5-2 N
+  Data/Exercises/liver-trace.json.in       follow a 4 cm line on the surface within 3 mm
+  Data/Paths/Trainer/*.csv                 for each exercise a path that passes and one that
+                                           fails (and the palpation's mark times)
+
+The .json.in files name the mesh as @PROXIMA_SHARED_DATA@/meshes/VH_M_Liver.glb; the build turns
+them into build/Data/{Scenes,Exercises}/ when the shared meshes are present. Deterministic: run it
+again and nothing changes. Never edit its outputs by hand.
+
+Usage: /usr/bin/python3 Tools/make-trainer-exercises.py [--shared ../shared/data]
+"""
+
+import argparse
+import json
+import math
+import os
+
+import numpy as np
+from vtkmodules.vtkCommonCore import reference
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkFiltersGeometry import vtkCompositeDataGeometryFilter
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkCommonDataModel import vtkCellLocator
+from vtkmodules.vtkIOGeometry import vtkGLTFReader
+import vtkmodules.vtkIOImage  # noqa: F401  (the glTF reader's images)
+
+SCALE = 0.5
+RADIUS = 0.002
+STIFFNESS = 500.0
+TISSUE_STIFFNESS = 0.6  # the liver's factor on kp: 300 N/m
+RATE = 1000.0
+NODULE_DEPTH = 0.006
+NODULE_RADIUS = 0.012
+NODULE_SCALE = 4.0
+FORCE_LIMIT = 5.0
+TOLERANCE = 0.003
+
+
+def read_liver(shared):
+    reader = vtkGLTFReader()
+    reader.SetFileName(os.path.join(shared, "meshes", "VH_M_Liver.glb"))
+    flatten = vtkCompositeDataGeometryFilter()
+    flatten.SetInputConnection(reader.GetOutputPort())
+    scale = vtkTransform()
+    scale.Scale(SCALE, SCALE, SCALE)
+    scaled = vtkTransformPolyDataFilter()
+    scaled.SetTransform(scale)
+    scaled.SetInputConnection(flatten.GetOutputPort())
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(scaled.GetOutputPort())
+    normals.ComputePointNormalsOn()
+    normals.SplittingOff()
+    normals.AutoOrientNormalsOn()
+    normals.Update()
+    return normals.GetOutput()
+
+
+class Surface:
+    """The liver's upper surface, found by rays cast down from above it."""
+
+    def __init__(self, polydata):
+        self.polydata = polydata
+        self.locator = vtkCellLocator()
+        self.locator.SetDataSet(polydata)
+        self.locator.BuildLocator()
+        bounds = polydata.GetBounds()
+        self.bounds = bounds
+        self.top = bounds[5]
+
+    def spot(self, x, y):
+        """The topmost surface point above (x, y), and the surface's outward normal there."""
+        start = [x, y, self.top + 0.05]
+        end = [x, y, self.bounds[4] - 0.05]
+        t = reference(0.0)
+        point = [0.0, 0.0, 0.0]
+        pcoords = [0.0, 0.0, 0.0]
+        sub = reference(0)
+        cell_id = reference(0)
+        hit = self.locator.IntersectWithLine(start, end, 1e-9, t, point, pcoords, sub, cell_id)
+        if not hit:
+            raise SystemExit(f"no surface under ({x}, {y})")
+        cell = self.polydata.GetCell(int(cell_id))
+        ids = cell.GetPointIds()
+        a, b, c = (np.array(self.polydata.GetPoint(ids.GetId(k))) for k in range(3))
+        normal = np.cross(b - a, c - a)
+        normal /= np.linalg.norm(normal)
+        if normal[2] < 0:  # the side rays from above meet faces up
+            normal = -normal
+        return np.array(point), normal
+
+
+class PathWriter:
+    """A finger path of straight moves at given speeds and holds. Only the corners are written:
+    the path file's rows are interpolated linearly (Runtime/FingerPath.h), tick by tick."""
+
+    def __init__(self, start):
+        self.t = 0.0
+        self.rows = [(0.0, np.array(start, dtype=float))]
+
+    @property
+    def position(self):
+        return self.rows[-1][1]
+
+    def move(self, to, speed):
+        to = np.array(to, dtype=float)
+        # Whole milliseconds, so that the corners fall on the 1 kHz ticks.
+        seconds = max(math.ceil(np.linalg.norm(to - self.position) / speed * RATE), 1) / RATE
+        self.t += seconds
+        self.rows.append((self.t, to))
+
+    def hold(self, seconds):
+        self.t += round(seconds * RATE) / RATE
+        self.rows.append((self.t, self.position))
+
+    def write(self, path):
+        with open(path, "w") as out:
+            out.write("t,x,y,z\n")
+            for t, p in self.rows:
+                out.write(f"{t:.3f},{p[0]:.9f},{p[1]:.9f},{p[2]:.9f}\n")
+
+
+def pressed(spot, depth):
+    """The finger `depth` behind the proxy resting on the surface at `spot`: force kp * depth."""
+    point, normal = spot
+    return point + normal * (RADIUS - depth)
+
+
+def above(spot, height):
+    point, normal = spot
+    return point + normal * (RADIUS + height)
+
+
+def press_at(writer, surface, spot, depth, hold, travel_height):
+    """Travels high above the surface, comes down along the normal, presses and lifts."""
+    writer.move([*above(spot, 0.015)[:2], travel_height], 0.1)
+    writer.move(above(spot, 0.015), 0.05)
+    writer.move(above(spot, 0.001), 0.03)
+    writer.move(pressed(spot, depth), 0.01)
+    press_time = writer.t
+    writer.hold(hold)
+    writer.move(above(spot, 0.015), 0.03)
+    return press_time + hold / 2
+
+
+def write_json(path, document):
+    with open(path, "w") as out:
+        out.write(json.dumps(document, indent=2) + "\n")
+
+
+def rounded(v):
+    return [round(float(c), 6) for c in v]
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--shared", default=os.path.join(root, "..", "shared", "data"))
+    args = parser.parse_args()
+
+    surface = Surface(read_liver(args.shared))
+    x0, x1, y0, y1, _, top = surface.bounds
+    travel = top + 0.02
+    start = [(x0 + x1) / 2, (y0 + y1) / 2, travel]
+
+    def at(u, v):
+        """A spot at fractions (u, v) of the liver's x and y extent."""
+        return surface.spot(x0 + (x1 - x0) * u, y0 + (y1 - y0) * v)
+
+    scenes = os.path.join(root, "Data", "Scenes")
+    exercises = os.path.join(root, "Data", "Exercises")
+    paths = os.path.join(root, "Data", "Paths", "Trainer")
+    os.makedirs(exercises, exist_ok=True)
+    os.makedirs(paths, exist_ok=True)
+
+    # The nodule: 6 mm under a spot on the right lobe's upper surface.
+    nodule_spot = at(0.6, 0.55)
+    nodule_center = nodule_spot[0] - nodule_spot[1] * NODULE_DEPTH
+    write_json(os.path.join(scenes, "liver-nodule.json.in"), {
+        "version": 1,
+        "objects": [{
+            "mesh": "@PROXIMA_SHARED_DATA@/meshes/VH_M_Liver.glb",
+            "scale": SCALE,
+            "material": {
+                "stiffness": TISSUE_STIFFNESS,
+                "stiffness_regions": [{"center": rounded(nodule_center),
+                                       "radius": NODULE_RADIUS, "scale": NODULE_SCALE}],
+            },
+        }],
+    })
+    common = {
+        "format": "proxima-exercise",
+        "version": 1,
+        "scene": "../Scenes/liver-nodule.json",
+        "proxy": {"radius": RADIUS, "stiffness": STIFFNESS, "rate": RATE, "max_force": 10},
+        "tissues": [{"object": 0, "name": "liver", "force_limit": FORCE_LIMIT}],
+    }
+
+    # Palpation: press at three spots; the passing path marks the one over the nodule, the failing
+    # one marks a spot 3 cm away.
+    write_json(os.path.join(exercises, "liver-palpation.json.in"), {
+        **common,
+        "name": "Liver palpation: find the hidden nodule",
+        "instructions": "Somewhere under the liver's upper surface is a hard nodule. Press gently "
+                        "over the surface until you feel it push back harder, then mark the spot "
+                        "(the M key).",
+        "tasks": [{"type": "palpation", "object": 0, "region": 0, "pass_distance": 0.01}],
+    })
+    decoys = [at(0.3, 0.55), at(0.45, 0.7)]
+    for name, marked in (("pass", nodule_spot), ("fail", decoys[0])):
+        writer = PathWriter(start)
+        marks = []
+        for spot in (decoys[0], nodule_spot, decoys[1]):
+            middle = press_at(writer, surface, spot, 0.004, 1.0, travel)
+            if spot is marked:
+                marks.append(middle)
+        writer.move(start, 0.1)
+        writer.write(os.path.join(paths, f"liver-palpation-{name}.csv"))
+        with open(os.path.join(paths, f"liver-palpation-{name}-marks.csv"), "w") as out:
+            out.write("t\n" + "".join(f"{t:.3f}\n" for t in marks))
+
+    # Targets: three spots in order, each held for 0.3 s with 0.5-2 N (a 4 mm press on the
+    # liver's 300 N/m is 1.2 N). The failing path skips the second and presses the third at 20 mm
+    # (6 N: above the band, and damage).
+    targets = [("A", at(0.25, 0.5)), ("B", at(0.45, 0.6)), ("C", at(0.75, 0.6))]
+    write_json(os.path.join(exercises, "liver-targets.json.in"), {
+        **common,
+        "name": "Liver targets: touch A, B and C in order",
+        "instructions": "Touch the three marked spots in order, A, B then C, pressing with between "
+                        "0.5 and 2 N for a third of a second on each. Do not press harder than 5 N.",
+        "tasks": [{
+            "type": "targets",
+            "targets": [{"name": n, "center": rounded(s[0]), "radius": 0.005} for n, s in targets],
+            "force": [0.5, 2.0],
+            "hold": 0.3,
+        }],
+    })
+    for name, visits in (("pass", [(0, 0.004), (1, 0.004), (2, 0.004)]),
+                         ("fail", [(0, 0.004), (2, 0.020)])):
+        writer = PathWriter(start)
+        for index, depth in visits:
+            press_at(writer, surface, targets[index][1], depth, 0.6, travel)
+        writer.move(start, 0.1)
+        writer.write(os.path.join(paths, f"liver-targets-{name}.csv"))
+
+    # Trace: a 4 cm line across the upper surface, drawn through surface points 2 mm apart. The
+    # passing path strokes along it pressed 3 mm; the failing one strokes a line 8 mm beside it.
+    line_start, line_end = np.array([0.3, 0.55]), np.array([0.7, 0.55])
+    extent = np.array([x1 - x0, y1 - y0])
+    origin = np.array([x0, y0])
+    length = np.linalg.norm((line_end - line_start) * extent)
+    count = int(length / 0.002) + 1
+    line = [surface.spot(*(origin + (line_start + (line_end - line_start) * k / (count - 1)) *
+                           extent)) for k in range(count)]
+    write_json(os.path.join(exercises, "liver-trace.json.in"), {
+        **common,
+        "name": "Liver trace: follow the line",
+        "instructions": "Follow the drawn line from its left end to its right end, pressing "
+                        "lightly, within 3 mm of it.",
+        "tasks": [{"type": "trace", "line": [rounded(p) for p, _ in line[::5]] +
+                   ([rounded(line[-1][0])] if (count - 1) % 5 else []),
+                   "tolerance": TOLERANCE, "min_coverage": 0.9, "max_off_line": 0.1}],
+    })
+    for name, offset in (("pass", 0.0), ("fail", 0.008)):
+        stroke = [surface.spot(*(origin + (line_start + (line_end - line_start) * k / (count - 1)) *
+                                 extent + np.array([0.0, offset]))) for k in range(count)]
+        writer = PathWriter(start)
+        writer.move([*above(stroke[0], 0.015)[:2], travel], 0.1)
+        writer.move(above(stroke[0], 0.015), 0.05)
+        writer.move(above(stroke[0], 0.001), 0.03)
+        writer.move(pressed(stroke[0], 0.003), 0.01)
+        for spot in stroke[1:]:
+            writer.move(pressed(spot, 0.003), 0.02)
+        writer.move(above(stroke[-1], 0.015), 0.03)
+        writer.move(start, 0.1)
+        writer.write(os.path.join(paths, f"liver-trace-{name}.csv"))
+
+
+if __name__ == "__main__":
+    main()
