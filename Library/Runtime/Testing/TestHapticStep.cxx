@@ -60,6 +60,31 @@ protected:
   FakeDevice device;
 };
 
+// The scene's grid under `material`, and the state of a finger pressed to z = -2 mm at (x, 0)
+// from a proxy dropped onto it (r = 1 mm, kp = 1000 N/m): a 3 mm stretch. `free`, when given, is
+// the state of the tick before, with the finger 5 mm above the floor.
+HapticState pressedAt(const CollisionScene& scene, double x, HapticState* free = nullptr)
+{
+  ProxyParameters parameters;
+  parameters.radius = 0.001;
+  ServoParameters servo;
+  servo.stiffness = 1000.0;
+  servo.maxForce = 100.0;
+  ProxySolver solver;
+  solver.setScene(&scene, parameters);
+  solver.resetProxy({x, 0.0, 0.01});
+  FakeDevice device;
+  ServoForce stage(servo);
+  device.next = DeviceSample{{x, 0.0, 0.005}, true};
+  const HapticState before = hapticStep(0, 0.0, solver, device, stage);
+  if (free != nullptr)
+  {
+    *free = before;
+  }
+  device.next = DeviceSample{{x, 0.0, -0.002}, true};
+  return hapticStep(1, 0.001, solver, device, stage);
+}
+
 TEST(HapticStepStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
 {
   // A grid with texture coordinates u = x / 0.2 + 1/2 and a stiffness map of 1 left of u = 1/2,
@@ -86,23 +111,11 @@ TEST(HapticStepStiffnessMap, StiffnessMapScalesTheSpringAtTheContact)
   MeshError error;
   ASSERT_TRUE(mesh.build(std::move(soup), error));
   scene.addObject(std::move(mesh), SphereTreeOptions{}, material);
-  ProxyParameters parameters;
-  parameters.radius = 0.001;
-  ServoParameters servo;
-  servo.stiffness = 1000.0;
-  servo.maxForce = 100.0;
   for (const double x : {-0.03, 0.03})
   {
-    ProxySolver solver;
-    solver.setScene(&scene, parameters);
-    solver.resetProxy({x, 0.0, 0.01});
-    FakeDevice device;
-    ServoForce stage(servo);
-    device.next = DeviceSample{{x, 0.0, 0.005}, true};
-    const HapticState free = hapticStep(0, 0.0, solver, device, stage);
+    HapticState free;
+    const HapticState pressed = pressedAt(scene, x, &free);
     EXPECT_EQ(norm(free.force), 0.0);
-    device.next = DeviceSample{{x, 0.0, -0.002}, true};
-    const HapticState pressed = hapticStep(1, 0.001, solver, device, stage);
     const double scale = x < 0.0 ? 1.0 : 0.5;
     EXPECT_NEAR(pressed.force.z, 1000.0 * scale * 0.003, 1e-8) << "x " << x; // the skin: 1e-12 m
     EXPECT_NEAR(pressed.force.x, 0.0, 1e-12);
@@ -124,20 +137,9 @@ TEST(HapticStepStiffnessMap, StiffnessRegionsScaleTheSpringWithASmoothFalloff)
   const StiffnessRegion nodule{{0.0, 0.0, -0.005}, 0.02, 4.0};
   material.stiffnessRegions.push_back(nodule);
   scene.addObject(std::move(mesh), SphereTreeOptions{}, material);
-  ProxyParameters parameters;
-  parameters.radius = 0.001;
-  ServoParameters servo;
-  servo.stiffness = 1000.0;
-  servo.maxForce = 100.0;
   for (const double x : {0.0, 0.01, 0.015, 0.03})
   {
-    ProxySolver solver;
-    solver.setScene(&scene, parameters);
-    solver.resetProxy({x, 0.0, 0.01});
-    FakeDevice device;
-    ServoForce stage(servo);
-    device.next = DeviceSample{{x, 0.0, -0.002}, true};
-    const HapticState pressed = hapticStep(0, 0.0, solver, device, stage);
+    const HapticState pressed = pressedAt(scene, x);
     const double d = std::sqrt(x * x + 0.005 * 0.005);
     const double u = std::max(0.0, 1.0 - d / 0.02);
     const double scale = 0.5 * (1.0 + 3.0 * u * u * (3.0 - 2.0 * u));

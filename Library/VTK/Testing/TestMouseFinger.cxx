@@ -28,20 +28,7 @@
 namespace
 {
 using namespace proxima;
-
-bool waitFor(const std::function<bool()>& condition)
-{
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!condition())
-  {
-    if (std::chrono::steady_clock::now() > deadline)
-    {
-      return false;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
+using proxima::vtk::testing::waitFor;
 
 // A 10 cm square floor at z = 0, centred on the origin.
 std::shared_ptr<const CollisionScene> floorScene()

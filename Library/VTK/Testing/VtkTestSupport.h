@@ -1,5 +1,6 @@
 // Helpers of the VTK layer's tests: kernel soups as vtkPolyData (the input a user's pipeline
-// would give), and the straight-line finger paths the image tests press with.
+// would give), the straight-line finger paths the image tests press with, and a bounded wait for
+// what the haptic threads do.
 #pragma once
 
 #include "Geometry/TriangleSoup.h"
@@ -13,10 +14,29 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <chrono>
+#include <functional>
 #include <initializer_list>
+#include <thread>
 
 namespace proxima::vtk::testing
 {
+
+/// Polls `condition` every millisecond until it holds (true) or a generous minute has passed
+/// (false): the threaded tests check what happens, not how fast.
+inline bool waitFor(const std::function<bool()>& condition)
+{
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!condition())
+  {
+    if (std::chrono::steady_clock::now() > deadline)
+    {
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
 
 inline vtkSmartPointer<vtkPolyData> polyDataOf(const TriangleSoup& soup)
 {
