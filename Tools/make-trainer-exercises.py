@@ -8,10 +8,16 @@ VTK, picks spots on its upper surface (the side a default camera looks at, +z) a
   Data/Exercises/liver-palpation.json.in   find the nodule and mark it
   Data/Exercises/liver-targets.json.in     touch three spots in order with 0.5-2 N
   Data/Exercises/liver-trace.json.in       follow a 4 cm line on the surface within 3 mm
+
+and on the shared cranium (cranium_bone_iso075mm.ply, millimetres, 1.5M triangles):
+
+  Data/Scenes/cranium.json.in              the skull, bone as hard as the scene's spring
+  Data/Exercises/cranium-trace.json.in     trace a 4.5 cm craniotomy line on the vertex within
+                                           2 mm, never pressing the bone with more than 6 N
   Data/Paths/Trainer/*.csv                 for each exercise a path that passes and one that
                                            fails (and the palpation's mark times)
 
-The .json.in files name the mesh as @PROXIMA_SHARED_DATA@/meshes/VH_M_Liver.glb; the build turns
+The .json.in files name the meshes as @PROXIMA_SHARED_DATA@/meshes/...; the build turns
 them into build/Data/{Scenes,Exercises}/ when the shared meshes are present. Deterministic: run it
 again and nothing changes. Never edit its outputs by hand.
 
@@ -25,7 +31,7 @@ import os
 
 import numpy as np
 from vtkmodules.vtkCommonCore import reference
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkFiltersGeometry import vtkCompositeDataGeometryFilter
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkCommonTransforms import vtkTransform
@@ -45,23 +51,28 @@ FORCE_LIMIT = 5.0
 TOLERANCE = 0.003
 
 
-def read_liver(shared):
-    reader = vtkGLTFReader()
-    reader.SetFileName(os.path.join(shared, "meshes", "VH_M_Liver.glb"))
-    flatten = vtkCompositeDataGeometryFilter()
-    flatten.SetInputConnection(reader.GetOutputPort())
-    scale = vtkTransform()
-    scale.Scale(SCALE, SCALE, SCALE)
+def read_mesh(path, scale):
+    """The mesh at `path` (glTF or PLY) scaled to metres."""
+    if path.endswith(".glb"):
+        reader = vtkGLTFReader()
+        reader.SetFileName(path)
+        flatten = vtkCompositeDataGeometryFilter()
+        flatten.SetInputConnection(reader.GetOutputPort())
+        source = flatten
+    else:
+        source = vtkPLYReader()
+        source.SetFileName(path)
+    transform = vtkTransform()
+    transform.Scale(scale, scale, scale)
     scaled = vtkTransformPolyDataFilter()
-    scaled.SetTransform(scale)
-    scaled.SetInputConnection(flatten.GetOutputPort())
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(scaled.GetOutputPort())
-    normals.ComputePointNormalsOn()
-    normals.SplittingOff()
-    normals.AutoOrientNormalsOn()
-    normals.Update()
-    return normals.GetOutput()
+    scaled.SetTransform(transform)
+    scaled.SetInputConnection(source.GetOutputPort())
+    scaled.Update()
+    return scaled.GetOutput()
+
+
+def read_liver(shared):
+    return read_mesh(os.path.join(shared, "meshes", "VH_M_Liver.glb"), SCALE)
 
 
 class Surface:
@@ -128,15 +139,15 @@ class PathWriter:
                 out.write(f"{t:.3f},{p[0]:.9f},{p[1]:.9f},{p[2]:.9f}\n")
 
 
-def pressed(spot, depth):
+def pressed(spot, depth, radius=RADIUS):
     """The finger `depth` behind the proxy resting on the surface at `spot`: force kp * depth."""
     point, normal = spot
-    return point + normal * (RADIUS - depth)
+    return point + normal * (radius - depth)
 
 
-def above(spot, height):
+def above(spot, height, radius=RADIUS):
     point, normal = spot
-    return point + normal * (RADIUS + height)
+    return point + normal * (radius + height)
 
 
 def press_at(writer, surface, spot, depth, hold, travel_height):
@@ -149,6 +160,40 @@ def press_at(writer, surface, spot, depth, hold, travel_height):
     writer.hold(hold)
     writer.move(above(spot, 0.015), 0.03)
     return press_time + hold / 2
+
+
+def surface_line(surface, uv_start, uv_end, offset=(0.0, 0.0), spacing=0.002):
+    """Surface spots every `spacing` along the line between fractions `uv_start` and `uv_end` of
+    the surface's x and y extent, shifted by `offset` metres in x and y."""
+    x0, x1, y0, y1, _, _ = surface.bounds
+    extent = np.array([x1 - x0, y1 - y0])
+    origin = np.array([x0, y0])
+    uv_start, uv_end = np.array(uv_start), np.array(uv_end)
+    count = int(np.linalg.norm((uv_end - uv_start) * extent) / spacing) + 1
+    return [surface.spot(*(origin + (uv_start + (uv_end - uv_start) * k / (count - 1)) * extent +
+                           np.array(offset))) for k in range(count)]
+
+
+def stroke_path(start, travel, stroke, depth, radius):
+    """Down onto the first spot, pressed `depth` along every spot of `stroke`, up and back."""
+    writer = PathWriter(start)
+    writer.move([*above(stroke[0], 0.015, radius)[:2], travel], 0.1)
+    writer.move(above(stroke[0], 0.015, radius), 0.05)
+    writer.move(above(stroke[0], 0.001, radius), 0.03)
+    writer.move(pressed(stroke[0], depth, radius), 0.01)
+    for spot in stroke[1:]:
+        writer.move(pressed(spot, depth, radius), 0.02)
+    writer.move(above(stroke[-1], 0.015, radius), 0.03)
+    writer.move(start, 0.1)
+    return writer
+
+
+def line_points(line, every=5):
+    """Every `every`-th point of a surface line and its last, for the exercise file."""
+    points = [rounded(p) for p, _ in line[::every]]
+    if (len(line) - 1) % every:
+        points.append(rounded(line[-1][0]))
+    return points
 
 
 def write_json(path, document):
@@ -253,36 +298,48 @@ def main():
 
     # Trace: a 4 cm line across the upper surface, drawn through surface points 2 mm apart. The
     # passing path strokes along it pressed 3 mm; the failing one strokes a line 8 mm beside it.
-    line_start, line_end = np.array([0.3, 0.55]), np.array([0.7, 0.55])
-    extent = np.array([x1 - x0, y1 - y0])
-    origin = np.array([x0, y0])
-    length = np.linalg.norm((line_end - line_start) * extent)
-    count = int(length / 0.002) + 1
-    line = [surface.spot(*(origin + (line_start + (line_end - line_start) * k / (count - 1)) *
-                           extent)) for k in range(count)]
+    line = surface_line(surface, (0.3, 0.55), (0.7, 0.55))
     write_json(os.path.join(exercises, "liver-trace.json.in"), {
         **common,
         "name": "Liver trace: follow the line",
         "instructions": "Follow the drawn line from its left end to its right end, pressing "
                         "lightly, within 3 mm of it.",
-        "tasks": [{"type": "trace", "line": [rounded(p) for p, _ in line[::5]] +
-                   ([rounded(line[-1][0])] if (count - 1) % 5 else []),
+        "tasks": [{"type": "trace", "line": line_points(line),
                    "tolerance": TOLERANCE, "min_coverage": 0.9, "max_off_line": 0.1}],
     })
     for name, offset in (("pass", 0.0), ("fail", 0.008)):
-        stroke = [surface.spot(*(origin + (line_start + (line_end - line_start) * k / (count - 1)) *
-                                 extent + np.array([0.0, offset]))) for k in range(count)]
-        writer = PathWriter(start)
-        writer.move([*above(stroke[0], 0.015)[:2], travel], 0.1)
-        writer.move(above(stroke[0], 0.015), 0.05)
-        writer.move(above(stroke[0], 0.001), 0.03)
-        writer.move(pressed(stroke[0], 0.003), 0.01)
-        for spot in stroke[1:]:
-            writer.move(pressed(spot, 0.003), 0.02)
-        writer.move(above(stroke[-1], 0.015), 0.03)
-        writer.move(start, 0.1)
-        writer.write(os.path.join(paths, f"liver-trace-{name}.csv"))
+        stroke = surface_line(surface, (0.3, 0.55), (0.7, 0.55), (0.0, offset))
+        stroke_path(start, travel, stroke, 0.003, RADIUS).write(
+            os.path.join(paths, f"liver-trace-{name}.csv"))
 
+    # The cranium: a craniotomy line across the vertex, 1 mm proxy on bone at 1000 N/m. The
+    # passing path strokes it pressed 2 mm (2 N); the failing one presses 8 mm (8 N, over the
+    # bone's 6 N limit) along the same line: covered, but damaged.
+    skull = Surface(read_mesh(os.path.join(args.shared, "meshes",
+                                           "cranium_bone_iso075mm.ply"), 0.001))
+    write_json(os.path.join(scenes, "cranium.json.in"), {
+        "version": 1,
+        "objects": [{"mesh": "@PROXIMA_SHARED_DATA@/meshes/cranium_bone_iso075mm.ply",
+                     "scale": 0.001}],
+    })
+    craniotomy = surface_line(skull, (0.4, 0.5), (0.6, 0.5))
+    write_json(os.path.join(exercises, "cranium-trace.json.in"), {
+        "format": "proxima-exercise",
+        "version": 1,
+        "name": "Cranium: trace the craniotomy line",
+        "instructions": "Trace the planned craniotomy line across the top of the skull from end "
+                        "to end, within 2 mm of it, without pressing the bone harder than 6 N.",
+        "scene": "../Scenes/cranium.json",
+        "proxy": {"radius": 0.001, "stiffness": 1000, "rate": RATE, "max_force": 10},
+        "tissues": [{"object": 0, "name": "bone", "force_limit": 6}],
+        "tasks": [{"type": "trace", "line": line_points(craniotomy), "tolerance": 0.002,
+                   "min_coverage": 0.9, "max_off_line": 0.1}],
+    })
+    _, _, _, _, _, skull_top = skull.bounds
+    skull_start = [*craniotomy[0][0][:2], skull_top + 0.02]
+    for name, depth in (("pass", 0.002), ("fail", 0.008)):
+        stroke_path(skull_start, skull_top + 0.02, craniotomy, depth, 0.001).write(
+            os.path.join(paths, f"cranium-trace-{name}.csv"))
 
 if __name__ == "__main__":
     main()
