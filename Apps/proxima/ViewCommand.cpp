@@ -9,8 +9,11 @@
 // the spot it aims at), it follows the proxy, keeping the direction and distance the user gives it
 // with the mouse ('c' switches following on and off).
 #include "Command.h"
-#include "DeviceChoice.h"
 #include "DisplayCheck.h"
+#include "HudText.h"
+#include "SceneSurfaceActor.h"
+#include "WindowPng.h"
+#include "DeviceChoice.h"
 #include "OutputChecks.h"
 #include "SceneOptions.h"
 #include "Validators.h"
@@ -26,7 +29,6 @@
 #include "Runtime/PointerDevice.h"
 #include "Runtime/ServoRate.h"
 #include "VTK/LockstepStates.h"
-#include "VTK/ScenePolyData.h"
 #include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
 #include "VTK/vtkHapticStateRepresentation.h"
@@ -37,18 +39,11 @@
 #include <vtkCamera.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <cctype>
 #include <chrono>
@@ -122,19 +117,6 @@ std::string statusText(const HapticState& state, const LoopStatistics& servo,
                   mouse->GetDepth() * 1000.0);
   }
   return text;
-}
-
-// The HUD on a dark, half-transparent box: legible over a light organ and a dark background.
-void styleHud(vtkTextActor* hud)
-{
-  vtkTextProperty* text = hud->GetTextProperty();
-  text->SetFontSize(15);
-  text->SetColor(1.0, 1.0, 1.0);
-  text->SetBackgroundColor(0.05, 0.05, 0.08);
-  text->SetBackgroundOpacity(0.7);
-  text->SetFrame(1);
-  text->SetFrameColor(0.4, 0.4, 0.45);
-  hud->SetPosition(10, 10);
 }
 
 // Moves the camera by the proxy's motion since the last frame, keeping its direction and
@@ -290,7 +272,7 @@ int view(const ViewOptions& options)
     ticksCovering(0.0, mouse ? kMouseRecordingSeconds : pathSeconds + 0.5, shared.rate));
   // Last of the checks, so that every refusal of the input above comes first and alike with or
   // without a display; before the first VTK window object.
-  const std::string noDisplay = displayProblem();
+  const std::string noDisplay = shell::displayProblem("proxima view");
   if (!noDisplay.empty())
   {
     throw InputError("proxima view", noDisplay);
@@ -310,28 +292,14 @@ int view(const ViewOptions& options)
   haptics->SetTickBudgetSeconds(budget.seconds);
   haptics->SetTickBudgetIterations(budget.iterations);
 
-  // The surface the proxy touches, drawn from the kernel's own triangles.
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(proxima::vtk::scenePolyData(*scene));
-  // Sharp CAD edges (60 degrees and more) stay sharp in the picture; a scan's noisy bends below
-  // that stay smooth.
-  normals->SetFeatureAngle(60.0);
-  normals->SplittingOn();
-  normals->ConsistencyOn();
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputConnection(normals->GetOutputPort());
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surface;
-  surface->SetMapper(surfaceMapper);
-  surface->GetProperty()->SetColor(0.85, 0.8, 0.72);
-  surface->GetProperty()->SetSpecular(0.2);
+  const vtkSmartPointer<vtkActor> surface = shell::makeSceneSurfaceActor(*scene);
 
   vtkNew<vtkHapticStateRepresentation> representation;
   const double forceScale =
     options.forceScale > 0.0 ? options.forceScale : 30.0 * shared.radius / shared.maxForce;
   representation->SetForceScale(forceScale);
   vtkNew<vtkTextActor> status;
-  styleHud(status);
+  shell::styleHud(status);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(surface);
@@ -384,24 +352,7 @@ int view(const ViewOptions& options)
     aimAtProxy(renderer->GetActiveCamera(), state, distance);
     renderer->ResetCameraClippingRange();
     window->SetOffScreenRendering(1);
-    window->Render();
-    vtkNew<vtkWindowToImageFilter> capture;
-    capture->SetInput(window);
-    capture->SetInputBufferTypeToRGB();
-    capture->ReadFrontBufferOff();
-    // Into memory, then to the file through AtomicOutputFile: VTK's image writers do not
-    // report a full disk.
-    vtkNew<vtkPNGWriter> writer;
-    writer->WriteToMemoryOn();
-    writer->SetInputConnection(capture->GetOutputPort());
-    writer->Write();
-    vtkUnsignedCharArray* png = writer->GetResult();
-    if (writer->GetErrorCode() != 0 || png == nullptr || png->GetNumberOfValues() == 0)
-    {
-      throw OutputError::cannotWrite(options.screenshot, "VTK's PNG writer produced no image");
-    }
-    screenshotFile->write(std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
-                                           static_cast<std::size_t>(png->GetNumberOfValues())));
+    screenshotFile->write(shell::windowPng(window, options.screenshot));
     screenshotFile->commit();
     device.finish();
     char line[512];

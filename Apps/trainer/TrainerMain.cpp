@@ -1,9 +1,13 @@
 // proxima-trainer: the surgical trainer (Documentation/SurgicalTrainer.md). Headless, it plays a
-// scripted finger path through an exercise in lockstep and writes the score report:
+// scripted finger path through an exercise in lockstep and writes the score report, and with
+// --screenshot the picture of the session at --at seconds:
 //   proxima-trainer --exercise E.json --path P.csv [--marks M.csv] --report R.json
+//                   [--screenshot S.png [--at T] [--width W] [--height H]]
 // Exit statuses as the proxima command line's (DESIGN.md section 3): 0 when the session ran
 // (whether or not the trainee passed: the report says), 2 for bad input or an output that cannot
 // be written (one line naming the file and the defect), 1 for an internal error.
+#include "DisplayCheck.h"
+#include "ExerciseScreenshot.h"
 #include "Exercises/ExerciseFile.h"
 #include "Exercises/ExerciseReport.h"
 #include "Exercises/HeadlessSession.h"
@@ -20,7 +24,9 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace
 {
@@ -33,7 +39,38 @@ struct TrainerOptions
   std::string path;
   std::string marks;
   std::string report;
+  std::string screenshot;
+  double at = -1.0;
+  ScreenshotSize size;
 };
+
+// The checks of the screenshot's options that need the path: --at within it, .png, a display.
+void checkScreenshot(const TrainerOptions& options, const FingerPath& path)
+{
+  if (options.screenshot.empty())
+  {
+    if (options.at >= 0.0)
+    {
+      throw InputError("--at", "is the moment of --screenshot, which is not given");
+    }
+    return;
+  }
+  const std::string extension = std::filesystem::path(options.screenshot).extension().string();
+  if (!extension.empty() && extension != ".png" && extension != ".PNG")
+  {
+    throw InputError(options.screenshot, "a screenshot is a PNG file: name it .png");
+  }
+  if (options.at > path.endTime())
+  {
+    throw InputError("--at", std::to_string(options.at) + " s is after the end of the path (" +
+                               std::to_string(path.endTime()) + " s)");
+  }
+  const std::string noDisplay = shell::displayProblem("proxima-trainer");
+  if (!noDisplay.empty())
+  {
+    throw InputError("--screenshot", noDisplay);
+  }
+}
 
 int runHeadless(const TrainerOptions& options)
 {
@@ -41,15 +78,41 @@ int runHeadless(const TrainerOptions& options)
   const FingerPath path = readFingerPathFile(options.path);
   const std::vector<double> marks =
     options.marks.empty() ? std::vector<double>{} : readMarkTimesFile(options.marks);
-  refuseOverlappingFiles({{options.report, "--report"}},
+  checkScreenshot(options, path);
+  refuseOverlappingFiles({{options.report, "--report"}, {options.screenshot, "--screenshot"}},
                          {{options.exercise, "--exercise"},
                           {options.path, "--path"},
                           {options.marks, "--marks"},
                           {exercise.scene, "the exercise's scene"}});
   // The report's temporary before the session: an unwritable report fails before the run.
   AtomicOutputFile report(options.report);
-  const ExerciseScore score = playHeadlessSession(exercise, path, options.path, marks);
+  std::optional<AtomicOutputFile> screenshot;
+  std::string picture;
+  SessionObserver observer;
+  if (!options.screenshot.empty())
+  {
+    screenshot.emplace(options.screenshot);
+    // The first tick at or after --at (default: the path's end, the last tick).
+    const double at = options.at >= 0.0 ? options.at : path.endTime();
+    observer = [&](const HapticState& state, const ExerciseScorer& scorer,
+                   const CollisionScene& scene) {
+      if (picture.empty() && state.time >= at - 1e-9)
+      {
+        picture = exerciseScreenshot(exercise, scene, state, scorer.score(), options.size,
+                                     options.screenshot);
+      }
+    };
+  }
+  const ExerciseScore score = playHeadlessSession(exercise, path, options.path, marks, observer);
   report.write(exerciseReportJson(exercise, score, ReportContext{options.path, options.marks}));
+  if (screenshot)
+  {
+    // Both finished before either is put in place: one failing leaves neither.
+    screenshot->write(picture);
+    screenshot->finish();
+    report.finish();
+    screenshot->commit();
+  }
   report.commit();
   int tasksPassed = 0;
   for (const TaskScore& task : score.tasks)
@@ -80,6 +143,15 @@ int main(int argc, char** argv)
   app.add_option("--marks", options.marks,
                  "The trainee's marks: CSV with the header t, one time in seconds per row");
   app.add_option("--report", options.report, "The score report to write (JSON)")->required();
+  app.add_option("--screenshot", options.screenshot,
+                 "Also render the session at --at offscreen to this PNG (needs a display: "
+                 "xvfb-run -a without one)");
+  app.add_option("--at", options.at, "With --screenshot: seconds into the path (default its end)")
+    ->check(CLI::Range(0.0, 1e9));
+  app.add_option("--width", options.size.width, "Screenshot width in pixels (default 800)")
+    ->check(CLI::Range(64, 8192));
+  app.add_option("--height", options.size.height, "Screenshot height in pixels (default 600)")
+    ->check(CLI::Range(64, 8192));
   try
   {
     app.parse(argc, argv);

@@ -8,7 +8,8 @@ namespace proxima::trainer
 {
 
 ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& path,
-                                  const std::string& pathName, const std::vector<double>& markTimes)
+                                  const std::string& pathName, const std::vector<double>& markTimes,
+                                  const SessionObserver& observer)
 {
   ScriptedRunSettings settings;
   settings.scene = exercise.scene;
@@ -31,6 +32,10 @@ ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& pa
       ++nextMark;
     }
     scorer.addTick(state);
+    if (observer)
+    {
+      observer(state, scorer, *loaded.scene);
+    }
   });
   // Marks at or after the last tick mark its contact.
   for (; nextMark < markTimes.size(); ++nextMark)

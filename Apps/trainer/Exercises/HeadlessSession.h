@@ -8,17 +8,22 @@
 #include "Exercises/ExerciseScorer.h"
 #include "Runtime/FingerPath.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace proxima::trainer
 {
 
+/// Called after each tick is scored, with the scene the session plays in.
+using SessionObserver =
+  std::function<void(const HapticState&, const ExerciseScorer&, const CollisionScene&)>;
+
 /// Plays `path` (named `pathName` in messages) through the exercise's scene and scores it; a mark
 /// at time t marks the contact of the last tick at or before t. Throws InputError for a scene,
 /// path or exercise reference that cannot be used.
 ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& path,
-                                  const std::string& pathName,
-                                  const std::vector<double>& markTimes);
+                                  const std::string& pathName, const std::vector<double>& markTimes,
+                                  const SessionObserver& observer = {});
 
 } // namespace proxima::trainer

@@ -1,17 +1,28 @@
 #!/usr/bin/python3
 """Runs proxima-trainer on one exercise and path and checks its report (a ctest entry).
 
-Usage: check_report.py TRAINER EXERCISE PATH REPORT [--marks M] CHECK...
+Usage: check_report.py TRAINER EXERCISE PATH REPORT [--marks M] [--screenshot S --at T] CHECK...
 A CHECK is KEY=VALUE or KEY<VALUE or KEY>VALUE, KEY a dotted path into the report
 (tasks.0.passed, damage_events.#, peak_force_n); `#` is a list's length; VALUE is JSON
-(true, 3, "liver", null). Fails with every failed check listed.
+(true, 3, "liver", null). With --screenshot, the file must be a PNG of 800 x 600 pixels. Fails
+with every failed check listed.
 """
 
 import json
 import os
 import re
+import struct
 import subprocess
 import sys
+
+
+def png_size(path):
+    """(width, height) from a PNG's IHDR chunk, or None when the file is not a PNG."""
+    with open(path, "rb") as stream:
+        head = stream.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
 
 
 def lookup(report, key):
@@ -29,11 +40,15 @@ def lookup(report, key):
 def main():
     trainer, exercise, path, report_path, *rest = sys.argv[1:]
     command = [trainer, "--exercise", exercise, "--path", path, "--report", report_path]
-    if rest[:1] == ["--marks"]:
-        command += ["--marks", rest[1]]
+    screenshot = None
+    while rest[:1] and rest[0] in ("--marks", "--screenshot", "--at"):
+        command += rest[:2]
+        if rest[0] == "--screenshot":
+            screenshot = rest[1]
         rest = rest[2:]
-    if os.path.exists(report_path):
-        os.remove(report_path)
+    for output in (report_path, screenshot):
+        if output and os.path.exists(output):
+            os.remove(output)
     run = subprocess.run(command, capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit(f"proxima-trainer exited {run.returncode}: {run.stderr.strip()}")
@@ -51,6 +66,11 @@ def main():
         print(f"{'ok  ' if ok else 'FAIL'} {key} {operator} {expected}: {json.dumps(actual)}")
         if not ok:
             failures.append(check)
+    if screenshot:
+        size = png_size(screenshot) if os.path.exists(screenshot) else None
+        print(f"{'ok  ' if size == (800, 600) else 'FAIL'} {screenshot}: {size}")
+        if size != (800, 600):
+            failures.append("screenshot of 800 x 600")
     if failures:
         sys.exit("failed: " + ", ".join(failures))
 

@@ -4,13 +4,13 @@
 
 #include <cstdlib>
 
-namespace proxima::cli
+namespace proxima::shell
 {
 
-std::string displayProblem()
+std::string displayProblem(const std::string& command)
 {
   const std::string howToGetOne =
-    ": run it under a virtual one, as in xvfb-run -a proxima view ... (package xvfb)";
+    ": run it under a virtual one, as in xvfb-run -a " + command + " ... (package xvfb)";
   const char* name = std::getenv("DISPLAY");
   if (name == nullptr || *name == '\0')
   {
@@ -27,4 +27,4 @@ std::string displayProblem()
   return {};
 }
 
-} // namespace proxima::cli
+} // namespace proxima::shell
