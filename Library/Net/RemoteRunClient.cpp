@@ -80,10 +80,23 @@ std::string runRemotely(const std::string& server, const std::string& token,
   arguments.SetMaxSendMessageSize(std::numeric_limits<int>::max());
   const auto channel =
     grpc::CreateCustomChannel(server, grpc::InsecureChannelCredentials(), arguments);
-  if (!channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(10)))
+  // A refused connection (nothing listens there) is known at once: gRPC's channel goes to
+  // TRANSIENT_FAILURE and would retry with backoff until the deadline, so the client stops at the
+  // first failure rather than waiting out the 10 s left for a slow network to connect.
+  const auto deadline = std::chrono::system_clock::now() + std::chrono::seconds(10);
+  for (grpc_connectivity_state state = channel->GetState(true); state != GRPC_CHANNEL_READY;
+       state = channel->GetState(true))
   {
-    throw InputError("--server", "no Proxima server answers at " + server +
-                                   " (is `proxima serve` running there?)");
+    if (state == GRPC_CHANNEL_TRANSIENT_FAILURE || state == GRPC_CHANNEL_SHUTDOWN)
+    {
+      throw InputError("--server", "no Proxima server answers at " + server +
+                                     " (the connection failed: is `proxima serve` running there?)");
+    }
+    if (!channel->WaitForStateChange(state, deadline))
+    {
+      throw InputError("--server", "no Proxima server answers at " + server +
+                                     " within 10 s (is `proxima serve` running there?)");
+    }
   }
   const auto stub = net::RemoteRuns::NewStub(channel);
   grpc::ClientContext context;

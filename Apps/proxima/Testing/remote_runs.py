@@ -17,6 +17,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 import tempfile
 
 build, shared = sys.argv[1], sys.argv[2]
@@ -120,10 +121,16 @@ if right.returncode != 0:
 server.send_signal(signal.SIGTERM)
 server.wait(timeout=30)
 
-# No server there.
+# No server there: refused at the first failed connection, not after the 10 s a slow network gets
+# (8 s allows for a loaded machine; it took the whole 10 s before the client watched the
+# channel's state).
+started = time.monotonic()
 gone = run("remote", "--server", address, "run", *options)
+waited = time.monotonic() - started
 if gone.returncode != 2 or "--server: no Proxima server answers" not in gone.stderr:
     fail(f"no server: status {gone.returncode}, {gone.stderr!r}")
+if waited > 8.0:
+    fail(f"no server: the client waited {waited:.1f} s to say so")
 if leftovers() - before:
     fail(f"the server left its runs' files: {sorted(leftovers() - before)}")
 print("remote runs: the same traces as local runs; bad input, tokens and a missing server "
