@@ -37,7 +37,21 @@ int runCommandProgram(int argc, char** argv, AddCommandFunction addCommand)
   {
     // --help and --version are "errors" with status 0; every real usage error is bad input.
     const int status = app.exit(error);
-    return status == 0 ? kExitOk : kExitBadInput;
+    if (status != 0)
+    {
+      return kExitBadInput;
+    }
+    try
+    {
+      // Help sent to a full disk or /dev/full is lost, not shown: not a success either.
+      finishStandardOutput();
+    }
+    catch (const InputError& lost)
+    {
+      std::cerr << "proxima: " << lost.what() << "\n";
+      return kExitBadInput;
+    }
+    return kExitOk;
   }
 
   try

@@ -80,7 +80,21 @@ int main(int argc, char** argv)
   {
     // --help and --version are "errors" with status 0; every real usage error is bad input.
     const int status = app.exit(error);
-    return status == 0 ? kExitOk : kExitBadInput;
+    if (status != 0)
+    {
+      return kExitBadInput;
+    }
+    // Help sent to a full disk or /dev/full is lost, not shown: not a success either (the front
+    // links no library, so the check of IO/Output/StandardOutput.h is made here by hand).
+    errno = 0;
+    std::cout.flush();
+    if (!std::cout)
+    {
+      std::cerr << "proxima: cannot write to standard output ("
+                << (errno != 0 ? std::strerror(errno) : "a short write") << ")\n";
+      return kExitBadInput;
+    }
+    return kExitOk;
   }
   // Not reached: without a subcommand's name, require_subcommand fails the parse.
   std::cerr << "proxima: no subcommand given (see proxima --help)\n";

@@ -158,7 +158,21 @@ int main(int argc, char** argv)
   }
   catch (const CLI::ParseError& error)
   {
-    return app.exit(error) == 0 ? 0 : 2;
+    if (app.exit(error) != 0)
+    {
+      return 2;
+    }
+    try
+    {
+      // Help lost on a full disk or /dev/full is not a success.
+      finishStandardOutput();
+    }
+    catch (const InputError& lost)
+    {
+      std::cerr << "proxima-trainer: " << lost.what() << "\n";
+      return 2;
+    }
+    return 0;
   }
   try
   {
