@@ -10,6 +10,7 @@
 // with the mouse ('c' switches following on and off).
 #include "Command.h"
 #include "DisplayCheck.h"
+#include "ForcePlot.h"
 #include "HudText.h"
 #include "SceneSurfaceActor.h"
 #include "WindowPng.h"
@@ -162,17 +163,19 @@ Vec3 freeSide(const HapticState& state)
 }
 
 // The state at `at` seconds into `path` (which starts at 0), from a lockstep run of its ticks
-// with the finger read from `device`.
+// with the finger read from `device`; every tick's force goes to `plot`.
 HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& scene,
-                            const FingerPath& path, double at, HapticDevice& device)
+                            const FingerPath& path, double at, HapticDevice& device,
+                            shell::ForcePlot& plot)
 {
   ProxyParameters parameters = proxyParameters(shared);
   tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
   const std::uint64_t ticks = ticksCovering(0.0, at, shared.rate);
   HapticState last;
   vtk::playLockstepStates(scene, parameters, servoParameters(shared), path, shared.rate, device,
-                          [&last, ticks](const HapticState& state) {
+                          [&last, &plot, ticks](const HapticState& state) {
                             last = state;
+                            plot.add(state.time, norm(state.force));
                             return state.tick + 1 < ticks;
                           });
   return last;
@@ -300,11 +303,14 @@ int view(const ViewOptions& options)
   representation->SetForceScale(forceScale);
   vtkNew<vtkTextActor> status;
   shell::styleHud(status);
+  // The last 5 s of force, 0 to the clamp.
+  shell::ForcePlot forcePlot(5.0, shared.maxForce);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(surface);
   representation->AddToRenderer(renderer);
   renderer->AddViewProp(status);
+  forcePlot.addToRenderer(renderer);
   renderer->SetBackground(0.1, 0.12, 0.16);
   renderer->SetBackground2(0.25, 0.28, 0.34);
   renderer->GradientBackgroundOn();
@@ -328,7 +334,7 @@ int view(const ViewOptions& options)
       // A scripted finger needs no real clock: the state at --at comes from the lockstep run
       // (the same steps as the threads, on a virtual clock) in a fraction of --at, and is the
       // same picture every time. As `proxima run`, lockstep takes no budget unless given one.
-      state = lockstepStateAt(shared, *scene, shifted, at, device.device());
+      state = lockstepStateAt(shared, *scene, shifted, at, device.device(), forcePlot);
       servo.rate = shared.rate;
     }
     else
@@ -349,6 +355,11 @@ int view(const ViewOptions& options)
     }
     representation->SetState(state);
     status->SetInput(statusText(state, servo, nullptr).c_str());
+    if (!lockstep)
+    {
+      forcePlot.add(state.time, norm(state.force));
+    }
+    forcePlot.update();
     aimAtProxy(renderer->GetActiveCamera(), state, distance);
     renderer->ResetCameraClippingRange();
     window->SetOffScreenRendering(1);
@@ -399,6 +410,7 @@ int view(const ViewOptions& options)
     vtkTextActor* status;
     vtkRenderer* renderer;
     vtkHapticMouseFinger* mouse;
+    shell::ForcePlot* forcePlot;
     bool follow;
     std::chrono::steady_clock::time_point last;
   } frame{haptics,
@@ -406,6 +418,7 @@ int view(const ViewOptions& options)
           status,
           renderer,
           mouse ? mouseFinger.Get() : nullptr,
+          &forcePlot,
           !mouse,
           std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
@@ -425,6 +438,8 @@ int view(const ViewOptions& options)
     f->last = now;
     const HapticState state = f->haptics->GetState();
     f->representation->SetState(state);
+    f->forcePlot->add(state.time, norm(state.force));
+    f->forcePlot->update();
     f->status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
     if (f->follow && state.tick > 0)
     {

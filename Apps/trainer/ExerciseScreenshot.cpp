@@ -136,7 +136,8 @@ std::string hudText(const Exercise& exercise, const HapticState& state, const Ex
 
 std::string exerciseScreenshot(const Exercise& exercise, const CollisionScene& scene,
                                const HapticState& state, const ExerciseScore& score,
-                               const ScreenshotSize& size, const std::string& path)
+                               shell::ForcePlot& forcePlot, const ScreenshotSize& size,
+                               const std::string& path)
 {
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(shell::makeSceneSurfaceActor(scene));
@@ -193,6 +194,8 @@ std::string exerciseScreenshot(const Exercise& exercise, const CollisionScene& s
   shell::styleHud(hud);
   hud->SetInput(hudText(exercise, state, score).c_str());
   renderer->AddViewProp(hud);
+  forcePlot.update();
+  forcePlot.addToRenderer(renderer);
   renderer->SetBackground(0.1, 0.12, 0.16);
   renderer->SetBackground2(0.25, 0.28, 0.34);
   renderer->GradientBackgroundOn();

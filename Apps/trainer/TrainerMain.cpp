@@ -26,6 +26,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 namespace
@@ -94,12 +95,18 @@ int runHeadless(const TrainerOptions& options)
     screenshot.emplace(options.screenshot);
     // The first tick at or after --at (default: the path's end, the last tick).
     const double at = options.at >= 0.0 ? options.at : path.endTime();
-    observer = [&](const HapticState& state, const ExerciseScorer& scorer,
-                   const CollisionScene& scene) {
-      if (picture.empty() && state.time >= at - 1e-9)
+    observer = [&, forcePlot = std::make_shared<shell::ForcePlot>(5.0, exercise.maxForce)](
+                 const HapticState& state, const ExerciseScorer& scorer,
+                 const CollisionScene& scene) {
+      if (!picture.empty())
       {
-        picture = exerciseScreenshot(exercise, scene, state, scorer.score(), options.size,
-                                     options.screenshot);
+        return;
+      }
+      forcePlot->add(state.time, norm(state.force));
+      if (state.time >= at - 1e-9)
+      {
+        picture = exerciseScreenshot(exercise, scene, state, scorer.score(), *forcePlot,
+                                     options.size, options.screenshot);
       }
     };
   }
