@@ -25,6 +25,8 @@ packages=(
   libhidapi-dev libusb-1.0-0-dev umockdev libumockdev-dev
   # tests, benchmarks, offscreen rendering and plots
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib
+  # the window tests: real X mouse and key events sent to proxima view under Xvfb
+  xdotool
   # libFuzzer targets (Tools/fuzz-smoke.sh): clang with its fuzzer and sanitizer runtimes
   clang-14 libclang-rt-14-dev
   # the format check of CI (Tools/check-format.sh, .clang-format)

@@ -51,6 +51,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -132,6 +133,32 @@ void followProxy(vtkCamera* camera, const Vec3& proxy)
   const Vec3 shift = (proxy - Vec3{focus[0], focus[1], focus[2]}) * kEase;
   camera->SetFocalPoint(focus[0] + shift.x, focus[1] + shift.y, focus[2] + shift.z);
   camera->SetPosition(position[0] + shift.x, position[1] + shift.y, position[2] + shift.z);
+}
+
+// The window's picture as proxima-view-N.png in the current folder, N the first number not
+// taken; one line says where it went, or why it did not (the session goes on either way).
+void saveWindowPicture(vtkRenderWindow* window)
+{
+  std::string name;
+  for (int n = 1; n < 100000; ++n)
+  {
+    name = "proxima-view-" + std::to_string(n) + ".png";
+    if (!std::filesystem::exists(name))
+    {
+      break;
+    }
+  }
+  try
+  {
+    AtomicOutputFile file(name);
+    file.write(shell::windowPng(window, name));
+    file.commit();
+    std::cout << "proxima view: saved the window's picture to " << name << std::endl;
+  }
+  catch (const InputError& error)
+  {
+    std::cerr << "proxima: " << error.what() << std::endl;
+  }
 }
 
 // Where a mouse's finger starts without a path: above the scene's top (z, the default camera's
@@ -452,19 +479,31 @@ int view(const ViewOptions& options)
   vtkNew<vtkCallbackCommand> onKey;
   onKey->SetClientData(&frame);
   onKey->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
-    const char* key = static_cast<vtkRenderWindowInteractor*>(caller)->GetKeySym();
+    auto* keys = static_cast<vtkRenderWindowInteractor*>(caller);
+    const char* key = keys->GetKeySym();
+    auto* f = static_cast<Frame*>(clientData);
     if (key != nullptr && std::string(key) == "c")
     {
-      auto* f = static_cast<Frame*>(clientData);
       f->follow = !f->follow;
+    }
+    if (key != nullptr && (std::string(key) == "i" || std::string(key) == "Print"))
+    {
+      saveWindowPicture(keys->GetRenderWindow());
     }
   });
   interactor->AddObserver(vtkCommand::KeyPressEvent, onKey);
   interactor->CreateRepeatingTimer(16);
   window->Render();
   interactor->Start();
+  // Closed (q, e or the window's close): the last state in one line, as a screenshot prints its.
+  const HapticState last = haptics->GetState();
   haptics->Stop();
   device.finish();
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "proxima view: closed at t = %.4f s, %d contacts, force %.4f N\n", last.time,
+                last.numContacts, norm(last.force));
+  writeStandardOutput(line);
   return kExitOk;
 }
 } // namespace
