@@ -95,7 +95,10 @@ int runHeadless(const TrainerOptions& options)
     screenshot.emplace(options.screenshot);
     // The first tick at or after --at (default: the path's end, the last tick).
     const double at = options.at >= 0.0 ? options.at : path.endTime();
-    observer = [&, forcePlot = std::make_shared<shell::ForcePlot>(5.0, exercise.maxForce)](
+    // `at` by value: it ends with this block, the observer runs after it (ASan found it read
+    // out of scope); the rest outlives the session.
+    observer = [&exercise, &options, &picture, at,
+                forcePlot = std::make_shared<shell::ForcePlot>(5.0, exercise.maxForce)](
                  const HapticState& state, const ExerciseScorer& scorer,
                  const CollisionScene& scene) {
       if (!picture.empty())
