@@ -5,6 +5,7 @@
 #include "Runtime/HapticStep.h"
 #include "Runtime/ServoRate.h"
 #include "Runtime/SnapshotChannel.h"
+#include "Runtime/StateStream.h"
 
 #include <sys/prctl.h>
 
@@ -48,6 +49,10 @@ struct ThreadedRuntime::Impl
       settings.proxyRate = settings.servoRate;
     }
     records.resize(settings.recordTicks);
+    if (settings.streamCapacity > 0)
+    {
+      stream = std::make_unique<StateStream<HapticState>>(settings.streamCapacity);
+    }
   }
 
   void servoLoop(Nanoseconds start);
@@ -91,6 +96,8 @@ struct ThreadedRuntime::Impl
   LoopStatisticsRecorder proxyStatistics;
   std::vector<HapticState> records;
   std::size_t recordCount = 0;
+  /// Servo thread to one reader: every tick's state (RuntimeSettings::streamCapacity).
+  std::unique_ptr<StateStream<HapticState>> stream;
 
   std::thread servoThread;
   std::thread proxyThread;
@@ -237,6 +244,10 @@ void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
     force.step(input, snapshot);
     device.writeForce(snapshot.force, time);
     state.write(snapshot);
+    if (stream)
+    {
+      stream->push(snapshot);
+    }
     clock.workDone();
   }
 }
@@ -415,6 +426,16 @@ std::vector<HapticState> ThreadedRuntime::records() const
   return std::vector<HapticState>(m_impl->records.begin(),
                                   m_impl->records.begin() +
                                     static_cast<std::ptrdiff_t>(m_impl->recordCount));
+}
+
+std::size_t ThreadedRuntime::drainStates(std::vector<HapticState>& out)
+{
+  return m_impl->stream ? m_impl->stream->drain(out) : 0;
+}
+
+std::uint64_t ThreadedRuntime::droppedStates() const
+{
+  return m_impl->stream ? m_impl->stream->dropped() : 0;
 }
 
 void ThreadedRuntime::injectProxyStall(double seconds)

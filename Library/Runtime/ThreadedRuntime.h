@@ -42,6 +42,11 @@ struct RuntimeSettings
   /// force the lockstep runner would give it, for comparing a threaded run with a lockstep one;
   /// 0 keeps none.
   std::size_t recordTicks = 0;
+  /// Stream every servo tick's published state to one reader (drainStates), through a ring of
+  /// this many states (preallocated; StateStream.h): a live scorer or recorder sees every tick
+  /// as long as it drains within capacity / servoRate seconds, and the states it was too slow
+  /// for are dropped and counted (droppedStates), never waited for. 0 streams nothing.
+  std::size_t streamCapacity = 0;
   /// The run ends by itself when the servo clock reaches this many seconds (finished() turns
   /// true); 0 runs until stop().
   double duration = 0.0;
@@ -104,6 +109,12 @@ public:
   std::string servoScheduling() const;
   /// The recorded ticks (RuntimeSettings::recordTicks), after stop().
   std::vector<HapticState> records() const;
+  /// Appends the servo ticks' states published since the last call to `out`, in tick order
+  /// (RuntimeSettings::streamCapacity; none when it is 0). One reader thread; while running or
+  /// after stop(). Returns how many were appended.
+  std::size_t drainStates(std::vector<HapticState>& out);
+  /// States the stream dropped because its reader was a whole ring behind.
+  std::uint64_t droppedStates() const;
 
   /// Fault injection for tests and demonstrations: the proxy loop sleeps `seconds` at its next
   /// tick, as if it had stalled, so the servo's watchdog fades the force.

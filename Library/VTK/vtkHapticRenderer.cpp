@@ -151,6 +151,7 @@ bool vtkHapticRenderer::Start()
   settings.proxyRate = this->ProxyRate;
   settings.realtimeScheduling = this->RealtimeScheduling != 0;
   settings.duration = this->Duration;
+  settings.streamCapacity = static_cast<std::size_t>(this->StateStreamCapacity);
   settings.tickBudget =
     proxima::TickWorkBudget{this->TickBudgetSeconds, this->TickBudgetIterations};
   m_proxyLoopRate = settings.proxyRate > 0.0 ? settings.proxyRate : settings.servoRate;
@@ -251,6 +252,16 @@ vtkTypeUInt64 vtkHapticRenderer::GetLiveSceneVersion() const
   return m_runtime ? m_runtime->liveSceneVersion() : 0;
 }
 
+std::size_t vtkHapticRenderer::DrainStates(std::vector<proxima::HapticState>& out)
+{
+  return m_runtime ? m_runtime->drainStates(out) : 0;
+}
+
+vtkTypeUInt64 vtkHapticRenderer::GetDroppedStates() const
+{
+  return m_runtime ? m_runtime->droppedStates() : 0;
+}
+
 proxima::LoopStatistics vtkHapticRenderer::GetServoStatistics() const
 {
   return m_runtime ? m_runtime->servoStatistics() : proxima::LoopStatistics{};
@@ -272,6 +283,7 @@ void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Skin: " << this->Skin << " (0: from the scene)\n";
   os << indent << "TickBudgetSeconds: " << this->TickBudgetSeconds
      << ", TickBudgetIterations: " << this->TickBudgetIterations << " (0 and 0: none)\n";
+  os << indent << "StateStreamCapacity: " << this->StateStreamCapacity << "\n";
   os << indent << "ServoRate: " << this->ServoRate << "\n";
   os << indent << "ProxyRate: " << this->ProxyRate << "\n";
   os << indent << "RealtimeScheduling: " << (this->RealtimeScheduling ? "On" : "Off") << "\n";

@@ -15,9 +15,11 @@
 
 #include <vtkObject.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkHapticScene;
 
@@ -116,6 +118,14 @@ public:
   vtkGetMacro(Duration, double);
   ///@}
 
+  ///@{
+  /// Stream every servo tick's state to the render thread (RuntimeSettings::streamCapacity):
+  /// DrainStates hands over those published since its last call, for a live scorer that must
+  /// see every tick rather than the latest at each frame. Default 0: no stream.
+  vtkSetClampMacro(StateStreamCapacity, vtkIdType, 0, 10000000);
+  vtkGetMacro(StateStreamCapacity, vtkIdType);
+  ///@}
+
   /// Where the proxy starts (in free space). Default: the device's first sample.
   void SetProxyStart(double x, double y, double z);
 
@@ -149,6 +159,11 @@ public:
   /// The runtime's version of the scene the proxy loop uses (0 before the first is live).
   vtkTypeUInt64 GetLiveSceneVersion() const;
   proxima::LoopStatistics GetServoStatistics() const;
+  /// Appends the ticks' states streamed since the last call (SetStateStreamCapacity) to `out`,
+  /// in tick order; one reader thread. Returns how many.
+  std::size_t DrainStates(std::vector<proxima::HapticState>& out);
+  /// Streamed states dropped because DrainStates was called too seldom.
+  vtkTypeUInt64 GetDroppedStates() const;
   proxima::LoopStatistics GetProxyStatistics() const;
   /// The runtime itself (null before Start), for what this class does not forward.
   proxima::ThreadedRuntime* GetRuntime() { return m_runtime.get(); }
@@ -158,6 +173,7 @@ protected:
   ~vtkHapticRenderer() override;
 
   vtkHapticScene* Scene = nullptr;
+  vtkIdType StateStreamCapacity = 0;
   double ProxyRadius = 0.001;
   double Stiffness = 1000.0;
   double MaxForce = 10.0;

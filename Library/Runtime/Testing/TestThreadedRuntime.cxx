@@ -166,6 +166,75 @@ TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
   EXPECT_GE(servo.ticks + servo.missedDeadlines + 2, ticks);
 }
 
+TEST(ThreadedRuntime, StreamsEveryServoTickToAReaderWhileRunning)
+{
+  constexpr double kRate = 2000.0;
+  const auto scene = makeSharedScene(makeIcosphere(4, 0.05));
+  const FingerPath path = pressAndStroke(kRate);
+  SimulatedDevice device(path);
+  RuntimeSettings settings = quietSettings(kRate);
+  settings.duration = path.endTime();
+  // Room for the whole run, so that a reader slowed down by a sanitizer still drops nothing.
+  settings.streamCapacity = ticksCovering(path.startTime(), path.endTime(), kRate) + 64;
+  ThreadedRuntime runtime(device, servoParameters(), settings);
+  runtime.publishScene(scene, proxyParameters(), path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  // Drained while the loops run, as a window's timer does, and once more after they stop.
+  std::vector<HapticState> streamed;
+  while (!runtime.finished())
+  {
+    runtime.drainStates(streamed);
+    std::this_thread::sleep_for(5ms);
+  }
+  runtime.stop();
+  runtime.drainStates(streamed);
+
+  ASSERT_FALSE(streamed.empty());
+  EXPECT_EQ(runtime.droppedStates(), 0u);
+  // One state per servo tick, in order: the servo's own count, and tick numbers that only rise
+  // (a late servo skips the ticks it missed).
+  EXPECT_EQ(streamed.size(), runtime.servoStatistics().ticks);
+  std::uint64_t contactTicks = 0;
+  for (std::size_t i = 1; i < streamed.size(); ++i)
+  {
+    ASSERT_GT(streamed[i].tick, streamed[i - 1].tick);
+    contactTicks += streamed[i].numContacts > 0 ? 1 : 0;
+  }
+  EXPECT_GT(contactTicks, 100u);
+  // The last streamed state is the one the runtime published last.
+  const HapticState latest = runtime.latestState();
+  EXPECT_EQ(streamed.back().tick, latest.tick);
+  EXPECT_TRUE(sameBits(streamed.back().force, latest.force));
+  EXPECT_TRUE(sameBits(streamed.back().proxy, latest.proxy));
+}
+
+TEST(ThreadedRuntime, AStateStreamNobodyDrainsDropsAndCountsWithoutStallingTheServo)
+{
+  constexpr double kRate = 2000.0;
+  const auto scene = makeSharedScene(makeIcosphere(3, 0.05));
+  const FingerPath path = pressAndStroke(kRate);
+  SimulatedDevice device(path);
+  RuntimeSettings settings = quietSettings(kRate);
+  settings.duration = 0.2;
+  settings.streamCapacity = 16;
+  ThreadedRuntime runtime(device, servoParameters(), settings);
+  runtime.publishScene(scene, proxyParameters(), path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(waitFor([&] { return runtime.finished(); }, 60s));
+  runtime.stop();
+  std::vector<HapticState> streamed;
+  EXPECT_EQ(runtime.drainStates(streamed), 16u);
+  // The ring kept the first 16 ticks; the servo went on and counted every other tick dropped.
+  EXPECT_EQ(streamed.size() + runtime.droppedStates(), runtime.servoStatistics().ticks);
+  EXPECT_GT(runtime.droppedStates(), 0u);
+  for (std::size_t i = 1; i < streamed.size(); ++i)
+  {
+    EXPECT_GT(streamed[i].tick, streamed[i - 1].tick);
+  }
+}
+
 TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
 {
   const auto scene = makeSharedScene(makeGrid(0.2, 4, 0.0));
