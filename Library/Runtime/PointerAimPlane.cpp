@@ -18,9 +18,16 @@ Vec3 PointerAimPlane::aim(const Vec3& rayOrigin, const Vec3& rayDirection,
   {
     m_anchor = proxy;
   }
+  else if (hover != nullptr)
+  {
+    // Free, pressed in or not: the surface under the cursor. It depends on the surface only, so
+    // a press does not run away, and a finger that slid off into free space while pressed goes
+    // back into what the cursor points at.
+    m_anchor = *hover;
+  }
   else if (m_depth == 0.0 || !m_anchored)
   {
-    m_anchor = hover != nullptr ? *hover : proxy;
+    m_anchor = proxy;
   }
   m_anchored = true;
   Vec3 onPlane = m_anchor;

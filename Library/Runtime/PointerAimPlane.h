@@ -5,11 +5,13 @@
 // Where the plane goes through:
 // - the proxy, while it touches something: the depth is then how far the finger is pressed behind
 //   the surface under it;
-// - not pressed in (depth 0) and free: the point where the proxy would first touch the surface
-//   under the cursor (the hover point, when the caller found one), so that the finger glides over
-//   the surface at arm's length and a press goes into it; over empty background, the proxy;
-// - pressed into free space: where it last was. A plane through a free proxy, which is where the
-//   finger is, would move `depth` further away at every aim.
+// - free, over a surface: the point where the proxy would first touch the surface under the
+//   cursor (the hover point, when the caller found one), so that the finger glides over the
+//   surface at arm's length and a press goes into it, also after the pressed finger slid off
+//   into free space (the hover point depends on the surface only, not on the proxy);
+// - free over empty background: the proxy when not pressed in; pressed in, where it last was. A
+//   plane through a free proxy, which is where the finger is, would move `depth` further away at
+//   every aim.
 #pragma once
 
 #include "Core/Vec3.h"

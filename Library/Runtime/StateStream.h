@@ -21,7 +21,9 @@ class StateStream
 
 public:
   /// Holds up to `capacity` states not yet drained (at least 1).
-  explicit StateStream(std::size_t capacity) : m_slots(capacity > 0 ? capacity + 1 : 2) {}
+  explicit StateStream(std::size_t capacity)
+    : m_slots(capacity > 0 ? capacity + 1 : 2)
+  {}
 
   /// The producer's side (one thread): false when the ring is full and `value` was dropped.
   bool push(const T& value)

@@ -35,9 +35,11 @@ void vtkHapticRenderer::SetCollisionScene(std::shared_ptr<const proxima::Collisi
 
 void vtkHapticRenderer::SetDevice(proxima::HapticDevice* device)
 {
-  if (m_runtime)
+  // A stopped runtime no longer reads its device (the next Start builds a new one): a window's
+  // device menu switches devices between Stop and Start.
+  if (this->IsRunning())
   {
-    vtkErrorMacro("The device cannot change while the runtime exists; set it before Start.");
+    vtkErrorMacro("The device cannot change while the loops run; Stop first.");
     return;
   }
   m_ownedDevice.reset();
@@ -47,9 +49,9 @@ void vtkHapticRenderer::SetDevice(proxima::HapticDevice* device)
 
 void vtkHapticRenderer::SetFingerPath(const proxima::FingerPath& path)
 {
-  if (m_runtime)
+  if (this->IsRunning())
   {
-    vtkErrorMacro("The finger path cannot change while the runtime exists; set it before Start.");
+    vtkErrorMacro("The finger path cannot change while the loops run; Stop first.");
     return;
   }
   if (path.empty())

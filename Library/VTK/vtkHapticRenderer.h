@@ -49,7 +49,8 @@ public:
   std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const { return m_current; }
 
   /// The device (not owned; must outlive the run), or a finger path played by a simulated device
-  /// the renderer owns. Set one before Start.
+  /// the renderer owns. Set one before Start, or between Stop and the next Start (a device
+  /// change: the next Start builds a new runtime on it).
   void SetDevice(proxima::HapticDevice* device);
   void SetFingerPath(const proxima::FingerPath& path);
   /// The same, a sample at a time (time in seconds, never going back; position in metres): the

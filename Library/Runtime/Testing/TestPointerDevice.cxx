@@ -155,6 +155,22 @@ TEST(PointerAimPlane, PressedIntoFreeSpaceThePlaneStaysPut)
   expectNear(aim, {0.0, 0.0, 0.185}, 1e-15);
 }
 
+TEST(PointerAimPlane, PressedAndSlidOffIntoFreeSpaceAPressGoesBackIntoTheSurfaceUnderTheCursor)
+{
+  // A pressed finger whose proxy slid off an edge is free with its plane in mid-air; once the
+  // cursor's ray meets a surface again, the press goes `depth` behind that hover point.
+  PointerAimPlane plane;
+  plane.setDepth(0.01);
+  plane.aim(kEye, Vec3{0.0, 0.0, -1.0}, kView, {0.0, 0.0, 0.3}, false);
+  const Vec3 hover{0.0, 0.0, 0.05};
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3 aim = plane.aim(kEye, Vec3{0.0, 0.0, -1.0}, kView, {0.0, 0.0, 0.3}, false, &hover);
+    expectNear(aim, {0.0, 0.0, 0.04}, 1e-15);
+    EXPECT_EQ(plane.anchor(), hover);
+  }
+}
+
 TEST(PointerAimPlane, ARayAlongThePlaneAimsAtItsPoint)
 {
   PointerAimPlane plane;
