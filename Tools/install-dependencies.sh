@@ -11,6 +11,8 @@ packages=(
   cmake ninja-build g++ pkg-config git ccache
   # mesh readers, the haptic pipeline and its rendering
   libvtk9-dev
+  # the applications' Qt windows: VTK's Qt widget, with Qt 5 (qtbase5-dev) and QTest
+  libvtk9-qt-dev
   # the viewer's check for a display before VTK opens its X window
   libx11-dev
   # OFF files and mesh preparation

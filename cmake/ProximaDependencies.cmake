@@ -23,6 +23,12 @@ endif()
 if(PROXIMA_BUILD_APPS)
   list(APPEND _vtkComponents IOImage RenderingOpenGL2 InteractionStyle RenderingFreeType)
 endif()
+if(PROXIMA_BUILD_APPS AND PROXIMA_BUILD_QT)
+  # The applications' Qt windows: VTK's Qt widget (QVTKOpenGLNativeWidget) and Qt 5's widgets,
+  # with QTest for the window tests.
+  list(APPEND _vtkComponents GUISupportQt)
+  find_package(Qt5 5.15 REQUIRED COMPONENTS Widgets Test)
+endif()
 if(PROXIMA_BUILD_DYNAMICS)
   # Rigid bodies and mechanisms (Library/Dynamics), integrated at the haptic rate.
   find_package(mujoco CONFIG REQUIRED)

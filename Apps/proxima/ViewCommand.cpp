@@ -12,6 +12,7 @@
 #include "DisplayCheck.h"
 #include "ForcePlot.h"
 #include "HudText.h"
+#include "ProxyCamera.h"
 #include "SceneSurfaceActor.h"
 #include "WindowPng.h"
 #include "DeviceChoice.h"
@@ -93,46 +94,22 @@ struct ViewOptions
   double forceScale = 0.0;
 };
 
-// The HUD's lines: what is touched and how hard, the servo's health, and for the mouse how deep
-// the finger is pressed and how to press it.
+// The HUD's lines: the shell's status, and for the mouse how deep the finger is pressed and how
+// to press it.
 std::string statusText(const HapticState& state, const LoopStatistics& servo,
                        const vtkHapticMouseFinger* mouse)
 {
-  char touched[64] = "free";
-  if (state.contactObject >= 0)
+  std::string text = shell::hapticStatusText(state, servo);
+  if (mouse != nullptr)
   {
-    std::snprintf(touched, sizeof touched, "touching object %d, %d contact%s", state.contactObject,
-                  state.numContacts, state.numContacts == 1 ? "" : "s");
-  }
-  char text[512];
-  int length = std::snprintf(
-    text, sizeof text,
-    "t %.3f s   %s%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   missed %llu", state.time,
-    touched, state.stuck ? "   sticking" : "", state.fading ? "   FADING" : "", norm(state.force),
-    servo.rate, servo.jitterQuantileNanoseconds(0.99) / 1000.0,
-    static_cast<unsigned long long>(servo.missedDeadlines));
-  if (mouse != nullptr && length > 0 && static_cast<std::size_t>(length) < sizeof text)
-  {
-    std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+    char line[200];
+    std::snprintf(line, sizeof line,
                   "\nmouse: pressed %.2f mm   wheel or held space presses, Backspace lifts, "
                   "a drag turns the camera",
                   mouse->GetDepth() * 1000.0);
+    text += line;
   }
   return text;
-}
-
-// Moves the camera by the proxy's motion since the last frame, keeping its direction and
-// distance (the user's), eased so that a jittering proxy does not shake the picture.
-void followProxy(vtkCamera* camera, const Vec3& proxy)
-{
-  double focus[3];
-  double position[3];
-  camera->GetFocalPoint(focus);
-  camera->GetPosition(position);
-  constexpr double kEase = 0.25;
-  const Vec3 shift = (proxy - Vec3{focus[0], focus[1], focus[2]}) * kEase;
-  camera->SetFocalPoint(focus[0] + shift.x, focus[1] + shift.y, focus[2] + shift.z);
-  camera->SetPosition(position[0] + shift.x, position[1] + shift.y, position[2] + shift.z);
 }
 
 // The window's picture as proxima-view-N.png in the current folder, N the first number not
@@ -161,19 +138,11 @@ void saveWindowPicture(vtkRenderWindow* window)
   }
 }
 
-// Where a mouse's finger starts without a path: above the scene's top (z, the default camera's
-// up-facing side), two radii clear of its bounding box, over its centre.
+// Where a mouse's finger starts without a path: above the scene (shell::startAboveScene).
 FingerPath mouseStartPath(const CollisionScene& scene, double radius)
 {
-  Aabb box;
-  for (const CollisionObject& object : scene.objects)
-  {
-    box.expand(object.mesh.bounds().lower);
-    box.expand(object.mesh.bounds().upper);
-  }
-  const Vec3 centre = (box.lower + box.upper) * 0.5;
   FingerPath path;
-  path.append(0.0, {centre.x, centre.y, box.upper.z + 2.0 * radius});
+  path.append(0.0, shell::startAboveScene(scene, radius));
   return path;
 }
 
@@ -470,7 +439,7 @@ int view(const ViewOptions& options)
     f->status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
     if (f->follow && state.tick > 0)
     {
-      followProxy(f->renderer->GetActiveCamera(), state.proxy);
+      shell::followProxy(f->renderer->GetActiveCamera(), state.proxy);
     }
     f->renderer->ResetCameraClippingRange();
     static_cast<vtkRenderWindowInteractor*>(caller)->Render();

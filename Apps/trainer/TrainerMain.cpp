@@ -1,6 +1,9 @@
-// proxima-trainer: the surgical trainer (Documentation/SurgicalTrainer.md). Headless, it plays a
-// scripted finger path through an exercise in lockstep and writes the score report, and with
-// --screenshot the picture of the session at --at seconds:
+// proxima-trainer: the surgical trainer (Documentation/SurgicalTrainer.md). Without --path it opens
+// the trainer's window, where a trainee feels the exercise with the mouse or a device and is
+// scored live:
+//   proxima-trainer [--exercise E.json] [--device mouse|spacemouse|falcon|replay:FILE]
+// Headless, it plays a scripted finger path through an exercise in lockstep and writes the score
+// report, and with --screenshot the picture of the session at --at seconds:
 //   proxima-trainer --exercise E.json --path P.csv [--marks M.csv] --report R.json
 //                   [--screenshot S.png [--at T] [--width W] [--height H]]
 // Exit statuses as the proxima command line's (DESIGN.md section 3): 0 when the session ran
@@ -12,6 +15,11 @@
 #include "Exercises/ExerciseReport.h"
 #include "Exercises/HeadlessSession.h"
 #include "Exercises/MarkTimesFile.h"
+#if PROXIMA_TRAINER_WINDOW
+#include "Window/TrainerWindowMain.h"
+#endif
+
+#include "Devices/DeviceRegistry.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/AtomicOutputFile.h"
@@ -43,7 +51,41 @@ struct TrainerOptions
   std::string screenshot;
   double at = -1.0;
   ScreenshotSize size;
+  std::string device;
+  std::string falconFirmware;
 };
+
+// The options of one mode given in the other: a window takes no report, a scripted session no
+// device.
+void checkMode(const TrainerOptions& options)
+{
+  if (options.path.empty())
+  {
+    for (const auto& [value, name] :
+         {std::pair{options.report, "--report"}, std::pair{options.marks, "--marks"},
+          std::pair{options.screenshot, "--screenshot"}})
+    {
+      if (!value.empty())
+      {
+        throw InputError(name, "belongs to a scripted session: give --path too (the window's "
+                               "Session menu marks, scores and saves the report)");
+      }
+    }
+    return;
+  }
+  if (!options.device.empty())
+  {
+    throw InputError("--device", "moves the finger in the window: leave out --path for it");
+  }
+  if (options.exercise.empty())
+  {
+    throw InputError("--exercise", "is required with --path");
+  }
+  if (options.report.empty())
+  {
+    throw InputError("--report", "is required with --path");
+  }
+}
 
 // The checks of the screenshot's options that need the path: --at within it, .png, a display.
 void checkScreenshot(const TrainerOptions& options, const FingerPath& path)
@@ -147,20 +189,38 @@ int main(int argc, char** argv)
                "(Documentation/SurgicalTrainer.md)",
                "proxima-trainer"};
   TrainerOptions options;
-  app.add_option("--exercise", options.exercise, "Exercise file (JSON)")->required();
-  app.add_option("--path", options.path, "Finger path CSV (t,x,y,z) played in lockstep")
-    ->required();
+  app.add_option("--exercise", options.exercise,
+                 "Exercise file (JSON); in the window, default: a list of the shipped ones");
+  app.add_option("--path", options.path,
+                 "Finger path CSV (t,x,y,z) played in lockstep, headless; without it the "
+                 "trainer's window opens");
+  app
+    .add_option("--device", options.device,
+                "The window's device: mouse (default), spacemouse, falcon or replay:FILE")
+    ->check(CLI::Validator(
+      [](std::string& input) -> std::string {
+        return isDeviceSpec(input) && input != "sim"
+                 ? std::string()
+                 : "must be mouse, spacemouse, falcon or replay:FILE, not " + input;
+      },
+      "DEVICE"));
+  app.add_option("--falcon-firmware", options.falconFirmware,
+                 "With --device falcon: the firmware file to upload (your own copy)");
   app.add_option("--marks", options.marks,
                  "The trainee's marks: CSV with the header t, one time in seconds per row");
-  app.add_option("--report", options.report, "The score report to write (JSON)")->required();
+  app.add_option("--report", options.report, "The score report to write (JSON; with --path)");
   app.add_option("--screenshot", options.screenshot,
                  "Also render the session at --at offscreen to this PNG (needs a display: "
                  "xvfb-run -a without one)");
   app.add_option("--at", options.at, "With --screenshot: seconds into the path (default its end)")
     ->check(CLI::Range(0.0, 1e9));
-  app.add_option("--width", options.size.width, "Screenshot width in pixels (default 800)")
+  app
+    .add_option("--width", options.size.width,
+                "Screenshot width in pixels (default 800; the window's 1024)")
     ->check(CLI::Range(64, 8192));
-  app.add_option("--height", options.size.height, "Screenshot height in pixels (default 600)")
+  app
+    .add_option("--height", options.size.height,
+                "Screenshot height in pixels (default 600; the window's 720)")
     ->check(CLI::Range(64, 8192));
   try
   {
@@ -186,6 +246,21 @@ int main(int argc, char** argv)
   }
   try
   {
+    checkMode(options);
+    if (options.path.empty())
+    {
+#if PROXIMA_TRAINER_WINDOW
+      TrainerWindowOptions window;
+      window.exercise = options.exercise;
+      window.device = options.device.empty() ? "mouse" : options.device;
+      window.falconFirmware = options.falconFirmware;
+      window.width = app.count("--width") > 0 ? options.size.width : window.width;
+      window.height = app.count("--height") > 0 ? options.size.height : window.height;
+      return runTrainerWindow(window, argc, argv);
+#else
+      throw InputError("--path", "is required: this build has no window (PROXIMA_BUILD_QT=OFF)");
+#endif
+    }
     const int status = runHeadless(options);
     finishStandardOutput();
     return status;

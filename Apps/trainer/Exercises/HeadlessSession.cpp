@@ -1,5 +1,7 @@
 #include "Exercises/HeadlessSession.h"
 
+#include "Exercises/ExerciseScene.h"
+
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
 #include "Runtime/SimulatedDevice.h"
@@ -11,15 +13,8 @@ ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& pa
                                   const std::string& pathName, const std::vector<double>& markTimes,
                                   const SessionObserver& observer)
 {
-  ScriptedRunSettings settings;
-  settings.scene = exercise.scene;
-  settings.radius = exercise.radius;
-  settings.stiffness = exercise.stiffness;
-  settings.rate = exercise.rate;
-  settings.maxForce = exercise.maxForce;
-  settings.path = pathName;
-  const LoadedScene loaded = loadScene(settings);
-  checkRadiusAgainstScene(settings, loaded);
+  const ScriptedRunSettings settings = exerciseRunSettings(exercise, pathName);
+  const LoadedScene loaded = loadExerciseScene(settings);
   checkPathStart(settings, loaded, path);
   ExerciseScorer scorer(exercise, *loaded.scene);
   std::size_t nextMark = 0;

@@ -1,0 +1,273 @@
+// The trainer's window under Xvfb (QTest), on the shipped liver exercises:
+//   - it opens on an exercise and shows the scene with the targets framed, compared with a
+//     baseline image as the VTK image tests are;
+//   - the mouse, moved over the liver by Qt mouse events and pressed in with wheel events, makes
+//     contact that the HUD reports, and M marks the spot touched;
+//   - a finger path recorded as a device session and replayed through the threaded runtime is
+//     scored live, every tick, to the same result as the headless session of the same path (the
+//     independent run: lockstep on a virtual clock);
+//   - a session recorded in the window replays; a device that is not there is named and the
+//     mouse stays.
+// Nothing here asserts on speed: waits have generous deadlines and end as soon as the state is
+// reached.
+#include "Exercises/ExerciseFile.h"
+#include "Exercises/HeadlessSession.h"
+#include "TrainerWindow.h"
+#include "Window/TrainerWindowMain.h"
+
+#include "Devices/DeviceRecording.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Exercises/ExerciseScene.h"
+#include "Runtime/SimulatedDevice.h"
+#include "ImageComparison.h"
+#include "VTK/vtkHapticMouseFinger.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QWheelEvent>
+
+#include <vtkRenderWindow.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+namespace
+{
+using namespace proxima;
+using namespace proxima::trainer;
+
+const std::string kExercises = PROXIMA_EXERCISES;
+const std::string kPaths = PROXIMA_SOURCE_DIR "/Data/Paths/Trainer";
+const std::string kOutput = PROXIMA_TEST_OUTPUT;
+
+std::unique_ptr<TrainerWindow> openExercise(const std::string& name, const std::string& device,
+                                            int width = 800, int height = 600)
+{
+  const Exercise exercise = readExerciseFile(kExercises + "/" + name + ".json");
+  LoadedScene loaded = loadExerciseScene(exerciseRunSettings(exercise, ""));
+  shell::HapticWindowSettings settings;
+  settings.title = exercise.name;
+  settings.scene = std::move(loaded.scene);
+  settings.radius = exercise.radius;
+  settings.stiffness = exercise.stiffness;
+  settings.maxForce = exercise.maxForce;
+  settings.servoRate = exercise.rate;
+  settings.device = device;
+  settings.width = width;
+  settings.height = height;
+  auto window = std::make_unique<TrainerWindow>(exercise, settings);
+  window->show();
+  if (!QTest::qWaitForWindowExposed(window.get()))
+  {
+    return nullptr;
+  }
+  return window;
+}
+
+// Lets the window's timer run until `done` or `seconds` pass; whether `done` came.
+bool waitUntil(const std::function<bool()>& done, double seconds)
+{
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end)
+  {
+    if (done())
+    {
+      return true;
+    }
+    QTest::qWait(20);
+  }
+  return done();
+}
+
+void wheel(QWidget* widget, const QPoint& at, int notches)
+{
+  for (int i = 0; i < std::abs(notches); ++i)
+  {
+    QWheelEvent event(QPointF(at), QPointF(widget->mapToGlobal(at)), QPoint(),
+                      QPoint(0, notches > 0 ? 120 : -120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(widget, &event);
+    QTest::qWait(30);
+  }
+}
+
+// The finger path as a device recording at the exercise's rate: what a replay device plays.
+std::string pathAsRecording(const std::string& pathName, double rate, const std::string& file)
+{
+  const FingerPath path = readFingerPathFile(kPaths + "/" + pathName + ".csv");
+  SimulatedDevice device(path);
+  std::vector<RecordedSample> samples;
+  const auto ticks = static_cast<std::uint64_t>(std::floor(path.endTime() * rate)) + 1;
+  for (std::uint64_t k = 0; k < ticks; ++k)
+  {
+    const double time = static_cast<double>(k) / rate;
+    samples.push_back({time, device.read(time)});
+  }
+  std::string error;
+  if (!writeDeviceRecording(file, samples, error))
+  {
+    return error;
+  }
+  return {};
+}
+} // namespace
+
+class TrainerWindowTest : public QObject
+{
+  Q_OBJECT
+
+private slots:
+  void opensOnTheExerciseWithItsTargetsFramed()
+  {
+    auto window = openExercise("liver-targets", "mouse");
+    QVERIFY(window != nullptr);
+    // A few frames: the loops are running, the finger rests above the liver, nothing touches.
+    QVERIFY(waitUntil([&] { return window->ticksSeen() > 50; }, 30.0));
+    QVERIFY2(window->hudText().find("Liver targets: touch A, B and C in order") !=
+                 std::string::npos &&
+               window->hudText().find("targets: 0 of 3 touched, next A") != std::string::npos,
+             window->hudText().c_str());
+    QCOMPARE(window->latestState().numContacts, 0);
+    const proxima::vtk::testing::ImageComparison image = proxima::vtk::testing::compareWithBaseline(
+      window->view()->renderWindow(), "trainer-window-targets",
+      PROXIMA_SOURCE_DIR "/Apps/trainer/Testing/Baselines", kOutput);
+    QVERIFY2(image.matches, image.message.c_str());
+  }
+
+  void theMouseOverTheLiverPressesInAndMarksTheSpot()
+  {
+    auto window = openExercise("liver-palpation", "mouse");
+    QVERIFY(window != nullptr);
+    QWidget* view = window->view();
+    const QPoint centre(view->width() / 2, view->height() / 2);
+    QTest::mouseMove(view, centre);
+    QVERIFY2(waitUntil([&] { return window->mouseFinger()->IsHovering(); }, 10.0),
+             "the cursor over the liver's middle should find its surface");
+    QCOMPARE(window->latestState().numContacts, 0);
+    // Four notches press two radii (half a radius each): the proxy stays on the liver, the
+    // finger goes in, and the HUD names what is touched.
+    wheel(view, centre, 4);
+    QVERIFY2(std::abs(window->mouseFinger()->GetDepth() - 2.0 * window->exercise().radius) < 1e-12,
+             std::to_string(window->mouseFinger()->GetDepth()).c_str());
+    QVERIFY2(waitUntil([&] { return window->latestState().numContacts > 0; }, 20.0),
+             window->hudText().c_str());
+    QVERIFY2(
+      waitUntil([&] { return window->hudText().find("touching liver") != std::string::npos; }, 5.0),
+      window->hudText().c_str());
+    const HapticState pressed = window->latestState();
+    QVERIFY(norm(pressed.force) > 0.1);
+    QVERIFY(norm(pressed.force) <= window->exercise().maxForce + 1e-9);
+    // Session > Mark the spot touched, whose key is M. (Xvfb has no window manager to make the
+    // window active, which Qt's shortcuts need: the action is triggered as the menu does.)
+    auto* markAction = window->findChild<QAction*>("markSpot");
+    QVERIFY(markAction != nullptr);
+    QCOMPARE(markAction->shortcut(), QKeySequence(Qt::Key_M));
+    markAction->trigger();
+    const ExerciseScore score = window->score();
+    QCOMPARE(score.tasks.size(), std::size_t{1});
+    QCOMPARE(score.tasks[0].palpation.marks, 1);
+    QVERIFY(score.tasks[0].palpation.mark.has_value());
+    // The mark is the contact point: on the liver's surface under the proxy, a radius away.
+    const double fromProxy = norm(*score.tasks[0].palpation.mark - window->latestState().proxy);
+    QVERIFY2(std::abs(fromProxy - window->exercise().radius) < 1e-3,
+             std::to_string(fromProxy).c_str());
+    QCOMPARE(window->ticksDropped(), std::uint64_t{0});
+  }
+
+  void aReplayedPathIsScoredLiveAsTheHeadlessSessionScoresIt()
+  {
+    auto window = openExercise("liver-targets", "mouse");
+    QVERIFY(window != nullptr);
+    const Exercise& exercise = window->exercise();
+    const std::string recording = kOutput + "/liver-targets-pass.recording.csv";
+    const std::string made = pathAsRecording("liver-targets-pass", exercise.rate, recording);
+    QVERIFY2(made.empty(), made.c_str());
+    const FingerPath path = readFingerPathFile(kPaths + "/liver-targets-pass.csv");
+    std::string error;
+    QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
+    QVERIFY(waitUntil([&] { return window->latestState().time > path.endTime() + 0.3; },
+                      path.endTime() * 6.0 + 30.0));
+    QTest::qWait(100);
+    const ExerciseScore live = window->score();
+    const ExerciseScore headless =
+      playHeadlessSession(exercise, path, "liver-targets-pass.csv", {});
+    QVERIFY(headless.passed);
+    QCOMPARE(live.passed, headless.passed);
+    QCOMPARE(live.tasks[0].targets.touched, headless.tasks[0].targets.touched);
+    QCOMPARE(live.damage.size(), headless.damage.size());
+    // Every servo tick scored, none dropped.
+    QCOMPARE(window->ticksDropped(), std::uint64_t{0});
+    const std::string ticks = "live " + std::to_string(live.ticks) + " ticks, " +
+                              std::to_string(live.contactTicks) + " in contact; headless " +
+                              std::to_string(headless.ticks) + ", " +
+                              std::to_string(headless.contactTicks);
+    // A loaded machine's servo skips late ticks (the replay then reads the next sample): the
+    // share of ticks in contact is compared.
+    const double liveShare =
+      static_cast<double>(live.contactTicks) / static_cast<double>(live.ticks);
+    const double headlessShare =
+      static_cast<double>(headless.contactTicks) / static_cast<double>(headless.ticks);
+    QVERIFY2(std::abs(liveShare - headlessShare) < 0.03, ticks.c_str());
+    QVERIFY(std::abs(live.peakForce - headless.peakForce) < 0.1 * headless.peakForce);
+    // Each target's hold ended within 50 ms of the headless session's.
+    QCOMPARE(live.tasks[0].targets.touchedTimes.size(),
+             headless.tasks[0].targets.touchedTimes.size());
+    for (std::size_t i = 0; i < live.tasks[0].targets.touchedTimes.size(); ++i)
+    {
+      QVERIFY(std::abs(live.tasks[0].targets.touchedTimes[i] -
+                       headless.tasks[0].targets.touchedTimes[i]) < 0.05);
+    }
+  }
+
+  void aRecordedSessionReplaysAndAMissingDeviceKeepsTheMouse()
+  {
+    auto window = openExercise("liver-palpation", "mouse");
+    QVERIFY(window != nullptr);
+    std::string error;
+    QVERIFY(!window->useDevice("spacemouse", error));
+    QVERIFY2(error.find("spacemouse") != std::string::npos, error.c_str());
+    QCOMPARE(window->deviceSpec(), std::string("mouse"));
+
+    window->startRecording();
+    QVERIFY(window->isRecording());
+    QWidget* view = window->view();
+    QTest::mouseMove(view, QPoint(view->width() / 2, view->height() / 2));
+    QVERIFY(waitUntil([&] { return window->latestState().time > 0.5; }, 30.0));
+    const std::string file = kOutput + "/window-session.csv";
+    std::filesystem::remove(file);
+    QVERIFY2(window->saveRecording(file, error), error.c_str());
+    QVERIFY(!window->isRecording());
+    QVERIFY(std::filesystem::file_size(file) > 100);
+    // A file that cannot be written is an error, and nothing is left behind.
+    window->startRecording();
+    QVERIFY(!window->saveRecording(kOutput + "/no-such-folder/session.csv", error));
+    QVERIFY(!std::filesystem::exists(kOutput + "/no-such-folder"));
+    QVERIFY(window->isRecording());
+
+    QVERIFY2(window->useDevice("replay:" + file, error), error.c_str());
+    QCOMPARE(window->deviceSpec(), "replay:" + file);
+    QVERIFY(waitUntil([&] { return window->ticksSeen() > 100; }, 30.0));
+    // Past its end the replay is a device gone: the finger is refused, the proxy holds.
+    QVERIFY(waitUntil([&] { return window->latestState().fingerRefused; }, 30.0));
+  }
+};
+
+int main(int argc, char** argv)
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  // Problems go to the status bar only: nobody is there to close a dialog.
+  qputenv("PROXIMA_NO_DIALOGS", "1");
+  QApplication application(argc, argv);
+  std::filesystem::create_directories(kOutput);
+  TrainerWindowTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "TestTrainerWindow.moc"

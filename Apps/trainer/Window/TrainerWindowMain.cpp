@@ -1,0 +1,160 @@
+#include "TrainerWindowMain.h"
+
+#include "DisplayCheck.h"
+#include "Exercises/ExerciseFile.h"
+#include "Exercises/ExerciseScene.h"
+#include "TrainerWindow.h"
+
+#include "IO/InputChecks/InputError.h"
+
+#include <QApplication>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QPointer>
+#include <QSurfaceFormat>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace proxima::trainer
+{
+namespace
+{
+shell::HapticWindowSettings windowSettings(const Exercise& exercise, LoadedScene& loaded,
+                                           const TrainerWindowOptions& options)
+{
+  shell::HapticWindowSettings settings;
+  settings.title = "Proxima trainer: " + exercise.name;
+  settings.scene = std::move(loaded.scene);
+  settings.radius = exercise.radius;
+  settings.stiffness = exercise.stiffness;
+  settings.maxForce = exercise.maxForce;
+  settings.servoRate = exercise.rate;
+  settings.device = options.device;
+  settings.falconFirmware = options.falconFirmware;
+  settings.width = options.width;
+  settings.height = options.height;
+  return settings;
+}
+
+// A window on the exercise at `path`; throws InputError for a file or scene that cannot be used.
+std::unique_ptr<TrainerWindow> openWindow(const std::string& path,
+                                          const TrainerWindowOptions& options)
+{
+  const Exercise exercise = readExerciseFile(path);
+  LoadedScene loaded = loadExerciseScene(exerciseRunSettings(exercise, ""));
+  return std::make_unique<TrainerWindow>(exercise, windowSettings(exercise, loaded, options));
+}
+
+// The exercise to open when none was given: one of the shipped ones, or a file; empty to quit.
+std::string pickExercise()
+{
+  const std::string folder = shippedExerciseFolder();
+  std::vector<std::string> files;
+  if (!folder.empty())
+  {
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+    {
+      if (entry.path().extension() == ".json")
+      {
+        files.push_back(entry.path().string());
+      }
+    }
+    std::sort(files.begin(), files.end());
+  }
+  QStringList items;
+  for (const std::string& file : files)
+  {
+    items << QString::fromStdString(std::filesystem::path(file).stem().string());
+  }
+  const QString other = QObject::tr("Another exercise file...");
+  items << other;
+  bool chosen = false;
+  const QString item = QInputDialog::getItem(nullptr, QObject::tr("Proxima trainer"),
+                                             QObject::tr("Exercise:"), items, 0, false, &chosen);
+  if (!chosen)
+  {
+    return {};
+  }
+  if (item == other)
+  {
+    return QFileDialog::getOpenFileName(nullptr, QObject::tr("Open an exercise"), QString(),
+                                        QObject::tr("Exercises (*.json)"))
+      .toStdString();
+  }
+  return files[static_cast<std::size_t>(items.indexOf(item))];
+}
+} // namespace
+
+std::string shippedExerciseFolder()
+{
+  if (const char* folder = std::getenv("PROXIMA_EXERCISE_DIR"); folder != nullptr && *folder)
+  {
+    return folder;
+  }
+#ifdef PROXIMA_SHIPPED_EXERCISES
+  if (std::filesystem::is_directory(PROXIMA_SHIPPED_EXERCISES))
+  {
+    return PROXIMA_SHIPPED_EXERCISES;
+  }
+#endif
+  return {};
+}
+
+int runTrainerWindow(const TrainerWindowOptions& options, int argc, char** argv)
+{
+  const std::string noDisplay = shell::displayProblem("proxima-trainer");
+  if (!noDisplay.empty())
+  {
+    throw InputError("proxima-trainer", noDisplay);
+  }
+  // Before the application: the OpenGL context VTK's widget needs (DEBIAN-NOTES.md).
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication application(argc, argv);
+  std::string path = options.exercise;
+  if (path.empty())
+  {
+    path = pickExercise();
+    if (path.empty())
+    {
+      return 0;
+    }
+  }
+  // The exercise named on the command line is refused with status 2 like any other input.
+  std::unique_ptr<TrainerWindow> window = openWindow(path, options);
+  // File > Open an exercise: a window on the new one replaces this one; a bad file is named in a
+  // message and the current window stays.
+  std::function<void(TrainerWindow&)> connectOpen = [&](TrainerWindow& current) {
+    QObject::connect(
+      &current, &TrainerWindow::exerciseRequested, &current, [&](const QString& file) {
+        try
+        {
+          std::unique_ptr<TrainerWindow> next = openWindow(file.toStdString(), options);
+          connectOpen(*next);
+          next->show();
+          window->hide();
+          window->deleteLater();
+          window.release();
+          window = std::move(next);
+        }
+        catch (const std::exception& error)
+        {
+          QMessageBox::warning(window.get(), QObject::tr("Proxima trainer"),
+                               QString::fromStdString(error.what()));
+        }
+      });
+  };
+  connectOpen(*window);
+  window->show();
+  const int status = QApplication::exec();
+  window.reset();
+  return status == 0 ? 0 : 1;
+}
+
+} // namespace proxima::trainer
