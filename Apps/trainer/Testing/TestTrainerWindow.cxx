@@ -98,6 +98,17 @@ void wheel(QWidget* widget, const QPoint& at, int notches)
   }
 }
 
+// With PROXIMA_TRAINER_FIGURES=FOLDER the window is also saved, menus and all, as FOLDER/NAME:
+// the pictures of Documentation/SurgicalTrainer.md come from these runs.
+void saveFigure(QWidget* window, const char* name)
+{
+  const QByteArray folder = qgetenv("PROXIMA_TRAINER_FIGURES");
+  if (!folder.isEmpty())
+  {
+    window->grab().save(QString::fromLocal8Bit(folder) + "/" + name, "PNG");
+  }
+}
+
 // The finger path as a device recording at the exercise's rate: what a replay device plays.
 std::string pathAsRecording(const std::string& pathName, double rate, const std::string& file)
 {
@@ -170,6 +181,8 @@ private slots:
     QVERIFY(markAction != nullptr);
     QCOMPARE(markAction->shortcut(), QKeySequence(Qt::Key_M));
     markAction->trigger();
+    QTest::qWait(100);
+    saveFigure(window.get(), "trainer-window-palpation.png");
     const ExerciseScore score = window->score();
     QCOMPARE(score.tasks.size(), std::size_t{1});
     QCOMPARE(score.tasks[0].palpation.marks, 1);
@@ -192,8 +205,17 @@ private slots:
     const FingerPath path = readFingerPathFile(kPaths + "/liver-targets-pass.csv");
     std::string error;
     QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
-    QVERIFY(waitUntil([&] { return window->latestState().time > path.endTime() + 0.3; },
-                      path.endTime() * 6.0 + 30.0));
+    bool pictured = false;
+    QVERIFY(waitUntil(
+      [&] {
+        if (!pictured && window->score().tasks[0].targets.touched == 2)
+        {
+          saveFigure(window.get(), "trainer-window-targets.png");
+          pictured = true;
+        }
+        return window->latestState().time > path.endTime() + 0.3;
+      },
+      path.endTime() * 6.0 + 30.0));
     QTest::qWait(100);
     const ExerciseScore live = window->score();
     const ExerciseScore headless =
