@@ -6,6 +6,7 @@
 #include "TrainerWindow.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Output/StandardOutput.h"
 
 #include <QApplication>
 #include <QFileDialog>
@@ -16,6 +17,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -153,7 +155,25 @@ int runTrainerWindow(const TrainerWindowOptions& options, int argc, char** argv)
   connectOpen(*window);
   window->show();
   const int status = QApplication::exec();
+  // The last attempt in one line, as proxima view prints its last state: scripts read it.
+  const ExerciseScore score = window->score();
+  int tasksPassed = 0;
+  int marks = 0;
+  for (const TaskScore& task : score.tasks)
+  {
+    tasksPassed += task.passed ? 1 : 0;
+    marks += task.palpation.marks;
+  }
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "proxima-trainer: closed %s: %s (%d of %zu tasks, %d marks, %zu damage events, "
+                "peak force %.2f N, %llu ticks scored, %llu dropped)\n",
+                window->exercise().name.c_str(), score.passed ? "passed" : "not passed",
+                tasksPassed, score.tasks.size(), marks, score.damage.size(), score.peakForce,
+                static_cast<unsigned long long>(score.ticks),
+                static_cast<unsigned long long>(window->ticksDropped()));
   window.reset();
+  writeStandardOutput(line);
   return status == 0 ? 0 : 1;
 }
 

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# proxima-trainer's window driven through X as a trainee would (ctest Trainer.window-program,
+# under its own Xvfb): start it with no exercise, pick the liver palpation from its list with the
+# keyboard, move the cursor over the liver, press in with four wheel notches, mark with M, close
+# with Ctrl+Q. It must print that the attempt closed with one mark, contact ticks scored and none
+# dropped.
+# Usage: trainer_window_program.sh PROXIMA_TRAINER EXERCISE_FOLDER
+set -euo pipefail
+trainer="$1"
+export PROXIMA_EXERCISE_DIR="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+# find_window NAME: the id of the first window whose name matches, within 60 s.
+find_window() {
+  local id=""
+  for _ in $(seq 600); do
+    id=$(xdotool search --onlyvisible --name "$1" 2> /dev/null | head -1 || true)
+    [ -n "$id" ] && { echo "$id"; return 0; }
+    kill -0 "$program" 2> /dev/null || { echo "trainer-window: it ended early:" >&2; cat err.txt >&2; return 1; }
+    sleep 0.1
+  done
+  echo "trainer-window: no window named '$1' within 60 s" >&2
+  return 1
+}
+
+"$trainer" > out.txt 2> err.txt &
+program=$!
+picker=$(find_window "Proxima trainer$")
+sleep 0.5
+# The list is sorted: cranium-trace, liver-palpation, ... The second is the palpation.
+xdotool windowfocus --sync "$picker"
+xdotool key --clearmodifiers Down Return
+window=$(find_window "Proxima trainer: Liver palpation")
+sleep 1.5
+xdotool windowfocus --sync "$window"
+# The window is 1024 x 720; the liver fills its middle.
+xdotool mousemove --window "$window" 512 360
+sleep 0.5
+xdotool mousemove --window "$window" 513 360
+sleep 1
+for _ in 1 2 3 4; do
+  xdotool click --window "$window" 4
+  sleep 0.05
+done
+sleep 2
+xdotool key --clearmodifiers m
+sleep 0.5
+xdotool key --clearmodifiers ctrl+q
+for _ in $(seq 300); do
+  kill -0 "$program" 2> /dev/null || break
+  sleep 0.1
+done
+if kill -0 "$program" 2> /dev/null; then
+  echo "trainer-window: the window did not close on Ctrl+Q" >&2
+  kill "$program"
+  exit 1
+fi
+wait "$program" || { echo "trainer-window: proxima-trainer failed:" >&2; cat err.txt >&2; exit 1; }
+cat out.txt
+line=$(grep "proxima-trainer: closed Liver palpation" out.txt) ||
+  { echo "trainer-window: no closing line" >&2; exit 1; }
+echo "$line" | grep -q " 1 marks," || { echo "trainer-window: expected one mark: $line" >&2; exit 1; }
+echo "$line" | grep -q " 0 dropped)" || { echo "trainer-window: ticks dropped: $line" >&2; exit 1; }
+force=$(echo "$line" | sed -E 's/.*peak force ([0-9.]+) N.*/\1/')
+awk -v f="$force" 'BEGIN { exit !(f > 0.5) }' ||
+  { echo "trainer-window: expected a press on the liver: $line" >&2; exit 1; }
+echo "trainer-window: picked, pressed and marked with the mouse: $line"
