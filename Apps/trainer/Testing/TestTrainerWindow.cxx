@@ -25,8 +25,10 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QWheelEvent>
 
@@ -238,6 +240,25 @@ private slots:
       static_cast<double>(headless.contactTicks) / static_cast<double>(headless.ticks);
     QVERIFY2(std::abs(liveShare - headlessShare) < 0.03, ticks.c_str());
     QVERIFY(std::abs(live.peakForce - headless.peakForce) < 0.1 * headless.peakForce);
+    // Session > Finish (F) shows the score; the dialog is read, pictured and closed.
+    auto* finish = window->findChild<QAction*>("finishAttempt");
+    QVERIFY(finish != nullptr);
+    QCOMPARE(finish->shortcut(), QKeySequence(Qt::Key_F));
+    QString shown;
+    QTimer::singleShot(300, [&] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+      {
+        shown = box->text();
+        saveFigure(box, "trainer-window-score.png");
+        box->done(QMessageBox::Close);
+      }
+    });
+    finish->trigger();
+    QVERIFY2(
+      shown.startsWith("Liver targets: touch A, B and C in order: passed\n1 of 1 tasks passed, "
+                       "0 damage events"),
+      qPrintable(shown));
+    QVERIFY2(shown.contains("targets: 3 of 3 touched"), qPrintable(shown));
     // Each target's hold ended within 50 ms of the headless session's.
     QCOMPARE(live.tasks[0].targets.touchedTimes.size(),
              headless.tasks[0].targets.touchedTimes.size());

@@ -54,6 +54,7 @@ TrainerWindow::TrainerWindow(const Exercise& exercise, const shell::HapticWindow
   markAction->setShortcut(QKeySequence(Qt::Key_M));
   connect(markAction, &QAction::triggered, this, &TrainerWindow::mark);
   QAction* finish = session->addAction(tr("&Finish: score and report..."));
+  finish->setObjectName("finishAttempt");
   finish->setShortcut(QKeySequence(Qt::Key_F));
   connect(finish, &QAction::triggered, this, &TrainerWindow::finishAttempt);
   QAction* again = session->addAction(tr("Start the exercise &again"));
