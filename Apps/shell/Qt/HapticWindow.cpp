@@ -347,9 +347,7 @@ bool HapticWindow::saveScreenshot(const std::string& path, std::string& error)
 {
   try
   {
-    AtomicOutputFile file(path);
-    file.write(windowPng(m_window, path));
-    file.commit();
+    writeFileAtomically(path, windowPng(m_window, path));
     return true;
   }
   catch (const std::exception& failure)

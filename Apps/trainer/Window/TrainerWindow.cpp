@@ -103,9 +103,7 @@ bool TrainerWindow::writeReport(const std::string& path, std::string& error) con
 {
   try
   {
-    AtomicOutputFile file(path);
-    file.write(exerciseReportJson(m_exercise, m_scorer->score(), ReportContext{}));
-    file.commit();
+    writeFileAtomically(path, exerciseReportJson(m_exercise, m_scorer->score(), ReportContext{}));
     return true;
   }
   catch (const std::exception& failure)
