@@ -138,4 +138,11 @@ void ForcePlot::addToRenderer(vtkRenderer* renderer)
   renderer->AddViewProp(m_label);
 }
 
+void ForcePlot::setVisible(bool visible)
+{
+  m_boxActor->SetVisibility(visible);
+  m_curveActor->SetVisibility(visible);
+  m_label->SetVisibility(visible);
+}
+
 } // namespace proxima::shell

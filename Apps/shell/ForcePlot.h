@@ -35,6 +35,8 @@ public:
   const std::vector<std::array<double, 2>>& curve() const { return m_curve; }
 
   void addToRenderer(vtkRenderer* renderer);
+  /// Shows or hides the box, the curve and the label.
+  void setVisible(bool visible);
 
   /// The box, in normalised viewport coordinates (default: the top right corner).
   void place(double left, double bottom, double right, double top);

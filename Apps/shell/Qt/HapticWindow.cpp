@@ -175,6 +175,16 @@ void HapticWindow::buildMenus()
   QAction* farther = view->addAction(tr("Go &farther"));
   farther->setShortcut(QKeySequence("Ctrl+-"));
   connect(farther, &QAction::triggered, this, [this] { moveCloser(1.25); });
+  QAction* overlays = view->addAction(tr("Show the &HUD and the force plot"));
+  overlays->setObjectName("showOverlays");
+  overlays->setCheckable(true);
+  overlays->setChecked(true);
+  overlays->setShortcut(QKeySequence(Qt::Key_H));
+  connect(overlays, &QAction::toggled, this, [this](bool visible) {
+    // A clean picture of the scene alone, for a screenshot.
+    m_hud->SetVisibility(visible);
+    m_forcePlot.setVisible(visible);
+  });
   QAction* frame = view->addAction(tr("Frame the &whole scene"));
   frame->setShortcut(QKeySequence(Qt::Key_Home));
   connect(frame, &QAction::triggered, this, &HapticWindow::frameScene);
