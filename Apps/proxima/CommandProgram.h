@@ -18,6 +18,7 @@ Command addRunCommand(CLI::App& parent);
 Command addViewCommand(CLI::App& parent);
 Command addPathCommand(CLI::App& parent);
 Command addTreeCommand(CLI::App& parent);
+Command addInspectCommand(CLI::App& parent);
 Command addGenerateCommand(CLI::App& parent);
 Command addDevicesCommand(CLI::App& parent);
 Command addServeCommand(CLI::App& parent);

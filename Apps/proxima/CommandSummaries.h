@@ -23,6 +23,9 @@ inline constexpr CommandSummary kPathSummary{
           "person-like probe session) for a mesh or a scene"};
 inline constexpr CommandSummary kTreeSummary{
   "tree", "Read a mesh, build its sphere tree and print sizes and timings as JSON."};
+inline constexpr CommandSummary kInspectSummary{
+  "inspect", "Report a mesh's defects as JSON: holes, non-manifold and misoriented edges, "
+             "degenerate and duplicate triangles, pieces"};
 inline constexpr CommandSummary kGenerateSummary{
   "generate", "Write a procedural mesh (sizes in metres) to a file."};
 inline constexpr CommandSummary kDevicesSummary{
@@ -36,9 +39,10 @@ inline constexpr CommandSummary kRemoteSummary{
 
 // PROXIMA_HAS_NET: whether this build made the Net layer's commands (Apps/proxima/CMakeLists.txt).
 inline constexpr CommandSummary kCommandSummaries[] = {
-  kRunSummary,   kViewSummary,   kPathSummary, kTreeSummary, kGenerateSummary, kDevicesSummary,
+  kRunSummary,     kViewSummary,     kPathSummary,    kTreeSummary,
+  kInspectSummary, kGenerateSummary, kDevicesSummary,
 #if PROXIMA_HAS_NET
-  kServeSummary, kRemoteSummary,
+  kServeSummary,   kRemoteSummary,
 #endif
 };
 

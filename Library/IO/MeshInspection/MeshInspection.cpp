@@ -1,0 +1,263 @@
+#include "IO/MeshInspection/MeshInspection.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace proxima
+{
+namespace
+{
+struct PositionKey
+{
+  std::uint64_t bits[3];
+  bool operator==(const PositionKey& other) const
+  {
+    return bits[0] == other.bits[0] && bits[1] == other.bits[1] && bits[2] == other.bits[2];
+  }
+};
+
+struct PositionHash
+{
+  std::size_t operator()(const PositionKey& key) const
+  {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::uint64_t word : key.bits)
+    {
+      h = (h ^ word) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Identical coordinates, with -0 and +0 the same.
+PositionKey keyOf(const Vec3& p)
+{
+  PositionKey key{};
+  const double coordinates[3] = {p.x == 0.0 ? 0.0 : p.x, p.y == 0.0 ? 0.0 : p.y,
+                                 p.z == 0.0 ? 0.0 : p.z};
+  std::memcpy(key.bits, coordinates, sizeof coordinates);
+  return key;
+}
+
+class DisjointSets
+{
+public:
+  explicit DisjointSets(std::size_t size)
+    : m_parent(size)
+  {
+    std::iota(m_parent.begin(), m_parent.end(), std::uint32_t{0});
+  }
+  std::uint32_t find(std::uint32_t i)
+  {
+    while (m_parent[i] != i)
+    {
+      m_parent[i] = m_parent[m_parent[i]];
+      i = m_parent[i];
+    }
+    return i;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) { m_parent[find(a)] = find(b); }
+
+private:
+  std::vector<std::uint32_t> m_parent;
+};
+
+struct EdgeUse
+{
+  std::uint32_t count = 0;
+  /// +1 for each use from the smaller vertex to the larger, -1 for the other way.
+  int direction = 0;
+  bool reported = false;
+};
+
+std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
+{
+  return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+}
+
+void note(DefectCount& defect, std::uint32_t triangle, const Vec3& point, std::size_t kept)
+{
+  ++defect.count;
+  if (defect.first.size() < kept)
+  {
+    defect.first.push_back({triangle, point});
+  }
+}
+} // namespace
+
+MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options)
+{
+  const auto progress = [&options](double done) {
+    if (options.progress)
+    {
+      options.progress(done);
+    }
+  };
+  const std::size_t kept = options.locationsKept;
+  MeshInspection report;
+  report.triangles = soup.triangles.size();
+
+  // Corners on identical coordinates are one vertex.
+  std::unordered_map<PositionKey, std::uint32_t, PositionHash> vertexOf;
+  vertexOf.reserve(soup.points.size());
+  std::vector<std::uint32_t> vertexOfPoint(soup.points.size());
+  std::vector<Vec3> vertexPosition;
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    const auto [it, added] = vertexOf.try_emplace(
+      keyOf(soup.points[i]), static_cast<std::uint32_t>(vertexPosition.size()));
+    if (added)
+    {
+      vertexPosition.push_back(soup.points[i]);
+    }
+    vertexOfPoint[i] = it->second;
+  }
+  progress(0.2);
+
+  std::vector<std::array<std::uint32_t, 3>> corners(soup.triangles.size());
+  std::vector<bool> used(vertexPosition.size(), false);
+  std::vector<bool> collapsed(soup.triangles.size(), false);
+  // The same three vertices in any order: the sorted triple, compared whole.
+  std::unordered_set<PositionKey, PositionHash> triples;
+  triples.reserve(soup.triangles.size());
+  std::unordered_map<std::uint64_t, EdgeUse> edges;
+  edges.reserve(soup.triangles.size() * 2);
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const auto triangle = static_cast<std::uint32_t>(t);
+    std::array<std::uint32_t, 3> c{};
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = vertexOfPoint[soup.triangles[t][k]];
+    }
+    corners[t] = c;
+    const Vec3& p0 = vertexPosition[c[0]];
+    const Vec3& p1 = vertexPosition[c[1]];
+    const Vec3& p2 = vertexPosition[c[2]];
+    const Vec3 centroid = (p0 + p1 + p2) / 3.0;
+    std::array<std::uint32_t, 3> sorted = c;
+    std::sort(sorted.begin(), sorted.end());
+    if (!triples.insert(PositionKey{{sorted[0], sorted[1], sorted[2]}}).second)
+    {
+      note(report.duplicateTriangles, triangle, centroid, kept);
+    }
+    if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+    {
+      // Two corners on one vertex: a collapsed triangle has no edges and joins nothing.
+      collapsed[t] = true;
+      note(report.collapsedTriangles, triangle, centroid, kept);
+      continue;
+    }
+    if (norm(cross(p1 - p0, p2 - p0)) == 0.0)
+    {
+      note(report.zeroAreaTriangles, triangle, centroid, kept);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      used[c[k]] = true;
+      const std::uint32_t a = c[k];
+      const std::uint32_t b = c[(k + 1) % 3];
+      EdgeUse& use = edges[edgeKey(a, b)];
+      ++use.count;
+      use.direction += a < b ? 1 : -1;
+    }
+  }
+  report.edges = edges.size();
+  progress(0.6);
+
+  // Edge defects, found in the order of the triangles that use them (the same order on every
+  // machine, whatever the hash map's).
+  DisjointSets boundaryGroups(vertexPosition.size());
+  DisjointSets pieces(vertexPosition.size());
+  for (std::size_t t = 0; t < corners.size(); ++t)
+  {
+    if (collapsed[t])
+    {
+      continue;
+    }
+    const auto triangle = static_cast<std::uint32_t>(t);
+    const auto& c = corners[t];
+    pieces.unite(c[0], c[1]);
+    pieces.unite(c[1], c[2]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = c[k];
+      const std::uint32_t b = c[(k + 1) % 3];
+      EdgeUse& use = edges[edgeKey(a, b)];
+      const Vec3 midpoint = (vertexPosition[a] + vertexPosition[b]) * 0.5;
+      if (use.count == 1)
+      {
+        boundaryGroups.unite(a, b);
+      }
+      if (use.reported)
+      {
+        continue;
+      }
+      use.reported = true;
+      if (use.count == 1)
+      {
+        note(report.boundaryEdges, triangle, midpoint, kept);
+      }
+      else if (use.count > 2)
+      {
+        note(report.nonManifoldEdges, triangle, midpoint, kept);
+      }
+      else if (use.direction != 0)
+      {
+        note(report.misorientedEdges, triangle, midpoint, kept);
+      }
+    }
+  }
+  progress(0.8);
+
+  // Loops: the groups of boundary edges, each named by its first edge in triangle order.
+  std::unordered_map<std::uint32_t, std::size_t> loopOfRoot;
+  for (std::size_t t = 0; t < corners.size(); ++t)
+  {
+    if (collapsed[t])
+    {
+      continue;
+    }
+    const auto& c = corners[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = c[k];
+      const std::uint32_t b = c[(k + 1) % 3];
+      if (edges[edgeKey(a, b)].count != 1)
+      {
+        continue;
+      }
+      const std::uint32_t root = boundaryGroups.find(a);
+      const auto [it, added] = loopOfRoot.try_emplace(root, report.boundaryLoopEdges.size());
+      if (added)
+      {
+        note(report.boundaryLoops, static_cast<std::uint32_t>(t),
+             (vertexPosition[a] + vertexPosition[b]) * 0.5, kept);
+        report.boundaryLoopEdges.push_back(0);
+      }
+      ++report.boundaryLoopEdges[it->second];
+    }
+  }
+
+  std::unordered_set<std::uint32_t> roots;
+  for (std::uint32_t v = 0; v < vertexPosition.size(); ++v)
+  {
+    if (used[v])
+    {
+      roots.insert(pieces.find(v));
+    }
+  }
+  report.vertices = vertexPosition.size();
+  report.components = roots.size();
+  report.closed = report.triangles > report.collapsedTriangles.count &&
+                  report.boundaryEdges.count == 0 && report.nonManifoldEdges.count == 0;
+  progress(1.0);
+  return report;
+}
+
+} // namespace proxima

@@ -1,0 +1,75 @@
+// What a CAD engineer asks of a mesh before it goes to a printer or a simulator (issue 18,
+// `proxima inspect`): is it closed, where are its holes, its non-manifold and misoriented edges,
+// its degenerate and duplicate triangles, how many pieces it has. Counts are of the file's own
+// geometry: corners are the same vertex only where their coordinates are identical (bit for bit,
+// but for the sign of zero), as an STL file repeats them; nothing is welded at a tolerance.
+//
+// Definitions (Documentation/CadInspector.md):
+//   - an edge is an unordered pair of distinct vertices used by some triangle;
+//   - a boundary edge is used by one triangle, a non-manifold edge by three or more;
+//   - a boundary loop (a hole, or an open rim) is a connected group of boundary edges;
+//   - an edge used by two triangles is misoriented when both traverse it the same way;
+//   - a collapsed triangle has two corners on the same vertex; a zero-area triangle three distinct
+//     vertices whose cross product is exactly zero in double precision; both are degenerate;
+//   - a duplicate triangle has the same three vertices as an earlier one, in any order;
+//   - components are the pieces connected through shared vertices;
+//   - the mesh is closed when it has triangles and no boundary or non-manifold edge.
+// Plain C++ over the kernel's TriangleSoup: linear in the triangles, with hash maps.
+#pragma once
+
+#include "Core/Vec3.h"
+#include "Geometry/TriangleSoup.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// A defect's place: a triangle (its index in the file) or an edge (its two vertices), and a
+/// point on it to look at.
+struct DefectLocation
+{
+  std::uint32_t triangle = 0;
+  Vec3 point;
+};
+
+/// A count and the places of its first few instances (MeshInspectionOptions::locationsKept).
+struct DefectCount
+{
+  std::size_t count = 0;
+  std::vector<DefectLocation> first;
+};
+
+struct MeshInspection
+{
+  std::size_t triangles = 0;
+  /// Distinct corner positions.
+  std::size_t vertices = 0;
+  std::size_t edges = 0;
+  DefectCount boundaryEdges;
+  /// One location per loop: its first edge's midpoint; with the loop's edge count.
+  DefectCount boundaryLoops;
+  std::vector<std::size_t> boundaryLoopEdges;
+  DefectCount nonManifoldEdges;
+  DefectCount misorientedEdges;
+  DefectCount collapsedTriangles;
+  DefectCount zeroAreaTriangles;
+  DefectCount duplicateTriangles;
+  std::size_t components = 0;
+  bool closed = false;
+};
+
+struct MeshInspectionOptions
+{
+  std::size_t locationsKept = 10;
+  /// Called with the fraction done (0 to 1) between phases, for progress on long work.
+  std::function<void(double)> progress;
+};
+
+MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options = {});
+
+} // namespace proxima

@@ -1,0 +1,297 @@
+// The mesh inspection's counts: on hand-made meshes where every count is known, and on the shared
+// real meshes against independent computations: VTK's own topology filters (vtkCleanPolyData
+// merging identical points, vtkFeatureEdges for boundary and non-manifold edges, and
+// vtkPolyDataConnectivityFilter for pieces and for the loops of the boundary edges), and an
+// ordered map of corner positions for collapsed and duplicate triangles.
+#include "IO/MeshInspection/MeshInspection.h"
+
+#include "IO/Mesh/MeshReader.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkCleanPolyData.h>
+#include <vtkFeatureEdges.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace proxima
+{
+namespace
+{
+TriangleSoup soupOf(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles)
+{
+  TriangleSoup soup;
+  soup.points = std::move(points);
+  soup.triangles = std::move(triangles);
+  return soup;
+}
+
+// A tetrahedron with outward faces.
+const std::vector<Vec3> kTetraPoints{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const std::vector<std::array<std::uint32_t, 3>> kTetraFaces{
+  {0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+
+TEST(MeshInspection, AClosedTetrahedronHasNoDefects)
+{
+  const MeshInspection r = inspectMesh(soupOf(kTetraPoints, kTetraFaces));
+  EXPECT_EQ(r.triangles, 4u);
+  EXPECT_EQ(r.vertices, 4u);
+  EXPECT_EQ(r.edges, 6u);
+  EXPECT_EQ(r.boundaryEdges.count, 0u);
+  EXPECT_EQ(r.boundaryLoops.count, 0u);
+  EXPECT_EQ(r.nonManifoldEdges.count, 0u);
+  EXPECT_EQ(r.misorientedEdges.count, 0u);
+  EXPECT_EQ(r.collapsedTriangles.count, 0u);
+  EXPECT_EQ(r.zeroAreaTriangles.count, 0u);
+  EXPECT_EQ(r.duplicateTriangles.count, 0u);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_TRUE(r.closed);
+}
+
+TEST(MeshInspection, CornersRepeatedAsInAnStlFileAreOneVertexAndMinusZeroIsZero)
+{
+  TriangleSoup soup;
+  for (const auto& face : kTetraFaces)
+  {
+    const auto base = static_cast<std::uint32_t>(soup.points.size());
+    for (const std::uint32_t corner : face)
+    {
+      Vec3 p = kTetraPoints[corner];
+      // Written -0 in some places, as some exporters do.
+      p.x = p.x == 0.0 && base % 2 == 1 ? -0.0 : p.x;
+      soup.points.push_back(p);
+    }
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  const MeshInspection r = inspectMesh(soup);
+  EXPECT_EQ(r.vertices, 4u);
+  EXPECT_EQ(r.edges, 6u);
+  EXPECT_TRUE(r.closed);
+}
+
+TEST(MeshInspection, AMissingFaceIsOneLoopOfThreeBoundaryEdges)
+{
+  auto faces = kTetraFaces;
+  faces.pop_back();
+  const MeshInspection r = inspectMesh(soupOf(kTetraPoints, faces));
+  EXPECT_EQ(r.boundaryEdges.count, 3u);
+  ASSERT_EQ(r.boundaryLoops.count, 1u);
+  EXPECT_EQ(r.boundaryLoopEdges, std::vector<std::size_t>{3});
+  EXPECT_FALSE(r.closed);
+  // The first boundary edge is met on triangle 0, {0, 2, 1}: its edge from 0 to 2.
+  ASSERT_FALSE(r.boundaryEdges.first.empty());
+  EXPECT_EQ(r.boundaryEdges.first[0].triangle, 0u);
+  EXPECT_EQ(r.boundaryEdges.first[0].point, (Vec3{0.0, 0.5, 0.0}));
+}
+
+TEST(MeshInspection, AFlippedFaceMisorientsItsThreeEdges)
+{
+  auto faces = kTetraFaces;
+  std::swap(faces[2][1], faces[2][2]);
+  const MeshInspection r = inspectMesh(soupOf(kTetraPoints, faces));
+  EXPECT_EQ(r.misorientedEdges.count, 3u);
+  EXPECT_TRUE(r.closed);
+}
+
+TEST(MeshInspection, ThreeTrianglesOnOneEdgeMakeItNonManifold)
+{
+  const MeshInspection r = inspectMesh(soupOf(
+    {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}));
+  EXPECT_EQ(r.nonManifoldEdges.count, 1u);
+  EXPECT_EQ(r.edges, 7u);
+  EXPECT_EQ(r.boundaryEdges.count, 6u);
+  // The six rim edges meet at vertices 0 and 1: one group.
+  EXPECT_EQ(r.boundaryLoops.count, 1u);
+  EXPECT_FALSE(r.closed);
+}
+
+TEST(MeshInspection, CollapsedZeroAreaAndDuplicateTriangles)
+{
+  auto faces = kTetraFaces;
+  faces.push_back({1, 1, 2}); // collapsed
+  faces.push_back({2, 0, 1}); // the first face again, rotated
+  faces.push_back({1, 0, 2}); // and reversed
+  std::vector<Vec3> points = kTetraPoints;
+  points.push_back({2, 0, 0}); // 4, on the line through 0 and 1
+  faces.push_back({0, 1, 4});  // zero area
+  const MeshInspection r = inspectMesh(soupOf(points, faces));
+  EXPECT_EQ(r.collapsedTriangles.count, 1u);
+  EXPECT_EQ(r.collapsedTriangles.first[0].triangle, 4u);
+  EXPECT_EQ(r.duplicateTriangles.count, 2u);
+  EXPECT_EQ(r.zeroAreaTriangles.count, 1u);
+  EXPECT_EQ(r.zeroAreaTriangles.first[0].triangle, 7u);
+}
+
+TEST(MeshInspection, TwoSeparateTetrahedraAreTwoComponents)
+{
+  std::vector<Vec3> points = kTetraPoints;
+  auto faces = kTetraFaces;
+  for (const Vec3& p : kTetraPoints)
+  {
+    points.push_back(p + Vec3{5, 0, 0});
+  }
+  for (const auto& f : kTetraFaces)
+  {
+    faces.push_back({f[0] + 4, f[1] + 4, f[2] + 4});
+  }
+  const MeshInspection r = inspectMesh(soupOf(points, faces));
+  EXPECT_EQ(r.components, 2u);
+  EXPECT_TRUE(r.closed);
+}
+
+// --- The shared meshes against VTK's filters ---------------------------------------------------
+
+struct VtkCounts
+{
+  std::size_t boundaryEdges = 0;
+  std::size_t nonManifoldEdges = 0;
+  std::size_t boundaryLoops = 0;
+  std::size_t components = 0;
+};
+
+vtkSmartPointer<vtkPolyData> cleanedPolyData(const TriangleSoup& soup)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const Vec3& p : soup.points)
+  {
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : soup.triangles)
+  {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> raw;
+  raw->SetPoints(points);
+  raw->SetPolys(polys);
+  // Identical points merged (tolerance 0), and triangles that collapse removed rather than made
+  // lines: the inspection's definitions.
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(raw);
+  clean->SetTolerance(0.0);
+  clean->PointMergingOn();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertLinesToPointsOff();
+  clean->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  clean->Update();
+  return clean->GetOutput();
+}
+
+std::size_t regions(vtkPolyData* data)
+{
+  vtkNew<vtkPolyDataConnectivityFilter> connectivity;
+  connectivity->SetInputData(data);
+  connectivity->SetExtractionModeToAllRegions();
+  connectivity->Update();
+  return static_cast<std::size_t>(connectivity->GetNumberOfExtractedRegions());
+}
+
+VtkCounts countWithVtk(const TriangleSoup& soup)
+{
+  const vtkSmartPointer<vtkPolyData> cleaned = cleanedPolyData(soup);
+  VtkCounts counts;
+  for (const bool boundary : {true, false})
+  {
+    vtkNew<vtkFeatureEdges> edges;
+    edges->SetInputData(cleaned);
+    edges->SetBoundaryEdges(boundary);
+    edges->SetNonManifoldEdges(!boundary);
+    edges->FeatureEdgesOff();
+    edges->ManifoldEdgesOff();
+    edges->ColoringOff();
+    edges->Update();
+    const auto lines = static_cast<std::size_t>(edges->GetOutput()->GetNumberOfLines());
+    if (boundary)
+    {
+      counts.boundaryEdges = lines;
+      counts.boundaryLoops = lines > 0 ? regions(edges->GetOutput()) : 0;
+    }
+    else
+    {
+      counts.nonManifoldEdges = lines;
+    }
+  }
+  counts.components = regions(cleaned);
+  return counts;
+}
+
+// Collapsed and duplicate triangles by corner positions in an ordered map: another route than
+// the inspection's vertex ids and hash sets.
+std::pair<std::size_t, std::size_t> collapsedAndDuplicates(const TriangleSoup& soup)
+{
+  using Corner = std::array<double, 3>;
+  std::map<std::array<Corner, 3>, int> seen;
+  std::size_t collapsed = 0;
+  std::size_t duplicates = 0;
+  for (const auto& t : soup.triangles)
+  {
+    std::array<Corner, 3> corners;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3& p = soup.points[t[k]];
+      // + 0.0 turns -0 into +0.
+      corners[k] = {p.x + 0.0, p.y + 0.0, p.z + 0.0};
+    }
+    collapsed += corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2];
+    std::sort(corners.begin(), corners.end());
+    duplicates += seen[corners]++ > 0 ? 1 : 0;
+  }
+  return {collapsed, duplicates};
+}
+
+class SharedMeshInspection : public testing::TestWithParam<const char*>
+{};
+
+TEST_P(SharedMeshInspection, CountsAgreeWithVtksTopologyFilters)
+{
+  const std::string path = std::string(PROXIMA_SHARED_MESHES) + "/" + GetParam();
+  if (!std::filesystem::exists(path))
+  {
+    GTEST_SKIP() << path << " is absent (the shared meshes, ../shared/data/meshes)";
+  }
+  const TriangleSoup soup = readMeshFile(path);
+  const MeshInspection r = inspectMesh(soup);
+  const VtkCounts vtk = countWithVtk(soup);
+  EXPECT_EQ(r.boundaryEdges.count, vtk.boundaryEdges);
+  EXPECT_EQ(r.nonManifoldEdges.count, vtk.nonManifoldEdges);
+  EXPECT_EQ(r.boundaryLoops.count, vtk.boundaryLoops);
+  EXPECT_EQ(r.components, vtk.components);
+  const auto [collapsed, duplicates] = collapsedAndDuplicates(soup);
+  EXPECT_EQ(r.collapsedTriangles.count, collapsed);
+  EXPECT_EQ(r.duplicateTriangles.count, duplicates);
+  EXPECT_EQ(r.closed, vtk.boundaryEdges == 0 && vtk.nonManifoldEdges == 0);
+  std::printf("%s: %zu triangles, %zu vertices, %zu boundary edges in %zu loops, %zu non-manifold, "
+              "%zu misoriented, %zu collapsed, %zu zero-area, %zu duplicate, %zu components, %s\n",
+              GetParam(), r.triangles, r.vertices, r.boundaryEdges.count, r.boundaryLoops.count,
+              r.nonManifoldEdges.count, r.misorientedEdges.count, r.collapsedTriangles.count,
+              r.zeroAreaTriangles.count, r.duplicateTriangles.count, r.components,
+              r.closed ? "closed" : "open");
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedMeshes, SharedMeshInspection,
+                         testing::Values("stanford-bunny.obj", "teapot.obj",
+                                         "spot_triangulated.obj", "abc_00000050_trimesh_000.stl",
+                                         "fandisk.off", "M3x10_screw.stl", "featuretype.STL",
+                                         "VH_M_Liver.glb", "Angel_decimated.vtp"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           std::string name = info.param;
+                           for (char& c : name)
+                           {
+                             c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           }
+                           return name;
+                         });
+
+} // namespace
+} // namespace proxima
