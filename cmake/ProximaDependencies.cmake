@@ -83,8 +83,9 @@ if(PROXIMA_BUILD_APPS)
   find_package(X11 REQUIRED)
 endif()
 
-if(PROXIMA_BUILD_TESTING OR PROXIMA_BUILD_BENCHMARKS)
-  # Exact geometry as an independent oracle in tests and as the AABB-tree baseline in benchmarks.
+if(PROXIMA_BUILD_IO OR PROXIMA_BUILD_TESTING OR PROXIMA_BUILD_BENCHMARKS)
+  # Exact geometry: the self-intersections of `proxima inspect` (IO/MeshInspection), an
+  # independent oracle in tests, and the AABB-tree baseline in benchmarks.
   find_package(CGAL REQUIRED)
 endif()
 

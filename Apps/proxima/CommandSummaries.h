@@ -25,7 +25,7 @@ inline constexpr CommandSummary kTreeSummary{
   "tree", "Read a mesh, build its sphere tree and print sizes and timings as JSON."};
 inline constexpr CommandSummary kInspectSummary{
   "inspect", "Report a mesh's defects as JSON: holes, non-manifold and misoriented edges, "
-             "degenerate and duplicate triangles, pieces"};
+             "degenerate, duplicate and self-intersecting triangles, pieces"};
 inline constexpr CommandSummary kGenerateSummary{
   "generate", "Write a procedural mesh (sizes in metres) to a file."};
 inline constexpr CommandSummary kDevicesSummary{

@@ -87,18 +87,24 @@ int runInspect(const InspectArguments& arguments)
   json["collapsed_triangles"] = defectJson(r.collapsedTriangles, "centroid");
   json["zero_area_triangles"] = defectJson(r.zeroAreaTriangles, "centroid");
   json["duplicate_triangles"] = defectJson(r.duplicateTriangles, "centroid");
+  json["self_intersections"] = defectJson(r.selfIntersections, "centroid");
+  for (std::size_t i = 0; i < r.selfIntersections.first.size(); ++i)
+  {
+    json["self_intersections"]["first"][i]["other_triangle"] = r.selfIntersections.first[i].other;
+  }
   json["seconds"] = seconds;
   report.write(json.dump(2) + "\n");
   report.commit();
 
   char line[512];
-  std::snprintf(line, sizeof line,
-                "%s: %s, %zu triangles, %zu components, %zu boundary edges in %zu loops, %zu "
-                "non-manifold, %zu misoriented, %zu degenerate, %zu duplicate\n",
-                arguments.report.c_str(), r.closed ? "closed" : "open", r.triangles, r.components,
-                r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
-                r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
-                r.duplicateTriangles.count);
+  std::snprintf(
+    line, sizeof line,
+    "%s: %s, %zu triangles, %zu components, %zu boundary edges in %zu loops, %zu "
+    "non-manifold, %zu misoriented, %zu degenerate, %zu duplicate, %zu self-intersecting pairs\n",
+    arguments.report.c_str(), r.closed ? "closed" : "open", r.triangles, r.components,
+    r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
+    r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
+    r.duplicateTriangles.count, r.selfIntersections.count);
   writeStandardOutput(line);
   return kExitOk;
 }

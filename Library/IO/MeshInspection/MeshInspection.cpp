@@ -252,6 +252,8 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
       roots.insert(pieces.find(v));
     }
   }
+  progress(0.85);
+  report.selfIntersections = findSelfIntersections(soup, vertexOfPoint, kept);
   report.vertices = vertexPosition.size();
   report.components = roots.size();
   report.closed = report.triangles > report.collapsedTriangles.count &&

@@ -13,8 +13,12 @@
 //     vertices whose cross product is exactly zero in double precision; both are degenerate;
 //   - a duplicate triangle has the same three vertices as an earlier one, in any order;
 //   - components are the pieces connected through shared vertices;
+//   - a self-intersection is a pair of triangles that share no vertex and meet (touching counts),
+//     decided exactly (CGAL's exact predicates; collapsed and collinear triangles left out); a
+//     fold between neighbours, which share a vertex, is not counted;
 //   - the mesh is closed when it has triangles and no boundary or non-manifold edge.
-// Plain C++ over the kernel's TriangleSoup: linear in the triangles, with hash maps.
+// Over the kernel's TriangleSoup: linear in the triangles, with hash maps, but for the
+// self-intersections (CGAL's box intersection for the candidate pairs, then its exact test).
 #pragma once
 
 #include "Core/Vec3.h"
@@ -35,6 +39,8 @@ struct DefectLocation
 {
   std::uint32_t triangle = 0;
   Vec3 point;
+  /// For a pair of triangles (self-intersections): the other one (always above `triangle`).
+  std::uint32_t other = 0;
 };
 
 /// A count and the places of its first few instances (MeshInspectionOptions::locationsKept).
@@ -59,6 +65,8 @@ struct MeshInspection
   DefectCount collapsedTriangles;
   DefectCount zeroAreaTriangles;
   DefectCount duplicateTriangles;
+  /// Pairs listed in the order of their first, then second, triangle.
+  DefectCount selfIntersections;
   std::size_t components = 0;
   bool closed = false;
 };
@@ -69,6 +77,12 @@ struct MeshInspectionOptions
   /// Called with the fraction done (0 to 1) between phases, for progress on long work.
   std::function<void(double)> progress;
 };
+
+/// The self-intersecting pairs of `soup` (as MeshInspection::selfIntersections), its corners merged
+/// into the vertices `vertexOfPoint` gives.
+DefectCount findSelfIntersections(const TriangleSoup& soup,
+                                  const std::vector<std::uint32_t>& vertexOfPoint,
+                                  std::size_t locationsKept);
 
 MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options = {});
 

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
 #include <vtkCellArray.h>
 #include <vtkCleanPolyData.h>
 #include <vtkFeatureEdges.h>
@@ -250,6 +253,63 @@ std::pair<std::size_t, std::size_t> collapsedAndDuplicates(const TriangleSoup& s
   return {collapsed, duplicates};
 }
 
+// Self-intersecting pairs by brute force: every pair of triangles whose boxes overlap, tested with
+// CGAL's exact predicate, without the box-intersection broad phase the inspection uses.
+std::size_t selfIntersectionsByBruteForce(const TriangleSoup& soup)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Kernel::Triangle_3> triangles;
+  std::vector<std::size_t> index;
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const auto& c = soup.triangles[t];
+    Kernel::Point_3 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = {soup.points[c[k]].x, soup.points[c[k]].y, soup.points[c[k]].z};
+    }
+    if (!CGAL::collinear(p[0], p[1], p[2]))
+    {
+      triangles.emplace_back(p[0], p[1], p[2]);
+      index.push_back(t);
+    }
+  }
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const CGAL::Bbox_3 box = triangles[i].bbox();
+    for (std::size_t j = i + 1; j < triangles.size(); ++j)
+    {
+      if (!CGAL::do_overlap(box, triangles[j].bbox()))
+      {
+        continue;
+      }
+      bool shared = false;
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int b = 0; b < 3; ++b)
+        {
+          shared = shared || triangles[i].vertex(a) == triangles[j].vertex(b);
+        }
+      }
+      pairs += !shared && CGAL::do_intersect(triangles[i], triangles[j]) ? 1 : 0;
+    }
+  }
+  return pairs;
+}
+
+TEST(MeshInspection, TwoCrossingTrianglesIntersectAndNeighboursDoNot)
+{
+  // Triangle 0 in z = 0; triangle 1 stands through it; triangle 2 shares an edge with 0.
+  const MeshInspection r = inspectMesh(soupOf(
+    {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.2, 0.2, -1}, {0.2, 0.2, 1}, {0.3, 0.1, 1}, {1, 1, 0}},
+    {{0, 1, 2}, {3, 4, 5}, {1, 6, 2}}));
+  EXPECT_EQ(r.selfIntersections.count, 1u);
+  ASSERT_EQ(r.selfIntersections.first.size(), 1u);
+  EXPECT_EQ(r.selfIntersections.first[0].triangle, 0u);
+  EXPECT_EQ(r.selfIntersections.first[0].other, 1u);
+}
+
 class SharedMeshInspection : public testing::TestWithParam<const char*>
 {};
 
@@ -271,12 +331,19 @@ TEST_P(SharedMeshInspection, CountsAgreeWithVtksTopologyFilters)
   EXPECT_EQ(r.collapsedTriangles.count, collapsed);
   EXPECT_EQ(r.duplicateTriangles.count, duplicates);
   EXPECT_EQ(r.closed, vtk.boundaryEdges == 0 && vtk.nonManifoldEdges == 0);
-  std::printf("%s: %zu triangles, %zu vertices, %zu boundary edges in %zu loops, %zu non-manifold, "
-              "%zu misoriented, %zu collapsed, %zu zero-area, %zu duplicate, %zu components, %s\n",
-              GetParam(), r.triangles, r.vertices, r.boundaryEdges.count, r.boundaryLoops.count,
-              r.nonManifoldEdges.count, r.misorientedEdges.count, r.collapsedTriangles.count,
-              r.zeroAreaTriangles.count, r.duplicateTriangles.count, r.components,
-              r.closed ? "closed" : "open");
+  // The brute force is quadratic: meshes up to 16,000 triangles.
+  if (soup.triangles.size() <= 16000)
+  {
+    EXPECT_EQ(r.selfIntersections.count, selfIntersectionsByBruteForce(soup));
+  }
+  std::printf(
+    "%s: %zu triangles, %zu vertices, %zu boundary edges in %zu loops, %zu non-manifold, "
+    "%zu misoriented, %zu collapsed, %zu zero-area, %zu duplicate, %zu self-intersecting pairs, "
+    "%zu components, %s\n",
+    GetParam(), r.triangles, r.vertices, r.boundaryEdges.count, r.boundaryLoops.count,
+    r.nonManifoldEdges.count, r.misorientedEdges.count, r.collapsedTriangles.count,
+    r.zeroAreaTriangles.count, r.duplicateTriangles.count, r.selfIntersections.count, r.components,
+    r.closed ? "closed" : "open");
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, SharedMeshInspection,
