@@ -3,6 +3,7 @@
 // pieces, each counted with the places of the first few, written as JSON. Counts are of the file's
 // own geometry: corners merge only where their coordinates are identical.
 #include "Command.h"
+#include "MeshFileOptions.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
@@ -114,15 +115,7 @@ Command addInspectCommand(CLI::App& parent)
 {
   auto arguments = std::make_shared<InspectArguments>();
   CLI::App* app = parent.add_subcommand(kInspectSummary.name, kInspectSummary.description);
-  app
-    ->add_option("--mesh", arguments->mesh,
-                 "Mesh file: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
-    ->required();
-  app
-    ->add_option("--scale", arguments->scale,
-                 "Factor from file units to metres, applied to every coordinate")
-    ->check(numberIn(kMeshScaleRange))
-    ->capture_default_str();
+  addMeshFileOptions(*app, arguments->mesh, arguments->scale);
   app->add_option("--report", arguments->report, "The report to write (JSON)")->required();
   app
     ->add_option("--locations", arguments->locations,

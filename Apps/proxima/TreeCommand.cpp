@@ -1,6 +1,7 @@
 // `proxima tree`: reads a mesh, builds its sphere tree and reports sizes and times as JSON, so
 // that a script (or a person choosing leaf sizes) sees what a mesh costs before running it.
 #include "Command.h"
+#include "MeshFileOptions.h"
 #include "Validators.h"
 
 #include "Geometry/SphereTree.h"
@@ -78,15 +79,7 @@ Command addTreeCommand(CLI::App& parent)
   // Shared with the run callback: CLI11 writes the parsed values here.
   auto arguments = std::make_shared<TreeArguments>();
   CLI::App* app = parent.add_subcommand(kTreeSummary.name, kTreeSummary.description);
-  app
-    ->add_option("--mesh", arguments->mesh,
-                 "Mesh file: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
-    ->required();
-  app
-    ->add_option("--scale", arguments->scale,
-                 "Factor from file units to metres, applied to every coordinate")
-    ->check(numberIn(kMeshScaleRange))
-    ->capture_default_str();
+  addMeshFileOptions(*app, arguments->mesh, arguments->scale);
   app
     ->add_option("--leaf-size-factor", arguments->tree.leafSizeFactor,
                  "Split triangles longer than this many median edge lengths into several leaf "
