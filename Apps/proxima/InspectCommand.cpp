@@ -32,6 +32,8 @@ struct InspectArguments
   double scale = 1.0;
   std::string report;
   std::size_t locations = 10;
+  double sliverAngle = 1.0;
+  double weld = 0.0;
 };
 
 nlohmann::ordered_json defectJson(const DefectCount& defect, const char* placeKind)
@@ -45,6 +47,31 @@ nlohmann::ordered_json defectJson(const DefectCount& defect, const char* placeKi
   return {{"count", defect.count}, {"first", places}};
 }
 
+nlohmann::ordered_json countsJson(const MeshInspection& r)
+{
+  nlohmann::ordered_json json;
+  json["triangles"] = r.triangles;
+  json["vertices"] = r.vertices;
+  json["edges"] = r.edges;
+  json["closed"] = r.closed;
+  json["components"] = r.components;
+  json["boundary_edges"] = defectJson(r.boundaryEdges, "midpoint");
+  json["boundary_loops"] = defectJson(r.boundaryLoops, "midpoint");
+  json["boundary_loops"]["edges"] = r.boundaryLoopEdges;
+  json["non_manifold_edges"] = defectJson(r.nonManifoldEdges, "midpoint");
+  json["misoriented_edges"] = defectJson(r.misorientedEdges, "midpoint");
+  json["collapsed_triangles"] = defectJson(r.collapsedTriangles, "centroid");
+  json["zero_area_triangles"] = defectJson(r.zeroAreaTriangles, "centroid");
+  json["sliver_triangles"] = defectJson(r.sliverTriangles, "centroid");
+  json["duplicate_triangles"] = defectJson(r.duplicateTriangles, "centroid");
+  json["self_intersections"] = defectJson(r.selfIntersections, "centroid");
+  for (std::size_t i = 0; i < r.selfIntersections.first.size(); ++i)
+  {
+    json["self_intersections"]["first"][i]["other_triangle"] = r.selfIntersections.first[i].other;
+  }
+  return json;
+}
+
 int runInspect(const InspectArguments& arguments)
 {
   refuseOverlappingFiles({{arguments.report, "--report"}}, {{arguments.mesh, "--mesh"}});
@@ -54,6 +81,7 @@ int runInspect(const InspectArguments& arguments)
   const TriangleSoup soup = readMeshFile(arguments.mesh, arguments.scale);
   MeshInspectionOptions options;
   options.locationsKept = arguments.locations;
+  options.sliverAngleDegrees = arguments.sliverAngle;
   // Progress on a terminal only: a pipe or a log gets the result alone.
   if (isatty(STDERR_FILENO) != 0)
   {
@@ -75,37 +103,33 @@ int runInspect(const InspectArguments& arguments)
   json["mesh"] = arguments.mesh;
   json["scale"] = arguments.scale;
   json["vertex_merging"] = "identical coordinates";
-  json["triangles"] = r.triangles;
-  json["vertices"] = r.vertices;
-  json["edges"] = r.edges;
-  json["closed"] = r.closed;
-  json["components"] = r.components;
-  json["boundary_edges"] = defectJson(r.boundaryEdges, "midpoint");
-  json["boundary_loops"] = defectJson(r.boundaryLoops, "midpoint");
-  json["boundary_loops"]["edges"] = r.boundaryLoopEdges;
-  json["non_manifold_edges"] = defectJson(r.nonManifoldEdges, "midpoint");
-  json["misoriented_edges"] = defectJson(r.misorientedEdges, "midpoint");
-  json["collapsed_triangles"] = defectJson(r.collapsedTriangles, "centroid");
-  json["zero_area_triangles"] = defectJson(r.zeroAreaTriangles, "centroid");
-  json["duplicate_triangles"] = defectJson(r.duplicateTriangles, "centroid");
-  json["self_intersections"] = defectJson(r.selfIntersections, "centroid");
-  for (std::size_t i = 0; i < r.selfIntersections.first.size(); ++i)
+  json["sliver_angle_degrees"] = arguments.sliverAngle;
+  json.update(countsJson(r));
+  if (arguments.weld > 0.0)
   {
-    json["self_intersections"]["first"][i]["other_triangle"] = r.selfIntersections.first[i].other;
+    // The same counts after corners closer than the tolerance are made one: reported apart, so
+    // that the file's own defects are never hidden by the welding.
+    MeshInspectionOptions quiet = options;
+    quiet.progress = nullptr;
+    const MeshInspection welded = inspectMesh(weldCorners(soup, arguments.weld), quiet);
+    nlohmann::ordered_json weldedJson;
+    weldedJson["tolerance"] = arguments.weld;
+    weldedJson.update(countsJson(welded));
+    json["welded"] = weldedJson;
   }
   json["seconds"] = seconds;
   report.write(json.dump(2) + "\n");
   report.commit();
 
   char line[512];
-  std::snprintf(
-    line, sizeof line,
-    "%s: %s, %zu triangles, %zu components, %zu boundary edges in %zu loops, %zu "
-    "non-manifold, %zu misoriented, %zu degenerate, %zu duplicate, %zu self-intersecting pairs\n",
-    arguments.report.c_str(), r.closed ? "closed" : "open", r.triangles, r.components,
-    r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
-    r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
-    r.duplicateTriangles.count, r.selfIntersections.count);
+  std::snprintf(line, sizeof line,
+                "%s: %s, %zu triangles, %zu components, %zu boundary edges in %zu loops, %zu "
+                "non-manifold, %zu misoriented, %zu degenerate, %zu slivers, %zu duplicate, %zu "
+                "self-intersecting pairs\n",
+                arguments.report.c_str(), r.closed ? "closed" : "open", r.triangles, r.components,
+                r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
+                r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
+                r.sliverTriangles.count, r.duplicateTriangles.count, r.selfIntersections.count);
   writeStandardOutput(line);
   return kExitOk;
 }
@@ -122,6 +146,16 @@ Command addInspectCommand(CLI::App& parent)
                  "Places listed per kind of defect (the first in the file's triangle order)")
     ->check(CLI::Range(0, 100000))
     ->capture_default_str();
+  app
+    ->add_option("--sliver-angle", arguments->sliverAngle,
+                 "Degrees: a triangle with a smaller angle (and not degenerate) is a sliver")
+    ->check(numberIn(ParameterRange{0.0, false, 60.0, " degrees"}))
+    ->capture_default_str();
+  app
+    ->add_option("--weld", arguments->weld,
+                 "Also report the counts after welding corners closer than this (metres, after "
+                 "--scale), apart from the file's own")
+    ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
   return Command{app, [arguments] { return runInspect(*arguments); }};
 }
 

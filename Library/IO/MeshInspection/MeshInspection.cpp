@@ -1,6 +1,7 @@
 #include "IO/MeshInspection/MeshInspection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstring>
 #include <numeric>
@@ -74,6 +75,20 @@ struct EdgeUse
   int direction = 0;
   bool reported = false;
 };
+
+// The angle at `a` between the edges to `b` and `c`, in degrees.
+double angleDegrees(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 u = b - a;
+  const Vec3 v = c - a;
+  constexpr double kDegrees = 57.29577951308232;
+  return std::atan2(norm(cross(u, v)), dot(u, v)) * kDegrees;
+}
+
+double smallestAngleDegrees(const Vec3& p0, const Vec3& p1, const Vec3& p2)
+{
+  return std::min({angleDegrees(p0, p1, p2), angleDegrees(p1, p2, p0), angleDegrees(p2, p0, p1)});
+}
 
 std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
 {
@@ -156,6 +171,10 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
     if (norm(cross(p1 - p0, p2 - p0)) == 0.0)
     {
       note(report.zeroAreaTriangles, triangle, centroid, kept);
+    }
+    else if (smallestAngleDegrees(p0, p1, p2) < options.sliverAngleDegrees)
+    {
+      note(report.sliverTriangles, triangle, centroid, kept);
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -260,6 +279,79 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
                   report.boundaryEdges.count == 0 && report.nonManifoldEdges.count == 0;
   progress(1.0);
   return report;
+}
+
+TriangleSoup weldCorners(const TriangleSoup& soup, double tolerance)
+{
+  TriangleSoup welded = soup;
+  if (!(tolerance > 0.0) || soup.points.empty())
+  {
+    return welded;
+  }
+  // A grid of cells one tolerance wide: corners within the tolerance are in the same or
+  // neighbouring cells.
+  struct Cell
+  {
+    std::int64_t i, j, k;
+    bool operator==(const Cell& o) const { return i == o.i && j == o.j && k == o.k; }
+  };
+  struct CellHash
+  {
+    std::size_t operator()(const Cell& c) const
+    {
+      return static_cast<std::size_t>((c.i * 73856093) ^ (c.j * 19349663) ^ (c.k * 83492791));
+    }
+  };
+  const auto cellOf = [tolerance](const Vec3& p) {
+    return Cell{static_cast<std::int64_t>(std::floor(p.x / tolerance)),
+                static_cast<std::int64_t>(std::floor(p.y / tolerance)),
+                static_cast<std::int64_t>(std::floor(p.z / tolerance))};
+  };
+  std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> cells;
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    cells[cellOf(soup.points[i])].push_back(static_cast<std::uint32_t>(i));
+  }
+  DisjointSets groups(soup.points.size());
+  const double squared = tolerance * tolerance;
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    const Vec3& p = soup.points[i];
+    const Cell c = cellOf(p);
+    for (std::int64_t di = -1; di <= 1; ++di)
+    {
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+      {
+        for (std::int64_t dk = -1; dk <= 1; ++dk)
+        {
+          const auto found = cells.find(Cell{c.i + di, c.j + dj, c.k + dk});
+          if (found == cells.end())
+          {
+            continue;
+          }
+          for (const std::uint32_t other : found->second)
+          {
+            if (other > i && squaredDistance(soup.points[other], p) < squared)
+            {
+              groups.unite(static_cast<std::uint32_t>(i), other);
+            }
+          }
+        }
+      }
+    }
+  }
+  // Each group takes the position of its first corner in the file.
+  std::vector<std::int64_t> firstOfGroup(soup.points.size(), -1);
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    std::int64_t& first = firstOfGroup[groups.find(static_cast<std::uint32_t>(i))];
+    if (first < 0)
+    {
+      first = static_cast<std::int64_t>(i);
+    }
+    welded.points[i] = soup.points[static_cast<std::size_t>(first)];
+  }
+  return welded;
 }
 
 } // namespace proxima

@@ -11,6 +11,8 @@
 //   - an edge used by two triangles is misoriented when both traverse it the same way;
 //   - a collapsed triangle has two corners on the same vertex; a zero-area triangle three distinct
 //     vertices whose cross product is exactly zero in double precision; both are degenerate;
+//   - a sliver triangle is not degenerate but has an angle below a threshold (1 degree unless
+//     told otherwise);
 //   - a duplicate triangle has the same three vertices as an earlier one, in any order;
 //   - components are the pieces connected through shared vertices;
 //   - a self-intersection is a pair of triangles that share no vertex and meet (touching counts),
@@ -64,6 +66,9 @@ struct MeshInspection
   DefectCount misorientedEdges;
   DefectCount collapsedTriangles;
   DefectCount zeroAreaTriangles;
+  /// Triangles that are not degenerate but whose smallest angle is below
+  /// MeshInspectionOptions::sliverAngleDegrees.
+  DefectCount sliverTriangles;
   DefectCount duplicateTriangles;
   /// Pairs listed in the order of their first, then second, triangle.
   DefectCount selfIntersections;
@@ -74,6 +79,7 @@ struct MeshInspection
 struct MeshInspectionOptions
 {
   std::size_t locationsKept = 10;
+  double sliverAngleDegrees = 1.0;
   /// Called with the fraction done (0 to 1) between phases, for progress on long work.
   std::function<void(double)> progress;
 };
@@ -85,5 +91,11 @@ DefectCount findSelfIntersections(const TriangleSoup& soup,
                                   std::size_t locationsKept);
 
 MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options = {});
+
+/// `soup` with corners closer than `tolerance` (metres, in the soup's units) moved onto one
+/// position: corners within the tolerance of each other, transitively (a chain of close corners
+/// becomes one vertex), take the position of the first of them in the file. What
+/// `proxima inspect --weld` inspects beside the file's own geometry.
+TriangleSoup weldCorners(const TriangleSoup& soup, double tolerance);
 
 } // namespace proxima
