@@ -114,7 +114,7 @@ int runTrainerWindow(const TrainerWindowOptions& options, int argc, char** argv)
   const std::string noDisplay = shell::displayProblem("proxima-trainer");
   if (!noDisplay.empty())
   {
-    throw InputError("proxima-trainer", noDisplay);
+    throw InputError("the trainer's window", noDisplay);
   }
   // Before the application: the OpenGL context VTK's widget needs (DEBIAN-NOTES.md).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
