@@ -164,7 +164,8 @@ struct VtkCounts
   std::size_t components = 0;
 };
 
-vtkSmartPointer<vtkPolyData> cleanedPolyData(const TriangleSoup& soup)
+// The soup's points and triangles as VTK poly data, as they are in the file.
+vtkSmartPointer<vtkPolyData> rawPolyData(const TriangleSoup& soup)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -181,6 +182,12 @@ vtkSmartPointer<vtkPolyData> cleanedPolyData(const TriangleSoup& soup)
   vtkNew<vtkPolyData> raw;
   raw->SetPoints(points);
   raw->SetPolys(polys);
+  return raw;
+}
+
+vtkSmartPointer<vtkPolyData> cleanedPolyData(const TriangleSoup& soup)
+{
+  const vtkSmartPointer<vtkPolyData> raw = rawPolyData(soup);
   // Identical points merged (tolerance 0), and triangles that collapse removed rather than made
   // lines: the inspection's definitions.
   vtkNew<vtkCleanPolyData> clean;
@@ -318,21 +325,7 @@ TEST(MeshInspection, TwoCrossingTrianglesIntersectAndNeighboursDoNot)
 // the caller's counts).
 std::size_t sliversByVtk(const TriangleSoup& soup, const MeshInspection& r, double degrees)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const Vec3& p : soup.points)
-  {
-    points->InsertNextPoint(p.x, p.y, p.z);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& t : soup.triangles)
-  {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    polys->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> raw;
-  raw->SetPoints(points);
-  raw->SetPolys(polys);
+  const vtkSmartPointer<vtkPolyData> raw = rawPolyData(soup);
   vtkNew<vtkMeshQuality> quality;
   quality->SetInputData(raw);
   quality->SetTriangleQualityMeasureToMinAngle();
