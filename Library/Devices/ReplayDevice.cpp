@@ -40,6 +40,7 @@ void ReplayDevice::writeForce(const Vec3& force, double /*time*/)
 
 RecordingDevice::RecordingDevice(HapticDevice& device, std::size_t expectedTicks)
   : m_device(device)
+  , m_capacity(expectedTicks)
 {
   m_samples.reserve(expectedTicks);
 }
@@ -47,7 +48,15 @@ RecordingDevice::RecordingDevice(HapticDevice& device, std::size_t expectedTicks
 DeviceSample RecordingDevice::read(double time)
 {
   const DeviceSample sample = m_device.read(time);
-  m_samples.push_back(RecordedSample{time, sample});
+  // The servo thread calls this: within the reserved room only, so that it never allocates.
+  if (m_samples.size() < m_capacity)
+  {
+    m_samples.push_back(RecordedSample{time, sample});
+  }
+  else
+  {
+    ++m_leftOut;
+  }
   return sample;
 }
 

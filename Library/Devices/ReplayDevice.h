@@ -1,7 +1,8 @@
 // Playing back and recording device sessions. ReplayDevice answers each read with the recorded
 // sample of the latest time not after it (the recorded run's own tick times match exactly), and
 // reports a disconnect after the recording ends. RecordingDevice wraps any device and keeps what
-// it read, for writeDeviceRecording at the end (kept in memory, so the servo tick does no I/O).
+// it read, for writeDeviceRecording at the end (kept in memory, so the servo tick does no I/O, in
+// room reserved up front, so it does not allocate either: reads past it are counted, not kept).
 #pragma once
 
 #include "Devices/DeviceRecording.h"
@@ -34,7 +35,8 @@ private:
 class RecordingDevice final : public HapticDevice
 {
 public:
-  /// `device` must outlive this; `expectedTicks` reserves room up front.
+  /// `device` must outlive this; room for `expectedTicks` samples is reserved up front, and only
+  /// that many are kept.
   RecordingDevice(HapticDevice& device, std::size_t expectedTicks);
 
   DeviceSample read(double time) override;
@@ -43,10 +45,14 @@ public:
   const char* name() const override { return m_device.name(); }
 
   const std::vector<RecordedSample>& samples() const { return m_samples; }
+  /// Reads past the reserved room: passed on, not recorded.
+  std::size_t samplesLeftOut() const { return m_leftOut; }
 
 private:
   HapticDevice& m_device;
   std::vector<RecordedSample> m_samples;
+  std::size_t m_capacity = 0;
+  std::size_t m_leftOut = 0;
 };
 
 } // namespace proxima

@@ -323,7 +323,6 @@ bool HapticWindow::saveRecording(const std::string& path, std::string& error)
   m_haptics->Stop();
   if (!writeDeviceRecording(path, m_recorder->samples(), error))
   {
-    std::string ignored;
     m_haptics->Start();
     return false;
   }
@@ -475,7 +474,9 @@ void HapticWindow::refresh()
   }
   if (isRecording())
   {
-    text += "\nRECORDING";
+    // The recorder keeps the ten minutes it reserved room for (the servo thread never allocates).
+    text += m_recorder->samplesLeftOut() > 0 ? "\nRECORDING FULL: the first ten minutes are kept"
+                                             : "\nRECORDING";
   }
   const std::string extra = hudLines(state);
   if (!extra.empty())

@@ -66,6 +66,28 @@ TEST(ReplayDevice, ReplayedRunHasTheRecordedTrace)
   std::remove(file.c_str());
 }
 
+TEST(RecordingDevice, KeepsWhatItReservedRoomForAndCountsTheRest)
+{
+  SimulatedDevice simulated(pressStrokePath());
+  RecordingDevice recording(simulated, 10);
+  const RecordedSample* storage = nullptr;
+  for (int tick = 0; tick < 25; ++tick)
+  {
+    const double time = tick / kTestRate;
+    // Every read is passed on, recorded or not.
+    EXPECT_EQ(recording.read(time).position, simulated.read(time).position);
+    if (tick == 0)
+    {
+      storage = recording.samples().data();
+    }
+  }
+  ASSERT_EQ(recording.samples().size(), 10u);
+  EXPECT_EQ(recording.samplesLeftOut(), 15u);
+  // The first ten, in the room reserved at construction: no reallocation on the servo thread.
+  EXPECT_EQ(recording.samples().data(), storage);
+  EXPECT_EQ(recording.samples().back().time, 9 / kTestRate);
+}
+
 TEST(ReplayDevice, KeepsButtonsOrientationAndNaNAndEndsInADisconnect)
 {
   std::vector<RecordedSample> rows(2);
