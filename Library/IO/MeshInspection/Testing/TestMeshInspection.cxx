@@ -6,6 +6,7 @@
 #include "IO/MeshInspection/MeshInspection.h"
 
 #include "IO/Mesh/MeshReader.h"
+#include "VtkTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -164,30 +165,9 @@ struct VtkCounts
   std::size_t components = 0;
 };
 
-// The soup's points and triangles as VTK poly data, as they are in the file.
-vtkSmartPointer<vtkPolyData> rawPolyData(const TriangleSoup& soup)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const Vec3& p : soup.points)
-  {
-    points->InsertNextPoint(p.x, p.y, p.z);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& t : soup.triangles)
-  {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    polys->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> raw;
-  raw->SetPoints(points);
-  raw->SetPolys(polys);
-  return raw;
-}
-
 vtkSmartPointer<vtkPolyData> cleanedPolyData(const TriangleSoup& soup)
 {
-  const vtkSmartPointer<vtkPolyData> raw = rawPolyData(soup);
+  const vtkSmartPointer<vtkPolyData> raw = vtk::testing::polyDataOf(soup);
   // Identical points merged (tolerance 0), and triangles that collapse removed rather than made
   // lines: the inspection's definitions.
   vtkNew<vtkCleanPolyData> clean;
@@ -325,7 +305,7 @@ TEST(MeshInspection, TwoCrossingTrianglesIntersectAndNeighboursDoNot)
 // the caller's counts).
 std::size_t sliversByVtk(const TriangleSoup& soup, const MeshInspection& r, double degrees)
 {
-  const vtkSmartPointer<vtkPolyData> raw = rawPolyData(soup);
+  const vtkSmartPointer<vtkPolyData> raw = vtk::testing::polyDataOf(soup);
   vtkNew<vtkMeshQuality> quality;
   quality->SetInputData(raw);
   quality->SetTriangleQualityMeasureToMinAngle();
