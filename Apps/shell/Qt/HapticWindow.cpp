@@ -8,7 +8,6 @@
 #include "Devices/DeviceRecording.h"
 #include "Devices/DeviceRegistry.h"
 #include "Devices/ReplayDevice.h"
-#include "IO/InputChecks/InputError.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "Runtime/PointerDevice.h"
 #include "VTK/vtkHapticMouseFinger.h"
@@ -32,10 +31,8 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 
-#include <cmath>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <optional>
 
 namespace proxima::shell

@@ -12,7 +12,6 @@
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QMessageBox>
-#include <QPointer>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
 
