@@ -44,7 +44,8 @@ for _ in 1 2 3 4; do
   xdotool click --window "$window" 4
   sleep 0.05
 done
-sleep 2
+# The finger reaches its depth at 0.5 m/s at most; a loaded machine's window lags behind it.
+sleep 3
 xdotool key --clearmodifiers m
 sleep 0.5
 xdotool key --clearmodifiers ctrl+q
@@ -64,6 +65,8 @@ line=$(grep "proxima-trainer: closed Liver palpation" out.txt) ||
 echo "$line" | grep -q " 1 marks," || { echo "trainer-window: expected one mark: $line" >&2; exit 1; }
 echo "$line" | grep -q " 0 dropped)" || { echo "trainer-window: ticks dropped: $line" >&2; exit 1; }
 force=$(echo "$line" | sed -E 's/.*peak force ([0-9.]+) N.*/\1/')
-awk -v f="$force" 'BEGIN { exit !(f > 0.5) }' ||
+# Hovering on the surface gives no force; a press into the liver does (about 1.2 N here when
+# idle, 0.5 N seen under CI's load).
+awk -v f="$force" 'BEGIN { exit !(f > 0.2) }' ||
   { echo "trainer-window: expected a press on the liver: $line" >&2; exit 1; }
 echo "trainer-window: picked, pressed and marked with the mouse: $line"
