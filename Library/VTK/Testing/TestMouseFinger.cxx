@@ -133,15 +133,21 @@ TEST(MouseFinger, WheelNotchesPressTheFingerInAndTheForceIsKpTimesThePress)
   // The style did not zoom on them: the mouse finger took them.
   EXPECT_EQ(camera->GetDistance(), distanceBefore);
   EXPECT_DOUBLE_EQ(rig.mouse->GetDepth(), 2.0 * MouseRig::kRadius);
-  // Pressed 2r below the proxy on the floor: finger at z = -r, force kp * 2r straight up.
+  // Pressed 2r below the proxy on the floor: finger at z = -r, force kp * 2r straight up. The
+  // state's force comes from the servo, which can publish a tick or more after the finger got
+  // there on a loaded machine, so the wait is for both (a force that never arrives still fails).
+  const double pressedForce = MouseRig::kStiffness * 2.0 * MouseRig::kRadius;
   ASSERT_TRUE(waitFor([&] {
     rig.mouse->Update(0.0);
     const HapticState state = rig.haptics->GetState();
-    return std::abs(state.finger.z + MouseRig::kRadius) < 1e-9;
-  }));
+    return std::abs(state.finger.z + MouseRig::kRadius) < 1e-9 &&
+           std::abs(state.force.z - pressedForce) < 1e-6;
+  }))
+    << "finger z " << rig.haptics->GetState().finger.z << ", force z "
+    << rig.haptics->GetState().force.z;
   const HapticState state = rig.haptics->GetState();
   EXPECT_NEAR(state.proxy.z, MouseRig::kRadius, 1e-9);
-  EXPECT_NEAR(state.force.z, MouseRig::kStiffness * 2.0 * MouseRig::kRadius, 1e-6);
+  EXPECT_NEAR(state.force.z, pressedForce, 1e-6);
   EXPECT_NEAR(state.force.x, 0.0, 1e-6);
   EXPECT_NEAR(state.force.y, 0.0, 1e-6);
   // A notch back and Backspace lift it.
