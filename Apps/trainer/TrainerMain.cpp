@@ -14,7 +14,7 @@
 #include "Exercises/ExerciseFile.h"
 #include "Exercises/ExerciseReport.h"
 #include "Exercises/HeadlessSession.h"
-#include "Exercises/MarkTimesFile.h"
+#include "IO/PathAndTrace/MarkTimesFile.h"
 #if PROXIMA_TRAINER_WINDOW
 #include "Window/TrainerWindowMain.h"
 #endif

@@ -1,4 +1,4 @@
-#include "Exercises/MarkTimesFile.h"
+#include "IO/PathAndTrace/MarkTimesFile.h"
 
 #include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-namespace proxima::trainer
+namespace proxima
 {
 namespace
 {
@@ -81,4 +81,4 @@ std::vector<double> readMarkTimesFile(const std::string& path)
   return times;
 }
 
-} // namespace proxima::trainer
+} // namespace proxima
