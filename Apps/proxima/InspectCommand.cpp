@@ -1,14 +1,15 @@
 // `proxima inspect`: the defect report of a mesh (issue 18; Documentation/CadInspector.md): is it
 // closed, its holes, non-manifold and misoriented edges, degenerate and duplicate triangles and
 // pieces, each counted with the places of the first few, written as JSON. Counts are of the file's
-// own geometry: corners merge only where their coordinates are identical.
+// own geometry: corners merge only where their coordinates are identical. With a tool radius, also
+// where a ball of that radius cannot touch it (IO/MeshInspection/ToolReach.h).
 #include "Command.h"
 #include "MeshFileOptions.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/Mesh/MeshReader.h"
-#include "IO/MeshInspection/MeshInspection.h"
+#include "IO/MeshInspection/InspectionReport.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
@@ -19,6 +20,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -34,42 +36,23 @@ struct InspectArguments
   std::size_t locations = 10;
   double sliverAngle = 1.0;
   double weld = 0.0;
+  double toolRadius = 0.0;
 };
 
-nlohmann::ordered_json defectJson(const DefectCount& defect, const char* placeKind)
+// Progress on a terminal only: a pipe or a log gets the result alone. `phase` names the work.
+std::function<void(double)> terminalProgress(const char* phase)
 {
-  nlohmann::ordered_json places = nlohmann::ordered_json::array();
-  for (const DefectLocation& place : defect.first)
+  if (isatty(STDERR_FILENO) == 0)
   {
-    places.push_back(
-      {{"triangle", place.triangle}, {placeKind, {place.point.x, place.point.y, place.point.z}}});
+    return nullptr;
   }
-  return {{"count", defect.count}, {"first", places}};
-}
-
-nlohmann::ordered_json countsJson(const MeshInspection& r)
-{
-  nlohmann::ordered_json json;
-  json["triangles"] = r.triangles;
-  json["vertices"] = r.vertices;
-  json["edges"] = r.edges;
-  json["closed"] = r.closed;
-  json["components"] = r.components;
-  json["boundary_edges"] = defectJson(r.boundaryEdges, "midpoint");
-  json["boundary_loops"] = defectJson(r.boundaryLoops, "midpoint");
-  json["boundary_loops"]["edges"] = r.boundaryLoopEdges;
-  json["non_manifold_edges"] = defectJson(r.nonManifoldEdges, "midpoint");
-  json["misoriented_edges"] = defectJson(r.misorientedEdges, "midpoint");
-  json["collapsed_triangles"] = defectJson(r.collapsedTriangles, "centroid");
-  json["zero_area_triangles"] = defectJson(r.zeroAreaTriangles, "centroid");
-  json["sliver_triangles"] = defectJson(r.sliverTriangles, "centroid");
-  json["duplicate_triangles"] = defectJson(r.duplicateTriangles, "centroid");
-  json["self_intersections"] = defectJson(r.selfIntersections, "centroid");
-  for (std::size_t i = 0; i < r.selfIntersections.first.size(); ++i)
-  {
-    json["self_intersections"]["first"][i]["other_triangle"] = r.selfIntersections.first[i].other;
-  }
-  return json;
+  return [phase](double done) {
+    std::fprintf(stderr, "\rproxima inspect: %s %3.0f%%", phase, 100.0 * done);
+    if (done >= 1.0)
+    {
+      std::fprintf(stderr, "\n");
+    }
+  };
 }
 
 int runInspect(const InspectArguments& arguments)
@@ -82,20 +65,8 @@ int runInspect(const InspectArguments& arguments)
   MeshInspectionOptions options;
   options.locationsKept = arguments.locations;
   options.sliverAngleDegrees = arguments.sliverAngle;
-  // Progress on a terminal only: a pipe or a log gets the result alone.
-  if (isatty(STDERR_FILENO) != 0)
-  {
-    options.progress = [](double done) {
-      std::fprintf(stderr, "\rproxima inspect: %3.0f%%", 100.0 * done);
-      if (done >= 1.0)
-      {
-        std::fprintf(stderr, "\n");
-      }
-    };
-  }
+  options.progress = terminalProgress("defects");
   const MeshInspection r = inspectMesh(soup, options);
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   nlohmann::ordered_json json;
   json["format"] = "proxima-mesh-inspection";
@@ -104,7 +75,7 @@ int runInspect(const InspectArguments& arguments)
   json["scale"] = arguments.scale;
   json["vertex_merging"] = "identical coordinates";
   json["sliver_angle_degrees"] = arguments.sliverAngle;
-  json.update(countsJson(r));
+  json.update(meshInspectionJson(r));
   if (arguments.weld > 0.0)
   {
     // The same counts after corners closer than the tolerance are made one: reported apart, so
@@ -114,10 +85,27 @@ int runInspect(const InspectArguments& arguments)
     const MeshInspection welded = inspectMesh(weldCorners(soup, arguments.weld), quiet);
     nlohmann::ordered_json weldedJson;
     weldedJson["tolerance"] = arguments.weld;
-    weldedJson.update(countsJson(welded));
+    weldedJson.update(meshInspectionJson(welded));
     json["welded"] = weldedJson;
   }
-  json["seconds"] = seconds;
+  std::string reachLine;
+  if (arguments.toolRadius > 0.0)
+  {
+    ToolReachOptions reachOptions;
+    reachOptions.toolRadius = arguments.toolRadius;
+    reachOptions.locationsKept = arguments.locations;
+    reachOptions.progress = terminalProgress("tool reach");
+    const ToolReach reach =
+      findToolReach(soup, r.closed && r.misorientedEdges.count == 0, reachOptions);
+    json["tool_reach"] = toolReachJson(reach);
+    char text[256];
+    std::snprintf(
+      text, sizeof text, "a %g m tool cannot touch %.2f%% of the area, in %zu regions\n",
+      arguments.toolRadius, reach.area > 0.0 ? 100.0 * reach.unreachableArea / reach.area : 0.0,
+      reach.regionCount);
+    reachLine = text;
+  }
+  json["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.write(json.dump(2) + "\n");
   report.commit();
 
@@ -130,7 +118,7 @@ int runInspect(const InspectArguments& arguments)
                 r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
                 r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
                 r.sliverTriangles.count, r.duplicateTriangles.count, r.selfIntersections.count);
-  writeStandardOutput(line);
+  writeStandardOutput(line + reachLine);
   return kExitOk;
 }
 } // namespace
@@ -156,6 +144,11 @@ Command addInspectCommand(CLI::App& parent)
                  "Also report the counts after welding corners closer than this (metres, after "
                  "--scale), apart from the file's own")
     ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
+  app
+    ->add_option("--tool-radius", arguments->toolRadius,
+                 "Also report where a ball tool of this radius cannot touch the surface (metres, "
+                 "after --scale)")
+    ->check(numberIn(ParameterRange{0.0, false, 1e6, " m"}));
   return Command{app, [arguments] { return runInspect(*arguments); }};
 }
 

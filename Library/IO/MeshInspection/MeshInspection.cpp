@@ -103,7 +103,32 @@ void note(DefectCount& defect, std::uint32_t triangle, const Vec3& point, std::s
     defect.first.push_back({triangle, point});
   }
 }
+
+void noteEdge(DefectCount& defect, std::uint32_t triangle, const Vec3& a, const Vec3& b,
+              std::size_t kept)
+{
+  ++defect.count;
+  if (defect.first.size() < kept)
+  {
+    defect.first.push_back({triangle, (a + b) * 0.5, 0, a, b});
+  }
+}
 } // namespace
+
+std::vector<std::uint32_t> mergeIdenticalCorners(const TriangleSoup& soup, std::size_t& vertexCount)
+{
+  std::unordered_map<PositionKey, std::uint32_t, PositionHash> vertexOf;
+  vertexOf.reserve(soup.points.size());
+  std::vector<std::uint32_t> vertexOfPoint(soup.points.size());
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    const auto [it, added] =
+      vertexOf.try_emplace(keyOf(soup.points[i]), static_cast<std::uint32_t>(vertexOf.size()));
+    vertexOfPoint[i] = it->second;
+  }
+  vertexCount = vertexOf.size();
+  return vertexOfPoint;
+}
 
 MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options)
 {
@@ -118,19 +143,12 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
   report.triangles = soup.triangles.size();
 
   // Corners on identical coordinates are one vertex.
-  std::unordered_map<PositionKey, std::uint32_t, PositionHash> vertexOf;
-  vertexOf.reserve(soup.points.size());
-  std::vector<std::uint32_t> vertexOfPoint(soup.points.size());
-  std::vector<Vec3> vertexPosition;
+  std::size_t vertexCount = 0;
+  const std::vector<std::uint32_t> vertexOfPoint = mergeIdenticalCorners(soup, vertexCount);
+  std::vector<Vec3> vertexPosition(vertexCount);
   for (std::size_t i = 0; i < soup.points.size(); ++i)
   {
-    const auto [it, added] = vertexOf.try_emplace(
-      keyOf(soup.points[i]), static_cast<std::uint32_t>(vertexPosition.size()));
-    if (added)
-    {
-      vertexPosition.push_back(soup.points[i]);
-    }
-    vertexOfPoint[i] = it->second;
+    vertexPosition[vertexOfPoint[i]] = soup.points[i];
   }
   progress(0.2);
 
@@ -208,7 +226,6 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
       const std::uint32_t a = c[k];
       const std::uint32_t b = c[(k + 1) % 3];
       EdgeUse& use = edges[edgeKey(a, b)];
-      const Vec3 midpoint = (vertexPosition[a] + vertexPosition[b]) * 0.5;
       if (use.count == 1)
       {
         boundaryGroups.unite(a, b);
@@ -220,15 +237,15 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
       use.reported = true;
       if (use.count == 1)
       {
-        note(report.boundaryEdges, triangle, midpoint, kept);
+        noteEdge(report.boundaryEdges, triangle, vertexPosition[a], vertexPosition[b], kept);
       }
       else if (use.count > 2)
       {
-        note(report.nonManifoldEdges, triangle, midpoint, kept);
+        noteEdge(report.nonManifoldEdges, triangle, vertexPosition[a], vertexPosition[b], kept);
       }
       else if (use.direction != 0)
       {
-        note(report.misorientedEdges, triangle, midpoint, kept);
+        noteEdge(report.misorientedEdges, triangle, vertexPosition[a], vertexPosition[b], kept);
       }
     }
   }

@@ -43,6 +43,9 @@ struct DefectLocation
   Vec3 point;
   /// For a pair of triangles (self-intersections): the other one (always above `triangle`).
   std::uint32_t other = 0;
+  /// For an edge: its two ends (the window draws them).
+  Vec3 edgeStart;
+  Vec3 edgeEnd;
 };
 
 /// A count and the places of its first few instances (MeshInspectionOptions::locationsKept).
@@ -83,6 +86,12 @@ struct MeshInspectionOptions
   /// Called with the fraction done (0 to 1) between phases, for progress on long work.
   std::function<void(double)> progress;
 };
+
+/// The vertex of each of the soup's points: points on identical coordinates (but for the sign of
+/// zero) are one vertex, numbered in the order of their first point. `vertexCount` is set to the
+/// number of vertices.
+std::vector<std::uint32_t> mergeIdenticalCorners(const TriangleSoup& soup,
+                                                 std::size_t& vertexCount);
 
 /// The self-intersecting pairs of `soup` (as MeshInspection::selfIntersections), its corners merged
 /// into the vertices `vertexOfPoint` gives.
