@@ -220,6 +220,17 @@ bool HapticWindow::useDevice(const std::string& spec, std::string& error)
   return true;
 }
 
+bool HapticWindow::setProxyRadius(double radius, std::string& error)
+{
+  m_settings.radius = radius;
+  m_haptics->SetProxyRadius(radius);
+  m_representation->SetForceScale(30.0 * radius / m_settings.maxForce);
+  m_mouse->SetDepthStep(0.5 * radius);
+  m_mouse->SetPressSpeed(5.0 * radius);
+  // The proxy where it was could hold a larger sphere inside the surface it touched.
+  return restartWith(nullptr, false, error, m_settings.start);
+}
+
 bool HapticWindow::restartWith(std::unique_ptr<HapticDevice> device, bool record,
                                std::string& error, const std::optional<Vec3>& proxyStart)
 {
@@ -347,6 +358,11 @@ void HapticWindow::toggleRecording()
     m_recordAction->setChecked(true);
     showProblem(error);
   }
+}
+
+std::string HapticWindow::screenshotPng(const std::string& path)
+{
+  return windowPng(m_window, path);
 }
 
 bool HapticWindow::saveScreenshot(const std::string& path, std::string& error)

@@ -94,8 +94,17 @@ public:
   /// with `error` if the file could not be written (the recording is kept to try again).
   bool saveRecording(const std::string& path, std::string& error);
 
+  /// Gives the proxy a new radius (a probe's, a tool's): the loops restart with the proxy back at
+  /// the start, between the camera and the scene, where a larger sphere has room. False with
+  /// `error` if the loops did not start again.
+  bool setProxyRadius(double radius, std::string& error);
+  double proxyRadius() const { return m_settings.radius; }
+
   /// The window's picture, as PNG bytes written atomically to `path`; false with `error`.
   bool saveScreenshot(const std::string& path, std::string& error);
+  /// The window's picture as PNG bytes (for a file written with others); throws OutputError
+  /// naming `path` when there is none.
+  std::string screenshotPng(const std::string& path);
 
   /// The newest state the loops published, the HUD's text and the mouse finger (tests drive it).
   HapticState latestState() const;
