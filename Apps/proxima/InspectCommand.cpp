@@ -113,11 +113,12 @@ int runInspect(const InspectArguments& arguments)
   std::snprintf(line, sizeof line,
                 "%s: %s, %zu triangles, %zu components, %zu boundary edges in %zu loops, %zu "
                 "non-manifold, %zu misoriented, %zu degenerate, %zu slivers, %zu duplicate, %zu "
-                "self-intersecting pairs\n",
+                "self-intersecting pairs, %zu folds\n",
                 arguments.report.c_str(), r.closed ? "closed" : "open", r.triangles, r.components,
                 r.boundaryEdges.count, r.boundaryLoops.count, r.nonManifoldEdges.count,
                 r.misorientedEdges.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
-                r.sliverTriangles.count, r.duplicateTriangles.count, r.selfIntersections.count);
+                r.sliverTriangles.count, r.duplicateTriangles.count, r.selfIntersections.count,
+                r.folds.count);
   writeStandardOutput(line + reachLine);
   return kExitOk;
 }

@@ -1,5 +1,7 @@
 #include "IO/MeshInspection/InspectionReport.h"
 
+#include <utility>
+
 namespace proxima
 {
 namespace
@@ -38,9 +40,15 @@ nlohmann::ordered_json meshInspectionJson(const MeshInspection& r)
   json["sliver_triangles"] = defectJson(r.sliverTriangles, "centroid");
   json["duplicate_triangles"] = defectJson(r.duplicateTriangles, "centroid");
   json["self_intersections"] = defectJson(r.selfIntersections, "centroid");
-  for (std::size_t i = 0; i < r.selfIntersections.first.size(); ++i)
+  json["folds"] = defectJson(r.folds, "centroid");
+  const std::pair<const char*, const DefectCount*> pairKinds[] = {
+    {"self_intersections", &r.selfIntersections}, {"folds", &r.folds}};
+  for (const auto& [key, pairs] : pairKinds)
   {
-    json["self_intersections"]["first"][i]["other_triangle"] = r.selfIntersections.first[i].other;
+    for (std::size_t i = 0; i < pairs->first.size(); ++i)
+    {
+      json[key]["first"][i]["other_triangle"] = pairs->first[i].other;
+    }
   }
   return json;
 }

@@ -289,7 +289,9 @@ MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions
     }
   }
   progress(0.85);
-  report.selfIntersections = findSelfIntersections(soup, vertexOfPoint, kept);
+  CrossingPairs crossing = findCrossingPairs(soup, vertexOfPoint, kept);
+  report.selfIntersections = std::move(crossing.selfIntersections);
+  report.folds = std::move(crossing.folds);
   report.vertices = vertexPosition.size();
   report.components = roots.size();
   report.closed = report.triangles > report.collapsedTriangles.count &&

@@ -16,8 +16,11 @@
 //   - a duplicate triangle has the same three vertices as an earlier one, in any order;
 //   - components are the pieces connected through shared vertices;
 //   - a self-intersection is a pair of triangles that share no vertex and meet (touching counts),
-//     decided exactly (CGAL's exact predicates; collapsed and collinear triangles left out); a
-//     fold between neighbours, which share a vertex, is not counted;
+//     decided exactly (CGAL's exact predicates; collapsed and collinear triangles left out);
+//   - a fold is a pair of neighbours, sharing a vertex or an edge (but not all three vertices: a
+//     duplicate), that meet anywhere beyond what they share, decided exactly too; a
+//     self-intersection and a fold together are what CGAL's Polygon Mesh Processing calls a
+//     self-intersection;
 //   - the mesh is closed when it has triangles and no boundary or non-manifold edge.
 // Over the kernel's TriangleSoup: linear in the triangles, with hash maps, but for the
 // self-intersections (CGAL's box intersection for the candidate pairs, then its exact test).
@@ -75,6 +78,8 @@ struct MeshInspection
   DefectCount duplicateTriangles;
   /// Pairs listed in the order of their first, then second, triangle.
   DefectCount selfIntersections;
+  /// Neighbours (sharing a vertex or an edge) that meet beyond what they share, listed as pairs.
+  DefectCount folds;
   std::size_t components = 0;
   bool closed = false;
 };
@@ -93,11 +98,16 @@ struct MeshInspectionOptions
 std::vector<std::uint32_t> mergeIdenticalCorners(const TriangleSoup& soup,
                                                  std::size_t& vertexCount);
 
-/// The self-intersecting pairs of `soup` (as MeshInspection::selfIntersections), its corners merged
-/// into the vertices `vertexOfPoint` gives.
-DefectCount findSelfIntersections(const TriangleSoup& soup,
-                                  const std::vector<std::uint32_t>& vertexOfPoint,
-                                  std::size_t locationsKept);
+/// The self-intersecting and the folded pairs of `soup` (as MeshInspection::selfIntersections
+/// and ::folds), its corners merged into the vertices `vertexOfPoint` gives.
+struct CrossingPairs
+{
+  DefectCount selfIntersections;
+  DefectCount folds;
+};
+CrossingPairs findCrossingPairs(const TriangleSoup& soup,
+                                const std::vector<std::uint32_t>& vertexOfPoint,
+                                std::size_t locationsKept);
 
 MeshInspection inspectMesh(const TriangleSoup& soup, const MeshInspectionOptions& options = {});
 
