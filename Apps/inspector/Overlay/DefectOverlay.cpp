@@ -120,12 +120,15 @@ void DefectOverlay::showDefects(const TriangleSoup& soup, const MeshInspection& 
   m_boundary = edgesActor(inspection.boundaryEdges, {0.95, 0.15, 0.1});
   m_nonManifold = edgesActor(inspection.nonManifoldEdges, {0.9, 0.2, 0.9});
   m_misoriented = edgesActor(inspection.misorientedEdges, {0.95, 0.85, 0.1});
-  // Both triangles of each pair, once each.
+  // Both triangles of each crossing or folded pair, once each.
   std::set<std::uint32_t> crossing;
-  for (const DefectLocation& pair : inspection.selfIntersections.first)
+  for (const DefectCount* pairs : {&inspection.selfIntersections, &inspection.folds})
   {
-    crossing.insert(pair.triangle);
-    crossing.insert(pair.other);
+    for (const DefectLocation& pair : pairs->first)
+    {
+      crossing.insert(pair.triangle);
+      crossing.insert(pair.other);
+    }
   }
   m_selfIntersecting = trianglesActor(
     soup, std::vector<std::uint32_t>(crossing.begin(), crossing.end()), {1.0, 0.55, 0.0}, 1.0);

@@ -1,6 +1,6 @@
 // The defects of a part drawn on it (the inspector's window, Documentation/CadInspector.md):
 // boundary edges (the holes' rims) in red, non-manifold edges in magenta, misoriented edges in
-// yellow, self-intersecting triangles in orange, and where the tool cannot reach in translucent
+// yellow, self-intersecting and folded triangles in orange, and where the tool cannot reach in translucent
 // blue. Every defect the inspection listed is drawn (the window asks it to list them all).
 #pragma once
 

@@ -26,6 +26,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <vtkCamera.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -139,10 +144,13 @@ private slots:
     QCOMPARE(static_cast<std::size_t>(drawn.nonManifoldEdges), expected.nonManifoldEdges.count);
     QCOMPARE(static_cast<std::size_t>(drawn.misorientedEdges), expected.misorientedEdges.count);
     std::set<std::uint32_t> crossing;
-    for (const DefectLocation& pair : expected.selfIntersections.first)
+    for (const DefectCount* pairs : {&expected.selfIntersections, &expected.folds})
     {
-      crossing.insert(pair.triangle);
-      crossing.insert(pair.other);
+      for (const DefectLocation& pair : pairs->first)
+      {
+        crossing.insert(pair.triangle);
+        crossing.insert(pair.other);
+      }
     }
     QCOMPARE(static_cast<std::size_t>(drawn.selfIntersectingTriangles), crossing.size());
     QCOMPARE(static_cast<std::size_t>(drawn.unreachableTriangles),
@@ -153,6 +161,20 @@ private slots:
       "holes (" + std::to_string(expected.boundaryEdges.count) + " boundary edges)";
     QVERIFY2(waitUntil([&] { return window->hudText().find(holes) != std::string::npos; }, 5.0),
              window->hudText().c_str());
+    QTest::qWait(200);
+    saveFigure(window.get(), "inspector-window-reach.png");
+    auto* showReach = window->findChild<QAction*>("showReach");
+    QVERIFY(showReach != nullptr);
+    showReach->setChecked(false);
+    // Its holes' cracked rims and crossing triangles are on its underside: seen from below.
+    vtkCamera* camera =
+      window->view()->renderWindow()->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+    double position[3];
+    double focus[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focus);
+    camera->SetPosition(position[0], position[1], 2.0 * focus[2] - position[2]);
+    camera->OrthogonalizeViewUp();
     QTest::qWait(200);
     saveFigure(window.get(), "inspector-window-defects.png");
   }
@@ -195,7 +217,18 @@ private slots:
                },
                5.0),
              window->hudText().c_str());
-    saveFigure(window.get(), "inspector-window-clearance.png");
+    if (!qgetenv("PROXIMA_INSPECTOR_FIGURES").isEmpty())
+    {
+      // Closer, and from above the slot's mouth, for the figure.
+      vtkCamera* camera =
+        window->view()->renderWindow()->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+      camera->Elevation(20.0);
+      camera->Azimuth(-25.0);
+      camera->OrthogonalizeViewUp();
+      camera->Dolly(1.6);
+      QTest::qWait(300);
+      saveFigure(window.get(), "inspector-window-clearance.png");
+    }
 
     const std::string report = kOutput + "/slot-report.json";
     const std::string picture = kOutput + "/slot-report.png";

@@ -42,7 +42,8 @@ MeshInspection firstFew(MeshInspection inspection, std::size_t kept)
   for (DefectCount* defect :
        {&inspection.boundaryEdges, &inspection.boundaryLoops, &inspection.nonManifoldEdges,
         &inspection.misorientedEdges, &inspection.collapsedTriangles, &inspection.zeroAreaTriangles,
-        &inspection.sliverTriangles, &inspection.duplicateTriangles, &inspection.selfIntersections})
+        &inspection.sliverTriangles, &inspection.duplicateTriangles, &inspection.selfIntersections,
+        &inspection.folds})
   {
     if (defect->first.size() > kept)
     {
@@ -55,13 +56,13 @@ MeshInspection firstFew(MeshInspection inspection, std::size_t kept)
 std::string defectsLine(const MeshInspection& r)
 {
   char line[400];
-  std::snprintf(line, sizeof line,
-                "%s, %zu triangles: %zu holes (%zu boundary edges), %zu non-manifold, %zu "
-                "misoriented, %zu self-intersecting pairs, %zu degenerate, %zu duplicate",
-                r.closed ? "closed" : "open", r.triangles, r.boundaryLoops.count,
-                r.boundaryEdges.count, r.nonManifoldEdges.count, r.misorientedEdges.count,
-                r.selfIntersections.count, r.collapsedTriangles.count + r.zeroAreaTriangles.count,
-                r.duplicateTriangles.count);
+  std::snprintf(
+    line, sizeof line,
+    "%s, %zu triangles: %zu holes (%zu boundary edges), %zu non-manifold, %zu "
+    "misoriented,\n%zu self-intersecting pairs, %zu folds, %zu degenerate, %zu duplicate",
+    r.closed ? "closed" : "open", r.triangles, r.boundaryLoops.count, r.boundaryEdges.count,
+    r.nonManifoldEdges.count, r.misorientedEdges.count, r.selfIntersections.count, r.folds.count,
+    r.collapsedTriangles.count + r.zeroAreaTriangles.count, r.duplicateTriangles.count);
   return line;
 }
 } // namespace
@@ -108,12 +109,14 @@ void InspectorWindow::buildInspectMenu()
   radius->setShortcut(QKeySequence(Qt::Key_R));
   connect(radius, &QAction::triggered, this, &InspectorWindow::askToolRadius);
   QAction* defects = inspect->addAction(tr("Show the &defects"));
+  defects->setObjectName("showDefects");
   defects->setCheckable(true);
   defects->setChecked(true);
   defects->setShortcut(QKeySequence(Qt::Key_D));
   connect(defects, &QAction::toggled, this,
           [this](bool visible) { m_defects.setDefectsVisible(visible); });
   QAction* reach = inspect->addAction(tr("Show where the tool cannot reac&h"));
+  reach->setObjectName("showReach");
   reach->setCheckable(true);
   reach->setChecked(true);
   reach->setShortcut(QKeySequence(Qt::Key_U));
@@ -136,6 +139,10 @@ void InspectorWindow::buildInspectMenu()
   exportAction->setShortcut(QKeySequence("Ctrl+E"));
   connect(exportAction, &QAction::triggered, this, &InspectorWindow::exportAs);
   file->insertAction(file->actions().front(), exportAction);
+  QAction* open = new QAction(tr("&Open a part..."), this);
+  open->setShortcut(QKeySequence("Ctrl+O"));
+  connect(open, &QAction::triggered, this, &InspectorWindow::openPart);
+  file->insertAction(exportAction, open);
 }
 
 void InspectorWindow::startAnalysis()
@@ -204,7 +211,8 @@ void InspectorWindow::pollAnalysis()
     }
     m_reach = std::move(analysis.reach);
     m_defects.showReach(m_part.soup, *m_reach);
-    statusBar()->showMessage(QString::fromStdString(defectsLine(*m_inspection)), 15000);
+    statusBar()->showMessage(QString::fromStdString(defectsLine(*m_inspection)).replace('\n', ' '),
+                             15000);
   }
   catch (const std::exception& failure)
   {
@@ -395,6 +403,26 @@ void InspectorWindow::exportAs()
   if (!exportReport(file.toStdString(), error))
   {
     QMessageBox::warning(this, windowTitle(), QString::fromStdString(error));
+  }
+}
+
+void InspectorWindow::openPart()
+{
+  const QString file = QFileDialog::getOpenFileName(
+    this, tr("Open a part"), QString(),
+    tr("Meshes (*.stl *.STL *.obj *.OBJ *.ply *.PLY *.off *.OFF *.gltf *.glb *.vtp)"));
+  if (file.isEmpty())
+  {
+    return;
+  }
+  // The files carry no units: the scale turns them into metres (0.001 for millimetres).
+  bool chosen = false;
+  const double scale =
+    QInputDialog::getDouble(this, tr("Scale"), tr("Metres per unit of the file (0.001 for mm):"),
+                            m_part.scale, 1e-9, 1e9, 9, &chosen);
+  if (chosen)
+  {
+    emit partRequested(file, scale);
   }
 }
 

@@ -6,7 +6,8 @@
 // distances between them, the narrowest gap passed through and where the probe stopped are drawn
 // and written in the HUD. The Inspect menu sets the tool's radius (the proxy's too, and the reach
 // found again), shows or hides the defects and the reach, and shows the sphere tree at a level;
-// File > Export writes the report (JSON) with a screenshot beside it.
+// File > Export writes the report (JSON) with a screenshot beside it; File > Open a part asks for
+// another part and its scale.
 #pragma once
 
 #include "HapticWindow.h"
@@ -63,12 +64,17 @@ public:
   const std::optional<MeshInspection>& inspection() const { return m_inspection; }
   const std::optional<ToolReach>& reach() const { return m_reach; }
   const ProbeMeasurements& measurements() const { return m_meter->measurements(); }
+  const InspectorPart& part() const { return m_part; }
   DefectOverlay::Drawn drawnDefects() const { return m_defects.drawn(); }
 
   /// Writes the report (defects, reach, probe; Documentation/CadInspector.md) to `path` and the
   /// window's picture beside it (the same name, .png); neither when either fails. False with
   /// `error`; also when the analysis is not finished yet.
   bool exportReport(const std::string& path, std::string& error);
+
+signals:
+  /// File > Open a part: the program replaces this window with one on `path` at `scale`.
+  void partRequested(const QString& path, double scale);
 
 protected:
   void ticksArrived(const std::vector<HapticState>& ticks) override;
@@ -86,6 +92,7 @@ private:
   void buildInspectMenu();
   void askToolRadius();
   void exportAs();
+  void openPart();
 
   InspectorPart m_part;
   DefectOverlay m_defects;
