@@ -76,8 +76,9 @@ std::string closingLine(const InspectorWindow& window)
     std::snprintf(text, sizeof text, ", narrowest gap %.3f mm", m.narrowestGap->width * 1000.0);
     line += text;
   }
-  std::snprintf(text, sizeof text, ", %zu stops, tool radius %.3f mm, %zu ticks\n", m.stopCount,
-                window.proxyRadius() * 1000.0, m.ticks);
+  std::snprintf(text, sizeof text,
+                ", %zu stops, %zu marks missed (nothing touched), tool radius %.3f mm, %zu ticks\n",
+                m.stopCount, m.marksMissed, window.proxyRadius() * 1000.0, m.ticks);
   return line + text;
 }
 } // namespace
