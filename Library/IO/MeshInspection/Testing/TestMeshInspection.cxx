@@ -1,8 +1,9 @@
 // The mesh inspection's counts: on hand-made meshes where every count is known, and on the shared
 // real meshes against independent computations: VTK's own topology filters (vtkCleanPolyData
 // merging identical points, vtkFeatureEdges for boundary and non-manifold edges, and
-// vtkPolyDataConnectivityFilter for pieces and for the loops of the boundary edges), and an
-// ordered map of corner positions for collapsed and duplicate triangles.
+// vtkPolyDataConnectivityFilter for pieces and for the loops of the boundary edges), an ordered
+// map of corner positions for collapsed and duplicate triangles, and one of directed edges between
+// VTK's merged points for misoriented edges.
 #include "IO/MeshInspection/MeshInspection.h"
 
 #include "IO/Mesh/MeshReader.h"
@@ -243,6 +244,33 @@ std::pair<std::size_t, std::size_t> collapsedAndDuplicates(const TriangleSoup& s
   return {collapsed, duplicates};
 }
 
+// Misoriented edges on VTK's merged points: each edge used by exactly two triangles whose
+// directed uses run the same way, counted over an ordered map of directed point pairs.
+std::size_t misorientedByVtkPoints(vtkPolyData* cleaned)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> directed;
+  std::map<std::pair<vtkIdType, vtkIdType>, int> undirected;
+  vtkCellArray* polys = cleaned->GetPolys();
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids) != 0;)
+  {
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      const vtkIdType a = ids[k];
+      const vtkIdType b = ids[(k + 1) % size];
+      ++directed[{a, b}];
+      ++undirected[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  std::size_t misoriented = 0;
+  for (const auto& [edge, uses] : undirected)
+  {
+    misoriented += uses == 2 && (directed[edge] == 2 || directed[{edge.second, edge.first}] == 2);
+  }
+  return misoriented;
+}
+
 // Self-intersecting pairs by brute force: every pair of triangles whose boxes overlap, tested with
 // CGAL's exact predicate, without the box-intersection broad phase the inspection uses.
 std::size_t selfIntersectionsByBruteForce(const TriangleSoup& soup)
@@ -362,6 +390,7 @@ TEST_P(SharedMeshInspection, CountsAgreeWithVtksTopologyFilters)
   EXPECT_EQ(r.nonManifoldEdges.count, vtk.nonManifoldEdges);
   EXPECT_EQ(r.boundaryLoops.count, vtk.boundaryLoops);
   EXPECT_EQ(r.components, vtk.components);
+  EXPECT_EQ(r.misorientedEdges.count, misorientedByVtkPoints(cleanedPolyData(soup)));
   const auto [collapsed, duplicates] = collapsedAndDuplicates(soup);
   EXPECT_EQ(r.collapsedTriangles.count, collapsed);
   EXPECT_EQ(r.duplicateTriangles.count, duplicates);
