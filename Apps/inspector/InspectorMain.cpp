@@ -11,11 +11,11 @@
 // written (one line naming the file and the defect), 1 for an internal error.
 #include "Probing/ProbeReport.h"
 #include "Probing/ProbeSession.h"
+#include "ProgramMain.h"
 #if PROXIMA_INSPECTOR_WINDOW
 #include "Window/InspectorWindowMain.h"
 #endif
 
-#include "Devices/DeviceRegistry.h"
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputIdentity.h"
@@ -25,10 +25,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <csignal>
 #include <cstdio>
-#include <exception>
-#include <iostream>
 
 namespace
 {
@@ -138,8 +135,6 @@ int runHeadless(const InspectorOptions& options)
 
 int main(int argc, char** argv)
 {
-  // A file-size limit fails a write with EFBIG, reported like a full disk.
-  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"proxima-inspector: probe a CAD part by touch, measure clearances, see its defects "
                "(Documentation/CadInspector.md)",
                "proxima-inspector"};
@@ -176,45 +171,11 @@ int main(int argc, char** argv)
   app.add_option("--widest-gap", options.widestGap, "Gaps wider than this are not measured (m)")
     ->check(CLI::Range(1e-6, 10.0))
     ->capture_default_str();
-  app
-    .add_option("--device", options.device,
-                "The window's device: mouse (default), spacemouse, falcon or replay:FILE")
-    ->check(CLI::Validator(
-      [](std::string& input) -> std::string {
-        return isDeviceSpec(input) && input != "sim"
-                 ? std::string()
-                 : "must be mouse, spacemouse, falcon or replay:FILE, not " + input;
-      },
-      "DEVICE"));
-  app.add_option("--falcon-firmware", options.falconFirmware,
-                 "With --device falcon: the firmware file to upload (your own copy)");
+  shell::addWindowDeviceOptions(app, options.device, options.falconFirmware);
   app.add_option("--width", options.width, "Window width in pixels")->check(CLI::Range(64, 8192));
   app.add_option("--height", options.height, "Window height in pixels")
     ->check(CLI::Range(64, 8192));
-  try
-  {
-    app.parse(argc, argv);
-  }
-  catch (const CLI::ParseError& error)
-  {
-    if (app.exit(error) != 0)
-    {
-      return 2;
-    }
-    try
-    {
-      // Help lost on a full disk or /dev/full is not a success.
-      finishStandardOutput();
-    }
-    catch (const InputError& lost)
-    {
-      std::cerr << "proxima-inspector: " << lost.what() << "\n";
-      return 2;
-    }
-    return 0;
-  }
-  try
-  {
+  return shell::runProgram(app, "proxima-inspector", argc, argv, [&] {
     checkMode(options);
     if (options.path.empty())
     {
@@ -237,15 +198,5 @@ int main(int argc, char** argv)
     const int status = runHeadless(options);
     finishStandardOutput();
     return status;
-  }
-  catch (const InputError& error)
-  {
-    std::cerr << "proxima-inspector: " << error.what() << "\n";
-    return 2;
-  }
-  catch (const std::exception& error)
-  {
-    std::cerr << "proxima-inspector: internal error: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -11,6 +11,7 @@
 // be written (one line naming the file and the defect), 1 for an internal error.
 #include "DisplayCheck.h"
 #include "ExerciseScreenshot.h"
+#include "ProgramMain.h"
 #include "Exercises/ExerciseFile.h"
 #include "Exercises/ExerciseReport.h"
 #include "Exercises/HeadlessSession.h"
@@ -18,8 +19,6 @@
 #if PROXIMA_TRAINER_WINDOW
 #include "Window/TrainerWindowMain.h"
 #endif
-
-#include "Devices/DeviceRegistry.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/AtomicOutputFile.h"
@@ -29,11 +28,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include <csignal>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
-#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -183,8 +179,6 @@ int runHeadless(const TrainerOptions& options)
 
 int main(int argc, char** argv)
 {
-  // A file-size limit fails a write with EFBIG, reported like a full disk.
-  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"proxima-trainer: palpation and probing exercises on anatomy, scored "
                "(Documentation/SurgicalTrainer.md)",
                "proxima-trainer"};
@@ -194,18 +188,7 @@ int main(int argc, char** argv)
   app.add_option("--path", options.path,
                  "Finger path CSV (t,x,y,z) played in lockstep, headless; without it the "
                  "trainer's window opens");
-  app
-    .add_option("--device", options.device,
-                "The window's device: mouse (default), spacemouse, falcon or replay:FILE")
-    ->check(CLI::Validator(
-      [](std::string& input) -> std::string {
-        return isDeviceSpec(input) && input != "sim"
-                 ? std::string()
-                 : "must be mouse, spacemouse, falcon or replay:FILE, not " + input;
-      },
-      "DEVICE"));
-  app.add_option("--falcon-firmware", options.falconFirmware,
-                 "With --device falcon: the firmware file to upload (your own copy)");
+  shell::addWindowDeviceOptions(app, options.device, options.falconFirmware);
   app.add_option("--marks", options.marks,
                  "The trainee's marks: CSV with the header t, one time in seconds per row");
   app.add_option("--report", options.report, "The score report to write (JSON; with --path)");
@@ -222,30 +205,7 @@ int main(int argc, char** argv)
     .add_option("--height", options.size.height,
                 "Screenshot height in pixels (default 600; the window's 720)")
     ->check(CLI::Range(64, 8192));
-  try
-  {
-    app.parse(argc, argv);
-  }
-  catch (const CLI::ParseError& error)
-  {
-    if (app.exit(error) != 0)
-    {
-      return 2;
-    }
-    try
-    {
-      // Help lost on a full disk or /dev/full is not a success.
-      finishStandardOutput();
-    }
-    catch (const InputError& lost)
-    {
-      std::cerr << "proxima-trainer: " << lost.what() << "\n";
-      return 2;
-    }
-    return 0;
-  }
-  try
-  {
+  return shell::runProgram(app, "proxima-trainer", argc, argv, [&] {
     checkMode(options);
     if (options.path.empty())
     {
@@ -264,15 +224,5 @@ int main(int argc, char** argv)
     const int status = runHeadless(options);
     finishStandardOutput();
     return status;
-  }
-  catch (const InputError& error)
-  {
-    std::cerr << "proxima-trainer: " << error.what() << "\n";
-    return 2;
-  }
-  catch (const std::exception& error)
-  {
-    std::cerr << "proxima-trainer: internal error: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

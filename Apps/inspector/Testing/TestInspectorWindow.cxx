@@ -12,11 +12,10 @@
 // reached.
 #include "InspectorWindow.h"
 
-#include "Devices/DeviceRecording.h"
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Overlay/SphereTreeLevelActor.h"
-#include "Runtime/SimulatedDevice.h"
+#include "WindowTesting.h"
 
 #include <QAction>
 #include <QApplication>
@@ -43,6 +42,8 @@ namespace
 {
 using namespace proxima;
 using namespace proxima::inspector;
+using proxima::shell::testing::waitUntil;
+using proxima::shell::testing::writePathAsRecording;
 
 const std::string kTesting = PROXIMA_SOURCE_DIR "/Apps/inspector/Testing";
 const std::string kOutput = PROXIMA_TEST_OUTPUT;
@@ -75,45 +76,21 @@ std::unique_ptr<InspectorWindow> openPart(const std::string& file, double scale,
   return window;
 }
 
-bool waitUntil(const std::function<bool()>& done, double seconds)
-{
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end)
-  {
-    if (done())
-    {
-      return true;
-    }
-    QTest::qWait(20);
-  }
-  return done();
-}
-
 // With PROXIMA_INSPECTOR_FIGURES=FOLDER the window is also saved as FOLDER/NAME: the pictures of
 // Documentation/CadInspector.md come from these runs.
 void saveFigure(QWidget* window, const char* name)
 {
-  const QByteArray folder = qgetenv("PROXIMA_INSPECTOR_FIGURES");
-  if (!folder.isEmpty())
-  {
-    window->grab().save(QString::fromLocal8Bit(folder) + "/" + name, "PNG");
-  }
+  proxima::shell::testing::saveFigure(window, "PROXIMA_INSPECTOR_FIGURES", name);
 }
 
-// gap-probe.csv as a device recording at 1 kHz, for a replay device.
+// gap-probe.csv as a device recording at 1 kHz, for a replay device; empty if not written.
 std::string slotProbeRecording()
 {
-  const FingerPath path = readFingerPathFile(kTesting + "/gap-probe.csv");
-  SimulatedDevice device(path);
-  std::vector<RecordedSample> samples;
-  for (std::uint64_t k = 0; k <= static_cast<std::uint64_t>(path.endTime() * 1000.0); ++k)
-  {
-    const double time = static_cast<double>(k) / 1000.0;
-    samples.push_back({time, device.read(time)});
-  }
   const std::string file = kOutput + "/gap-probe-recording.csv";
   std::string error;
-  return writeDeviceRecording(file, samples, error) ? file : std::string();
+  return writePathAsRecording(readFingerPathFile(kTesting + "/gap-probe.csv"), 1000.0, file, error)
+           ? file
+           : std::string();
 }
 } // namespace
 

@@ -5,28 +5,16 @@
 # with Ctrl+Q. It must print that the session closed with two markers some distance apart.
 # Usage: inspector_window_program.sh PROXIMA_INSPECTOR PART
 set -euo pipefail
+. "$(dirname "$0")/../../../Library/VTK/Testing/xdotool-session.sh"
 inspector="$1"
 part="$2"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-# find_window NAME: the id of the first window whose name matches, within 60 s.
-find_window() {
-  local id=""
-  for _ in $(seq 600); do
-    id=$(xdotool search --onlyvisible --name "$1" 2> /dev/null | head -1 || true)
-    [ -n "$id" ] && { echo "$id"; return 0; }
-    kill -0 "$program" 2> /dev/null || { echo "inspector-window: it ended early:" >&2; cat err.txt >&2; return 1; }
-    sleep 0.1
-  done
-  echo "inspector-window: no window named '$1' within 60 s" >&2
-  return 1
-}
-
 "$inspector" --mesh "$part" --scale 0.001 --tool-radius 0.0005 > out.txt 2> err.txt &
 program=$!
-window=$(find_window "Proxima inspector: gap-blocks.obj")
+window=$(find_window "Proxima inspector: gap-blocks.obj" "$program" err.txt)
 sleep 1.5
 xdotool windowfocus --sync "$window"
 # press X: move the cursor over the block at X pixels (the window is 1024 x 720, the slot in its
@@ -51,15 +39,7 @@ press() {
 press 362
 press 662
 xdotool key --clearmodifiers ctrl+q
-for _ in $(seq 300); do
-  kill -0 "$program" 2> /dev/null || break
-  sleep 0.1
-done
-if kill -0 "$program" 2> /dev/null; then
-  echo "inspector-window: the window did not close on Ctrl+Q" >&2
-  kill "$program"
-  exit 1
-fi
+wait_for_exit "$program" Ctrl+Q
 wait "$program" || { echo "inspector-window: proxima-inspector failed:" >&2; cat err.txt >&2; exit 1; }
 cat out.txt
 line=$(grep "proxima-inspector: closed gap-blocks.obj" out.txt) ||

@@ -5,6 +5,7 @@
 # and a force when it closes, and have saved its picture.
 # Usage: view_mouse.sh PROXIMA MESH
 set -euo pipefail
+. "$(dirname "$0")/../../../Library/VTK/Testing/xdotool-session.sh"
 proxima="$1"
 mesh="$2"
 work=$(mktemp -d)
@@ -12,19 +13,8 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 "$proxima" view --mesh "$mesh" --device mouse --radius 0.001 > out.txt 2> err.txt &
 view=$!
-# The window appears when VTK has made it (a minute at most on a loaded machine).
-window=""
-for _ in $(seq 600); do
-  window=$(xdotool search --name "proxima view" 2> /dev/null | head -1 || true)
-  [ -n "$window" ] && break
-  if ! kill -0 "$view" 2> /dev/null; then
-    echo "view-mouse: proxima view ended before its window appeared:" >&2
-    cat err.txt >&2
-    exit 1
-  fi
-  sleep 0.1
-done
-[ -n "$window" ] || { echo "view-mouse: no window within 60 s" >&2; kill "$view"; exit 1; }
+# The window appears when VTK has made it.
+window=$(find_window "proxima view" "$view" err.txt)
 sleep 1
 # The window is 800 x 600; the default camera looks down at the sphere's centre.
 xdotool mousemove --window "$window" 400 300
@@ -39,15 +29,7 @@ sleep 2
 xdotool key --window "$window" i
 sleep 1
 xdotool key --window "$window" q
-for _ in $(seq 300); do
-  kill -0 "$view" 2> /dev/null || break
-  sleep 0.1
-done
-if kill -0 "$view" 2> /dev/null; then
-  echo "view-mouse: the window did not close on q" >&2
-  kill "$view"
-  exit 1
-fi
+wait_for_exit "$view" q
 wait "$view" || { echo "view-mouse: proxima view failed:" >&2; cat err.txt >&2; exit 1; }
 cat out.txt
 grep -q "saved the window's picture to proxima-view-1.png" out.txt ||

@@ -15,12 +15,11 @@
 #include "TrainerWindow.h"
 #include "Window/TrainerWindowMain.h"
 
-#include "Devices/DeviceRecording.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
 #include "Exercises/ExerciseScene.h"
-#include "Runtime/SimulatedDevice.h"
 #include "ImageComparison.h"
+#include "WindowTesting.h"
 #include "VTK/vtkHapticMouseFinger.h"
 
 #include <QAction>
@@ -34,7 +33,6 @@
 
 #include <vtkRenderWindow.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -44,6 +42,8 @@ namespace
 {
 using namespace proxima;
 using namespace proxima::trainer;
+using proxima::shell::testing::waitUntil;
+using proxima::shell::testing::writePathAsRecording;
 
 const std::string kExercises = PROXIMA_EXERCISES;
 const std::string kPaths = PROXIMA_SOURCE_DIR "/Data/Paths/Trainer";
@@ -73,21 +73,6 @@ std::unique_ptr<TrainerWindow> openExercise(const std::string& name, const std::
   return window;
 }
 
-// Lets the window's timer run until `done` or `seconds` pass; whether `done` came.
-bool waitUntil(const std::function<bool()>& done, double seconds)
-{
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end)
-  {
-    if (done())
-    {
-      return true;
-    }
-    QTest::qWait(20);
-  }
-  return done();
-}
-
 void wheel(QWidget* widget, const QPoint& at, int notches)
 {
   for (int i = 0; i < std::abs(notches); ++i)
@@ -104,31 +89,7 @@ void wheel(QWidget* widget, const QPoint& at, int notches)
 // the pictures of Documentation/SurgicalTrainer.md come from these runs.
 void saveFigure(QWidget* window, const char* name)
 {
-  const QByteArray folder = qgetenv("PROXIMA_TRAINER_FIGURES");
-  if (!folder.isEmpty())
-  {
-    window->grab().save(QString::fromLocal8Bit(folder) + "/" + name, "PNG");
-  }
-}
-
-// The finger path as a device recording at the exercise's rate: what a replay device plays.
-std::string pathAsRecording(const std::string& pathName, double rate, const std::string& file)
-{
-  const FingerPath path = readFingerPathFile(kPaths + "/" + pathName + ".csv");
-  SimulatedDevice device(path);
-  std::vector<RecordedSample> samples;
-  const auto ticks = static_cast<std::uint64_t>(std::floor(path.endTime() * rate)) + 1;
-  for (std::uint64_t k = 0; k < ticks; ++k)
-  {
-    const double time = static_cast<double>(k) / rate;
-    samples.push_back({time, device.read(time)});
-  }
-  std::string error;
-  if (!writeDeviceRecording(file, samples, error))
-  {
-    return error;
-  }
-  return {};
+  proxima::shell::testing::saveFigure(window, "PROXIMA_TRAINER_FIGURES", name);
 }
 } // namespace
 
@@ -212,10 +173,9 @@ private slots:
     QVERIFY(window != nullptr);
     const Exercise& exercise = window->exercise();
     const std::string recording = kOutput + "/liver-targets-pass.recording.csv";
-    const std::string made = pathAsRecording("liver-targets-pass", exercise.rate, recording);
-    QVERIFY2(made.empty(), made.c_str());
     const FingerPath path = readFingerPathFile(kPaths + "/liver-targets-pass.csv");
     std::string error;
+    QVERIFY2(writePathAsRecording(path, exercise.rate, recording, error), error.c_str());
     QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
     bool pictured = false;
     QVERIFY(waitUntil(

@@ -6,33 +6,21 @@
 # dropped.
 # Usage: trainer_window_program.sh PROXIMA_TRAINER EXERCISE_FOLDER
 set -euo pipefail
+. "$(dirname "$0")/../../../Library/VTK/Testing/xdotool-session.sh"
 trainer="$1"
 export PROXIMA_EXERCISE_DIR="$2"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-# find_window NAME: the id of the first window whose name matches, within 60 s.
-find_window() {
-  local id=""
-  for _ in $(seq 600); do
-    id=$(xdotool search --onlyvisible --name "$1" 2> /dev/null | head -1 || true)
-    [ -n "$id" ] && { echo "$id"; return 0; }
-    kill -0 "$program" 2> /dev/null || { echo "trainer-window: it ended early:" >&2; cat err.txt >&2; return 1; }
-    sleep 0.1
-  done
-  echo "trainer-window: no window named '$1' within 60 s" >&2
-  return 1
-}
-
 "$trainer" > out.txt 2> err.txt &
 program=$!
-picker=$(find_window "Proxima trainer$")
+picker=$(find_window "Proxima trainer$" "$program" err.txt)
 sleep 0.5
 # The list is sorted: cranium-trace, liver-palpation, ... The second is the palpation.
 xdotool windowfocus --sync "$picker"
 xdotool key --clearmodifiers Down Return
-window=$(find_window "Proxima trainer: Liver palpation")
+window=$(find_window "Proxima trainer: Liver palpation" "$program" err.txt)
 sleep 1.5
 xdotool windowfocus --sync "$window"
 # The window is 1024 x 720; the liver fills its middle.
@@ -51,15 +39,7 @@ sleep 3
 xdotool key --clearmodifiers m
 sleep 0.5
 xdotool key --clearmodifiers ctrl+q
-for _ in $(seq 300); do
-  kill -0 "$program" 2> /dev/null || break
-  sleep 0.1
-done
-if kill -0 "$program" 2> /dev/null; then
-  echo "trainer-window: the window did not close on Ctrl+Q" >&2
-  kill "$program"
-  exit 1
-fi
+wait_for_exit "$program" Ctrl+Q
 wait "$program" || { echo "trainer-window: proxima-trainer failed:" >&2; cat err.txt >&2; exit 1; }
 cat out.txt
 line=$(grep "proxima-trainer: closed Liver palpation" out.txt) ||

@@ -1,5 +1,7 @@
 #include "IO/MeshInspection/MeshInspection.h"
 
+#include "IO/MeshInspection/Private/DisjointSets.h"
+
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -44,29 +46,6 @@ PositionKey keyOf(const Vec3& p)
   std::memcpy(key.bits, coordinates, sizeof coordinates);
   return key;
 }
-
-class DisjointSets
-{
-public:
-  explicit DisjointSets(std::size_t size)
-    : m_parent(size)
-  {
-    std::iota(m_parent.begin(), m_parent.end(), std::uint32_t{0});
-  }
-  std::uint32_t find(std::uint32_t i)
-  {
-    while (m_parent[i] != i)
-    {
-      m_parent[i] = m_parent[m_parent[i]];
-      i = m_parent[i];
-    }
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { m_parent[find(a)] = find(b); }
-
-private:
-  std::vector<std::uint32_t> m_parent;
-};
 
 struct EdgeUse
 {

@@ -1,13 +1,13 @@
 #include "IO/MeshInspection/ToolReach.h"
 
 #include "Geometry/SphereTree.h"
+#include "IO/MeshInspection/Private/DisjointSets.h"
 #include "Geometry/TriangleMesh.h"
 #include "IO/MeshInspection/MeshInspection.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -58,28 +58,6 @@ double signedVolume(const TriangleSoup& soup)
   return volume / 6.0;
 }
 
-class Regions
-{
-public:
-  explicit Regions(std::size_t size)
-    : m_parent(size)
-  {
-    std::iota(m_parent.begin(), m_parent.end(), std::uint32_t{0});
-  }
-  std::uint32_t find(std::uint32_t i)
-  {
-    while (m_parent[i] != i)
-    {
-      m_parent[i] = m_parent[m_parent[i]];
-      i = m_parent[i];
-    }
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { m_parent[find(a)] = find(b); }
-
-private:
-  std::vector<std::uint32_t> m_parent;
-};
 } // namespace
 
 ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
@@ -204,7 +182,7 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
   // Regions: unreachable triangles joined through vertices on identical coordinates.
   std::size_t vertexCount = 0;
   const std::vector<std::uint32_t> vertexOfPoint = mergeIdenticalCorners(soup, vertexCount);
-  Regions joined(vertexCount);
+  DisjointSets joined(vertexCount);
   for (const std::uint32_t t : reach.unreachableTriangles)
   {
     const auto& corners = soup.triangles[t];
