@@ -3,8 +3,10 @@
 // in lockstep and streams its ticks back, until SIGINT or SIGTERM.
 #include "Command.h"
 #include "TokenFile.h"
+#include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/InputChecks/ParameterRanges.h"
 #include "Net/RemoteRuns.h"
 
 #include <csignal>
@@ -20,6 +22,7 @@ struct ServeOptions
 {
   std::string listen = "127.0.0.1:50051";
   std::string tokenFile;
+  double maxTicks = kDefaultMaxTicks;
 };
 
 int serve(const ServeOptions& options)
@@ -34,6 +37,7 @@ int serve(const ServeOptions& options)
 
   RemoteServerSettings settings;
   settings.listen = options.listen;
+  settings.maxTicks = options.maxTicks;
   if (!options.tokenFile.empty())
   {
     settings.token = readTokenFile(options.tokenFile);
@@ -60,6 +64,11 @@ Command addServeCommand(CLI::App& parent)
                   "--token-file");
   app->add_option("--token-file", options->tokenFile,
                   "File whose first line is the token every client must send");
+  app
+    ->add_option("--max-ticks", options->maxTicks,
+                 "The most ticks one client's run may take (a run asking for more is refused)")
+    ->check(tickCount())
+    ->capture_default_str();
   return Command{app, [options] { return serve(*options); }};
 }
 

@@ -23,6 +23,8 @@ struct RemoteServerSettings
   std::string token;
   /// The largest request taken (its mesh, path and texture files together).
   std::size_t maxRequestBytes = std::size_t{512} << 20;
+  /// The most ticks one run may ask for (a client's --max-ticks above it is refused).
+  double maxTicks = 1e7;
 };
 
 /// True for 127.0.0.1, localhost and ::1 (with or without brackets), with any port.

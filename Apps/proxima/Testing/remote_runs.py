@@ -6,6 +6,7 @@
   and liver paths: STL and glTF read on the server).
 - Bad input is refused as a local run refuses it, naming the client's file, and leaves no trace.
 - With --token-file, a wrong token is refused (--token-file) and the right one runs.
+- A path longer than the server's --max-ticks is refused, whatever the client's own limit.
 - A server that is not there, or that stops, is a clear error naming --server.
 - The server leaves none of the runs' files behind.
 Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR
@@ -120,6 +121,21 @@ if right.returncode != 0:
     fail(f"the right token: status {right.returncode}, {right.stderr!r}")
 server.send_signal(signal.SIGTERM)
 server.wait(timeout=30)
+
+# The server's own tick limit: the 500-row path (499 ticks) runs under a limit of 499, and is
+# refused under 498 however many ticks the client allows, naming the client's path; no trace.
+for limit, expected in (("499", 0), ("498", 2)):
+    server, address = start_server("--max-ticks", limit)
+    limited_trace = os.path.join(work, f"limited-{limit}.csv")
+    limited = run("remote", "--server", address, "run", *options[:-1], limited_trace)
+    server.send_signal(signal.SIGTERM)
+    server.wait(timeout=30)
+    if limited.returncode != expected:
+        fail(f"a server limit of {limit} ticks: status {limited.returncode}, {limited.stderr!r}")
+    if expected == 2 and (f"--max-ticks: {short} needs more ticks than this server plays in one "
+                          f"run ({limit}, proxima serve --max-ticks)" not in limited.stderr
+                          or os.path.exists(limited_trace)):
+        fail(f"a server limit of {limit} ticks: {limited.stderr!r}")
 
 # No server there: refused at the first failed connection, not after the 10 s a slow network gets
 # (8 s allows for a loaded machine; it took the whole 10 s before the client watched the

@@ -1,0 +1,223 @@
+#include "Net/Private/RunRequestPlay.h"
+
+#include "IO/InputChecks/InputError.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
+#include "Net/Private/TickColumns.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace proxima
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+// The client stopped reading (or went away): the run ends there.
+struct ClientGone
+{};
+
+// A folder of its own for one run's files, removed with everything in it however the run ends.
+class RunFolder
+{
+public:
+  RunFolder()
+  {
+    std::string pattern = (fs::temp_directory_path() / "proxima-remote-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr)
+    {
+      throw std::runtime_error("cannot make a folder for the run's files");
+    }
+    m_path = pattern;
+  }
+  ~RunFolder()
+  {
+    std::error_code ignored;
+    fs::remove_all(m_path, ignored);
+  }
+  RunFolder(const RunFolder&) = delete;
+  RunFolder& operator=(const RunFolder&) = delete;
+
+  // Writes `file` as `stem` with the client's extension (the readers go by it) and remembers
+  // which client name the local path stands for.
+  std::string write(const net::FileContent& file, const std::string& stem)
+  {
+    std::string extension = fs::path(file.name()).extension().string();
+    for (char c : extension)
+    {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.')
+      {
+        extension.clear(); // nothing but letters and digits reaches the server's file system
+        break;
+      }
+    }
+    const std::string local = (m_path / (stem + extension)).string();
+    std::ofstream out(local, std::ios::binary);
+    out.write(file.data().data(), static_cast<std::streamsize>(file.data().size()));
+    out.close();
+    if (!out)
+    {
+      throw std::runtime_error("cannot write the run's files on the server");
+    }
+    m_names.emplace_back(local, file.name());
+    return local;
+  }
+
+  // `text` with the local paths replaced by the client's names.
+  std::string clientWords(std::string text) const
+  {
+    for (const auto& [local, client] : m_names)
+    {
+      for (std::size_t at = text.find(local); at != std::string::npos;
+           at = text.find(local, at + client.size()))
+      {
+        text.replace(at, local.size(), client);
+      }
+    }
+    return text;
+  }
+
+private:
+  fs::path m_path;
+  std::vector<std::pair<std::string, std::string>> m_names;
+};
+
+ScriptedRunSettings settingsOf(const net::RunSettings& in)
+{
+  ScriptedRunSettings s;
+  s.scale = in.scale();
+  s.radius = in.radius();
+  s.stiffness = in.stiffness();
+  s.rate = in.rate();
+  s.maxForce = in.max_force();
+  s.maxIterations = in.max_iterations();
+  s.skin = in.skin();
+  s.shading = in.shading();
+  s.featureAngle = in.feature_angle();
+  s.staticFriction = in.static_friction();
+  s.dynamicFriction = in.dynamic_friction();
+  s.viscosity = in.viscosity();
+  s.textureRole = in.texture_role();
+  s.textureAmplitude = in.texture_amplitude();
+  s.textureChannel = in.texture_channel();
+  s.tickBudget = in.tick_budget();
+  return s;
+}
+
+// The summary a local run would print: the client's file names where the server's stand.
+std::string clientSummary(const std::string& summary, const net::RunRequest& request)
+{
+  auto json = nlohmann::ordered_json::parse(summary);
+  json["mesh"] = request.mesh().name();
+  json["path"] = request.path().name();
+  if (json.contains("texture") && json["texture"].is_object())
+  {
+    json["texture"]["image"] = request.texture().name();
+  }
+  return json.dump(2) + "\n";
+}
+} // namespace
+
+grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& limits,
+                            const std::function<bool(const net::RunReply&)>& write,
+                            const std::function<bool()>& cancelled)
+{
+  // The client's limit (its --max-ticks), within the server's own.
+  const double asked = request.settings().max_ticks();
+  if (!(asked >= 1.0))
+  {
+    return {grpc::StatusCode::INVALID_ARGUMENT,
+            "must be a whole number of ticks from 1, not " + std::to_string(asked), "--max-ticks"};
+  }
+  const bool serverLimits = asked > limits.maxTicks;
+  const double maxTicks = serverLimits ? limits.maxTicks : asked;
+  if (request.mesh().name().empty() || request.mesh().data().empty())
+  {
+    return {grpc::StatusCode::INVALID_ARGUMENT, "a remote run needs a mesh file's contents",
+            "--mesh"};
+  }
+  if (request.path().name().empty())
+  {
+    return {grpc::StatusCode::INVALID_ARGUMENT, "a remote run needs a finger path", "--path"};
+  }
+  RunFolder folder;
+  try
+  {
+    ScriptedRunSettings settings = settingsOf(request.settings());
+    settings.mesh = folder.write(request.mesh(), "mesh");
+    settings.path = folder.write(request.path(), "path");
+    if (request.has_texture())
+    {
+      settings.texture = folder.write(request.texture(), "texture");
+    }
+    const FingerPath path = readFingerPathFile(settings.path);
+    ScriptedRunReportContext report;
+    report.trace = request.trace_name();
+    net::RunReply chunk;
+    const auto flush = [&] {
+      if (chunk.ticks().tick_size() == 0)
+      {
+        return;
+      }
+      if (cancelled() || !write(chunk))
+      {
+        throw ClientGone{};
+      }
+      chunk.Clear();
+    };
+    const std::string summary = runScriptedPath(
+      settings, path,
+      [&](const HapticState& state) {
+        appendTick(state, *chunk.mutable_ticks());
+        if (chunk.ticks().tick_size() >= kTicksPerMessage)
+        {
+          flush();
+        }
+      },
+      report, maxTicks);
+    flush();
+    net::RunReply last;
+    last.set_summary_json(clientSummary(summary, request));
+    if (!write(last))
+    {
+      return {grpc::StatusCode::CANCELLED, "the client went away"};
+    }
+    return grpc::Status::OK;
+  }
+  catch (const InputError& error)
+  {
+    if (serverLimits && error.path() == "--max-ticks")
+    {
+      char limit[64];
+      std::snprintf(limit, sizeof limit, "%.0f", limits.maxTicks);
+      return {grpc::StatusCode::INVALID_ARGUMENT,
+              folder.clientWords(request.path().name() + " needs more ticks than this server " +
+                                 "plays in one run (" + limit + ", proxima serve --max-ticks)"),
+              "--max-ticks"};
+    }
+    // The words of a local run, about the client's files.
+    return {grpc::StatusCode::INVALID_ARGUMENT, folder.clientWords(error.defect()),
+            folder.clientWords(error.path())};
+  }
+  catch (const ClientGone&)
+  {
+    return {grpc::StatusCode::CANCELLED, "the client stopped reading"};
+  }
+  catch (const std::exception& error)
+  {
+    return {grpc::StatusCode::INTERNAL, folder.clientWords(error.what())};
+  }
+}
+
+} // namespace proxima
