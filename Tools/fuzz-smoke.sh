@@ -19,7 +19,8 @@ seconds="${1:-}"
 clangxx="$(command -v clang++-14 || command -v clang++)"
 clangc="$(command -v clang-14 || command -v clang)"
 
-# The targets that CI runs: our own parsers (OBJ, PLY, scene files, path files), the solver, and
+# The targets that CI runs: our own parsers (OBJ, PLY, scene files, path files), the solver, the
+# server's requests (decoded and played: each input runs a path, hence fewer inputs), and
 # VTK's and OpenMesh's readers behind our checks (STL, OFF, glTF, GLB; see
 # Documentation/Fuzzing.md), each with the number of inputs CI tries: 10-20 s of runs each on our
 # 2-core machine (twice that for the glTF readers, where VTK has crashed most), 2.5 minutes in all.
@@ -27,12 +28,12 @@ declare -A inputs=(
   [FuzzMeshReader-obj]=250000 [FuzzMeshReader-ply]=250000 [FuzzSceneFile]=200000
   [FuzzFingerPathFile]=400000 [FuzzProxySolver]=10000 [FuzzMeshReader-stl]=70000
   [FuzzMeshReader-off]=250000 [FuzzMeshReader-gltf]=300000 [FuzzMeshReader-glb]=400000
-  [FuzzMeshReader-vtp]=20000)
+  [FuzzMeshReader-vtp]=20000 [FuzzRunRequest]=5000)
 # VTP is back since IO/Mesh/Private/VtpChecks.cpp bounds the declared sizes and compression
 # headers by the file's bytes (its out-of-memory finding is replayed below).
 targets=(FuzzMeshReader-obj FuzzMeshReader-ply FuzzSceneFile FuzzFingerPathFile FuzzProxySolver
          FuzzMeshReader-stl FuzzMeshReader-off FuzzMeshReader-gltf FuzzMeshReader-glb
-         FuzzMeshReader-vtp)
+         FuzzMeshReader-vtp FuzzRunRequest)
 if [ -n "${FUZZ_TARGETS:-}" ]; then
   read -r -a targets <<<"$FUZZ_TARGETS"
 fi
