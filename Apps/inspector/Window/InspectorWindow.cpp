@@ -258,7 +258,6 @@ std::size_t InspectorWindow::showSphereTreeLevel(int level)
     renderer()->RemoveActor(m_treeLevel);
     m_treeLevel = nullptr;
   }
-  m_treeLevelShown = level;
   std::size_t spheres = 0;
   if (level >= 0)
   {

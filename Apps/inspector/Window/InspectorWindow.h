@@ -104,7 +104,6 @@ private:
   std::atomic<double> m_analysisDone{0.0};
   QTimer m_analysisTimer;
   vtkSmartPointer<vtkActor> m_treeLevel;
-  int m_treeLevelShown = -1;
   bool m_ticked = false;
 };
 

@@ -91,15 +91,20 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
   reach.outsideOnly = closedAndOriented;
   const double outward = signedVolume(soup) < 0.0 ? -1.0 : 1.0;
 
-  // Per unreachable triangle: its deepest sample (the smallest centre-to-surface distance).
+  // Per unreachable triangle: its deepest sample (the smallest centre-to-surface distance) and the
+  // area of its unreachable samples.
   struct Deepest
   {
     double distance;
     Vec3 point;
     Vec3 side;
   };
-  std::unordered_map<std::uint32_t, Deepest> deepestOf;
-  std::vector<double> unreachableAreaOf;
+  struct Unreachable
+  {
+    Deepest deepest;
+    double area = 0.0;
+  };
+  std::unordered_map<std::uint32_t, Unreachable> unreachableOf;
   const std::size_t count = soup.triangles.size();
   for (std::size_t t = 0; t < count; ++t)
   {
@@ -154,13 +159,13 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
             ++reach.unreachableSamples;
             reach.unreachableArea += sampleArea;
             triangleUnreachable = true;
-            auto [it, added] = deepestOf.try_emplace(triangle, Deepest{depth, point, side});
-            if (!added && depth < it->second.distance)
+            auto [it, added] =
+              unreachableOf.try_emplace(triangle, Unreachable{{depth, point, side}, 0.0});
+            if (!added && depth < it->second.deepest.distance)
             {
-              it->second = Deepest{depth, point, side};
+              it->second.deepest = Deepest{depth, point, side};
             }
-            unreachableAreaOf.resize(count, 0.0);
-            unreachableAreaOf[t] += sampleArea;
+            it->second.area += sampleArea;
           }
           if (options.keepSamples)
           {
@@ -195,7 +200,8 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
   {
     const std::uint32_t root = joined.find(vertexOfPoint[soup.triangles[t][0]]);
     const auto [it, added] = regionOfRoot.try_emplace(root, reach.regionCount);
-    const Deepest& deepest = deepestOf.at(t);
+    const Unreachable& unreachable = unreachableOf.at(t);
+    const Deepest& deepest = unreachable.deepest;
     if (added)
     {
       ++reach.regionCount;
@@ -213,7 +219,7 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
     {
       UnreachableRegion& region = reach.regions[it->second];
       ++region.triangles;
-      region.area += unreachableAreaOf[t];
+      region.area += unreachable.area;
     }
   }
   for (std::size_t r = 0; r < reach.regions.size(); ++r)
