@@ -14,8 +14,10 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cctype>
 #include <filesystem>
 #include <iterator>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,7 +88,18 @@ std::size_t pairsByCgal(const TriangleSoup& soup)
 }
 
 // A mesh, and whether its dents fold some neighbours (so that the comparison covers folds).
-class DentedMesh : public testing::TestWithParam<std::pair<const char*, bool>>
+struct DentCase
+{
+  const char* file;
+  bool folds;
+};
+
+std::ostream& operator<<(std::ostream& out, const DentCase& c)
+{
+  return out << c.file << (c.folds ? ", folds" : ", no folds");
+}
+
+class DentedMesh : public testing::TestWithParam<DentCase>
 {};
 
 TEST_P(DentedMesh, SelfIntersectionsAndFoldsTogetherAreCgalsSelfIntersections)
@@ -128,9 +141,17 @@ TEST_P(DentedMesh, SelfIntersectionsAndFoldsTogetherAreCgalsSelfIntersections)
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, DentedMesh,
-                         testing::Values(std::pair{"spot_triangulated.obj", false},
-                                         std::pair{"fandisk.off", true},
-                                         std::pair{"M3x10_screw.stl", true}));
+                         testing::Values(DentCase{"spot_triangulated.obj", false},
+                                         DentCase{"fandisk.off", true},
+                                         DentCase{"M3x10_screw.stl", true}),
+                         [](const testing::TestParamInfo<DentCase>& info) {
+                           std::string name = info.param.file;
+                           for (char& c : name)
+                           {
+                             c = std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
+                           }
+                           return name;
+                         });
 
 } // namespace
 } // namespace proxima

@@ -17,9 +17,11 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangle.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <ostream>
 #include <string>
 
 namespace proxima
@@ -40,6 +42,16 @@ TriangleSoup blocksWithASlot(double gap)
   }
   soup.pointNormals.clear();
   return soup;
+}
+
+// A file's name as a test's: letters and digits, the rest underscores.
+std::string fileTestName(std::string name)
+{
+  for (char& c : name)
+  {
+    c = std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
+  }
+  return name;
 }
 
 ToolReach reachOf(const TriangleSoup& soup, double radius, bool keepSamples = false)
@@ -107,7 +119,20 @@ TEST(ToolReach, TheSamplesCoverEveryTriangleOnce)
   }
 }
 
-class SharedMeshReach : public testing::TestWithParam<std::tuple<const char*, double, double>>
+// A shared mesh, the scale that makes it a hand-held part, and a tool's radius.
+struct ReachCase
+{
+  const char* file;
+  double scale;
+  double radius;
+};
+
+std::ostream& operator<<(std::ostream& out, const ReachCase& c)
+{
+  return out << c.file << " at scale " << c.scale << ", tool " << c.radius << " m";
+}
+
+class SharedMeshReach : public testing::TestWithParam<ReachCase>
 {};
 
 TEST_P(SharedMeshReach, EverySampleAgreesWithVtksDistanceToTheSurface)
@@ -174,11 +199,13 @@ TEST_P(SharedMeshReach, EverySampleAgreesWithVtksDistanceToTheSurface)
 
 // Scales and radii as the inspector's documentation probes them (Documentation/CadInspector.md).
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, SharedMeshReach,
-                         testing::Values(std::make_tuple("M3x10_screw.stl", 0.001, 0.0002),
-                                         std::make_tuple("fandisk.off", 0.1, 0.002),
-                                         std::make_tuple("featuretype.STL", 0.01, 0.001),
-                                         std::make_tuple("abc_00000050_trimesh_000.stl", 1.0,
-                                                         0.002)));
+                         testing::Values(ReachCase{"M3x10_screw.stl", 0.001, 0.0002},
+                                         ReachCase{"fandisk.off", 0.1, 0.002},
+                                         ReachCase{"featuretype.STL", 0.01, 0.001},
+                                         ReachCase{"abc_00000050_trimesh_000.stl", 1.0, 0.002}),
+                         [](const testing::TestParamInfo<ReachCase>& info) {
+                           return fileTestName(info.param.file);
+                         });
 
 } // namespace
 } // namespace proxima
