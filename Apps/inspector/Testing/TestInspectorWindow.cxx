@@ -164,18 +164,21 @@ private slots:
     QVERIFY(!recording.empty());
     std::string error;
     QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
-    // Pushed into the left wall, then the right one (gap-probe.csv): a marker on each.
-    const auto pressedInto = [&](double side) {
+    // Pushed into the left wall, then the right one (gap-probe.csv): a marker on each. A marker
+    // is the touched point of the last tick the window has measured, which lags the servo's
+    // newest state by up to a frame: the press must have reached the meter too (its stop begun)
+    // while the newest state is still deep in it.
+    const auto pressedInto = [&](double side, std::size_t stops) {
       const HapticState state = window->latestState();
-      return state.numContacts > 0 && side * state.proxy.x > 0.0004 &&
-             norm(state.finger - state.proxy) > 0.002;
+      return window->measurements().stopCount >= stops && state.numContacts > 0 &&
+             side * state.proxy.x > 0.0004 && norm(state.finger - state.proxy) > 0.002;
     };
-    QVERIFY2(waitUntil([&] { return pressedInto(-1.0); }, 60.0), window->hudText().c_str());
+    QVERIFY2(waitUntil([&] { return pressedInto(-1.0, 1); }, 60.0), window->hudText().c_str());
     auto* marker = window->findChild<QAction*>("dropMarker");
     QVERIFY(marker != nullptr);
     QCOMPARE(marker->shortcut(), QKeySequence(Qt::Key_M));
     marker->trigger();
-    QVERIFY2(waitUntil([&] { return pressedInto(1.0); }, 60.0), window->hudText().c_str());
+    QVERIFY2(waitUntil([&] { return pressedInto(1.0, 2); }, 60.0), window->hudText().c_str());
     marker->trigger();
     const ProbeMeasurements& m = window->measurements();
     QCOMPARE(m.markers.size(), std::size_t{2});
