@@ -169,7 +169,9 @@ void InspectorWindow::startAnalysis()
   const double radius = proxyRadius();
   const TriangleSoup* soup = &m_part.soup;
   std::atomic<double>* done = &m_analysisDone;
-  m_analysis = std::async(std::launch::async, [soup, radius, known, done] {
+  // The part's own mesh and tree, built once with the window's scene (one object).
+  const std::shared_ptr<const CollisionScene> scene = settings().scene;
+  m_analysis = std::async(std::launch::async, [soup, radius, known, done, scene] {
     Analysis analysis;
     const double share = known ? 0.0 : 0.5;
     if (!known)
@@ -183,8 +185,10 @@ void InspectorWindow::startAnalysis()
     ToolReachOptions reach;
     reach.toolRadius = radius;
     reach.progress = [done, share](double fraction) { *done = share + (1.0 - share) * fraction; };
+    const CollisionObject& part = scene->objects[0];
     analysis.reach =
-      findToolReach(*soup, inspection.closed && inspection.misorientedEdges.count == 0, reach);
+      findToolReach(*soup, part.mesh, part.tree,
+                    inspection.closed && inspection.misorientedEdges.count == 0, reach);
     return analysis;
   });
 }

@@ -29,12 +29,7 @@ std::unique_ptr<InspectorWindow> openWindow(const std::string& file, double scal
                                             const InspectorWindowOptions& options)
 {
   InspectorPart part{file, scale, readMeshFile(file, scale)};
-  TriangleMesh mesh;
-  MeshError error;
-  if (!mesh.build(part.soup, error))
-  {
-    throw InputError(file, error.message);
-  }
+  TriangleMesh mesh = buildTriangleMesh(part.soup, file);
   if (options.toolRadius > mesh.diagonal())
   {
     throw InputError("--tool-radius", "a tool of " + std::to_string(options.toolRadius) +

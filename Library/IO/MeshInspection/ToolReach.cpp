@@ -63,6 +63,20 @@ double signedVolume(const TriangleSoup& soup)
 ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
                         const ToolReachOptions& options)
 {
+  TriangleMesh mesh;
+  MeshError error;
+  if (!mesh.build(soup, error))
+  {
+    throw std::invalid_argument(error.message);
+  }
+  auto tree = std::make_unique<SphereTree>();
+  tree->build(mesh);
+  return findToolReach(soup, mesh, *tree, closedAndOriented, options);
+}
+
+ToolReach findToolReach(const TriangleSoup& soup, const TriangleMesh& mesh, const SphereTree& tree,
+                        bool closedAndOriented, const ToolReachOptions& options)
+{
   const double radius = options.toolRadius;
   if (!(radius > 0.0) || !std::isfinite(radius))
   {
@@ -74,16 +88,8 @@ ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
       options.progress(done);
     }
   };
-  TriangleMesh mesh;
-  MeshError error;
-  if (!mesh.build(soup, error))
-  {
-    throw std::invalid_argument(error.message);
-  }
-  auto tree = std::make_unique<SphereTree>();
-  tree->build(mesh);
   auto scratch = std::make_unique<SphereTreeScratch>();
-  const TangentBallTest test{mesh, *tree, *scratch};
+  const TangentBallTest test{mesh, tree, *scratch};
   progress(0.1);
 
   ToolReach reach;

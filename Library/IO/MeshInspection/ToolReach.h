@@ -17,6 +17,8 @@
 #pragma once
 
 #include "Core/Vec3.h"
+#include "Geometry/SphereTree.h"
+#include "Geometry/TriangleMesh.h"
 #include "Geometry/TriangleSoup.h"
 
 #include <cstddef>
@@ -87,5 +89,10 @@ struct ToolReach
 /// radius that is not above 0 or a soup the kernel refuses (TriangleMesh::build).
 ToolReach findToolReach(const TriangleSoup& soup, bool closedAndOriented,
                         const ToolReachOptions& options);
+
+/// The same with the soup's mesh and sphere tree already built (a window's scene has them): no
+/// tree is built again for another radius. `mesh` must be `soup` built, `tree` built over it.
+ToolReach findToolReach(const TriangleSoup& soup, const TriangleMesh& mesh, const SphereTree& tree,
+                        bool closedAndOriented, const ToolReachOptions& options);
 
 } // namespace proxima
