@@ -12,6 +12,12 @@ foreach(_component IN LISTS _components)
           DESTINATION "${PROXIMA_CMAKE_DIR}" COMPONENT ${_component})
 endforeach()
 set(PROXIMA_EXPORTED_COMPONENTS "${_components}")
+# A scripted run couples a scene's bodies (IO/Scene/SceneBodies) when Dynamics is built.
+if(PROXIMA_BUILD_DYNAMICS)
+  set(PROXIMA_IO_NEEDS_DYNAMICS Dynamics)
+else()
+  set(PROXIMA_IO_NEEDS_DYNAMICS "")
+endif()
 
 configure_package_config_file(
   "${CMAKE_CURRENT_LIST_DIR}/Install/ProximaConfig.cmake.in"

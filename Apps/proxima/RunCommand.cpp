@@ -8,7 +8,9 @@
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "Dynamics/BodyCoupling.h"
 #include "IO/Output/AtomicOutputFile.h"
+#include "IO/PathAndTrace/BodyPoseWriter.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
@@ -40,6 +42,7 @@ struct RunOptions
 {
   SceneOptions scene;
   std::string out;
+  std::string bodiesOut;
   std::string summary;
   DeviceChoiceOptions device;
   bool realtime = false;
@@ -201,6 +204,20 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   }
 }
 
+// One row per body: where its object's frame is now, and its joint coordinate.
+void writeBodyPoses(BodyPoseWriter& poses, const BodyCoupling& bodies, const HapticState& record)
+{
+  for (std::size_t body = 0; body < bodies.numBodies(); ++body)
+  {
+    const BodyPose pose = bodies.world().pose(body);
+    const JointType type = bodies.world().jointType(body);
+    const double q = bodies.world().jointPosition(body);
+    const bool single = type == JointType::Hinge || type == JointType::Slide;
+    poses.write(record.tick, record.time, bodies.object(body), pose.position, pose.orientation,
+                single ? &q : nullptr);
+  }
+}
+
 int run(const RunOptions& options)
 {
   const SceneOptions& shared = options.scene;
@@ -232,7 +249,20 @@ int run(const RunOptions& options)
                    " s)");
   // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
   // outputs into one file.
+  // The bodies, before any output exists: a body too light or a mesh with no volume is bad input.
+  std::unique_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
+  if (bodies != nullptr && options.realtime)
+  {
+    throw InputError("--realtime", "the scene has bodies, which run in lockstep only so far "
+                                   "(leave out --realtime)");
+  }
+  if (bodies == nullptr && !options.bodiesOut.empty())
+  {
+    throw InputError("--bodies-out", "the scene has no bodies (a scene file's objects with a "
+                                     "\"body\", Documentation/Dynamics.md)");
+  }
   refuseOverlappingFiles({{options.out, "--out"},
+                          {options.bodiesOut, "--bodies-out"},
                           {options.summary, "--summary"},
                           {options.device.recordDevice, "--record-device"}},
                          runInputs(shared, loaded, options.device));
@@ -242,7 +272,18 @@ int run(const RunOptions& options)
 
   RunDevice device(options.device, fingerPath, numTicks);
   TraceWriter trace(options.out);
-  const auto writeTick = [&trace](const HapticState& record) { trace.write(record); };
+  std::unique_ptr<BodyPoseWriter> poses;
+  if (!options.bodiesOut.empty())
+  {
+    poses = std::make_unique<BodyPoseWriter>(options.bodiesOut);
+  }
+  const auto writeTick = [&](const HapticState& record) {
+    trace.write(record);
+    if (poses != nullptr)
+    {
+      writeBodyPoses(*poses, *bodies, record);
+    }
+  };
   ScriptedRunOutcome outcome;
   std::string realtimeJson;
   if (options.realtime)
@@ -266,13 +307,18 @@ int run(const RunOptions& options)
   else
   {
     Progress progress(numTicks);
-    outcome = playScriptedPath(shared, scene, fingerPath, device.device(), writeTick,
-                               [&progress](std::uint64_t done) { progress.update(done); });
+    outcome = playScriptedPath(
+      shared, scene, fingerPath, device.device(), writeTick,
+      [&progress](std::uint64_t done) { progress.update(done); }, bodies.get());
     progress.finish();
   }
   // The trace is put in place last, once the recording and the summary are written: a failure
   // of either then leaves no trace behind.
   trace.finish();
+  if (poses != nullptr)
+  {
+    poses->finish();
+  }
   device.finish();
 
   const std::string text =
@@ -282,6 +328,10 @@ int run(const RunOptions& options)
     writeFileAtomically(options.summary, text);
   }
   trace.close();
+  if (poses != nullptr)
+  {
+    poses->close();
+  }
   writeStandardOutput(text);
   return kExitOk;
 }
@@ -299,6 +349,9 @@ Command addRunCommand(CLI::App& parent)
                  "object and flags)")
     ->required();
   app->add_option("--summary", options->summary, "Also write the summary JSON to this file");
+  app->add_option("--bodies-out", options->bodiesOut,
+                  "With a scene that has bodies: write their poses, one row per body per tick "
+                  "(tick,t,object,x,y,z,qw,qx,qy,qz,q; Documentation/Dynamics.md)");
   addDeviceOptions(*app, options->device);
   app->add_flag("--realtime", options->realtime,
                 "Run on the real clock through the threaded runtime (servo and proxy threads at "

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace proxima
 {
@@ -285,6 +286,54 @@ BodyEnergy BodyWorld::energy()
   // Forward dynamics computes both energies (the energy flag is on) without moving the state.
   mj_forward(model, data);
   return BodyEnergy{data->energy[1], data->energy[0]};
+}
+
+BodyEnergy BodyWorld::bodyEnergy(std::size_t body)
+{
+  mjModel* model = m_model->model;
+  mjData* data = m_model->data;
+  mj_forward(model, data);
+  const int b = static_cast<int>(body) + 1;
+  const int firstDof = model->body_dofadr[b];
+  const int numDofs = model->body_dofnum[b];
+  // Kinetic: 1/2 v^T M v with the velocities of this body's joint only (M is block diagonal, a
+  // block per body, as every body hangs from the world).
+  std::vector<mjtNum> velocity(static_cast<std::size_t>(model->nv), 0.0);
+  std::vector<mjtNum> momentum(static_cast<std::size_t>(model->nv), 0.0);
+  for (int dof = firstDof; dof < firstDof + numDofs; ++dof)
+  {
+    velocity[static_cast<std::size_t>(dof)] = data->qvel[dof];
+  }
+  mj_mulM(model, data, momentum.data(), velocity.data());
+  BodyEnergy energy;
+  for (int dof = firstDof; dof < firstDof + numDofs; ++dof)
+  {
+    energy.kinetic +=
+      0.5 * velocity[static_cast<std::size_t>(dof)] * momentum[static_cast<std::size_t>(dof)];
+  }
+  // Potential: gravity's (zero at the world's origin, as MuJoCo counts it) and the joint spring's.
+  const mjtNum* g = model->opt.gravity;
+  const mjtNum* c = data->xipos + 3 * b;
+  energy.potential = -model->body_mass[b] * (g[0] * c[0] + g[1] * c[1] + g[2] * c[2]);
+  if (model->body_jntnum[b] > 0)
+  {
+    const int joint = model->body_jntadr[b];
+    const double k = model->jnt_stiffness[joint];
+    const int at = model->jnt_qposadr[joint];
+    if (model->jnt_type[joint] == mjJNT_HINGE || model->jnt_type[joint] == mjJNT_SLIDE)
+    {
+      const double q = data->qpos[at] - model->qpos_spring[at];
+      energy.potential += 0.5 * k * q * q;
+    }
+    else if (model->jnt_type[joint] == mjJNT_BALL)
+    {
+      // The angle between the pose and the spring's rest pose (the start).
+      mjtNum difference[3];
+      mju_subQuat(difference, data->qpos + at, model->qpos_spring + at);
+      energy.potential += 0.5 * k * mju_dot3(difference, difference);
+    }
+  }
+  return energy;
 }
 
 } // namespace proxima

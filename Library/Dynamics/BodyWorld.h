@@ -62,6 +62,11 @@ public:
   /// The energies of the present state (computes the model forward: for reports and tests, not
   /// for the haptic loop).
   BodyEnergy energy();
+  /// The same energies for one body (each body hangs from the world by its own joint, so the
+  /// bodies' kinetic energies add up to the whole; the potentials are gravity's and its joint
+  /// spring's). For reports and tests.
+  BodyEnergy bodyEnergy(std::size_t body);
+  JointType jointType(std::size_t body) const { return m_joints[body]; }
 
 private:
   struct Model;

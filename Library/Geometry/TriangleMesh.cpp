@@ -112,6 +112,36 @@ bool TriangleMesh::build(TriangleSoup soup, MeshError& error)
   return true;
 }
 
+void TriangleMesh::placeAs(const TriangleMesh& placed, const RigidTransform& pose)
+{
+  if (m_soup.points.size() != placed.m_soup.points.size() ||
+      m_soup.triangles.size() != placed.m_soup.triangles.size() ||
+      m_soup.pointNormals.size() != placed.m_soup.pointNormals.size())
+  {
+    *this = placed; // not a copy yet: the one allocation, off the haptic thread's steady state
+  }
+  for (std::size_t i = 0; i < placed.m_soup.points.size(); ++i)
+  {
+    m_soup.points[i] = pose.apply(placed.m_soup.points[i]);
+  }
+  for (std::size_t i = 0; i < placed.m_soup.pointNormals.size(); ++i)
+  {
+    m_soup.pointNormals[i] = pose.rotate(placed.m_soup.pointNormals[i]);
+  }
+  Aabb bounds;
+  for (std::size_t t = 0; t < m_corners.size(); ++t)
+  {
+    const auto& tri = m_soup.triangles[t];
+    m_corners[t] =
+      TriangleCorners{m_soup.points[tri[0]], m_soup.points[tri[1]], m_soup.points[tri[2]]};
+    bounds.expand(m_corners[t].a);
+    bounds.expand(m_corners[t].b);
+    bounds.expand(m_corners[t].c);
+  }
+  m_bounds = bounds;
+  m_maxAbsCoordinate = std::max(maxAbsComponent(bounds.lower), maxAbsComponent(bounds.upper));
+}
+
 std::size_t TriangleMesh::memoryBytes() const
 {
   return m_soup.points.capacity() * sizeof(Vec3) +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Core/Aabb.h"
+#include "Core/RigidTransform.h"
 #include "Core/Vec3.h"
 #include "Geometry/TriangleSoup.h"
 
@@ -69,6 +70,12 @@ public:
   double diagonal() const { return m_bounds.diagonal(); }
   /// Largest absolute coordinate: sets the rounding scale of every position computed near it.
   double maxAbsCoordinate() const { return m_maxAbsCoordinate; }
+
+  /// Makes this mesh `placed` moved by `pose` (points, point normals, corners, bounds; texture
+  /// coordinates stay): a moving body's object where it is now. When this mesh is already a copy
+  /// of `placed` it allocates nothing, so the haptic thread may call it each tick a body moves;
+  /// O(points + triangles).
+  void placeAs(const TriangleMesh& placed, const RigidTransform& pose);
 
   /// Bytes held by the mesh (soup and the per-triangle corner copies).
   std::size_t memoryBytes() const;

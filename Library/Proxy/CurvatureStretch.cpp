@@ -93,7 +93,7 @@ double ProxySolver::curvatureAlong(const ContactPlane& plane, const Vec3& direct
   }
   Vec3 from;
   Vec3 to;
-  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
+  const TriangleCorners& corners = placedMesh(plane.object).corners(plane.triangle);
   if (!edgeOf(corners, plane.closest.feature, from, to) || !(squaredNorm(to - from) > 0.0))
   {
     return 1.0 / rho; // a corner's sphere bends the same way in every tangent direction
@@ -176,7 +176,7 @@ Vec3 ProxySolver::stretchedSlide(const GoalSolution& solution, const Vec3& toFin
   }
   Vec3 from;
   Vec3 to;
-  const TriangleCorners& corners = m_scene->objects[plane.object].mesh.corners(plane.triangle);
+  const TriangleCorners& corners = placedMesh(plane.object).corners(plane.triangle);
   Vec3 along;
   if (edgeOf(corners, plane.closest.feature, from, to))
   {

@@ -114,6 +114,8 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
 {
   m_scene = scene;
   m_parameters = parameters;
+  m_moving.clear();
+  m_movingIndex.clear();
   m_skin = scene != nullptr ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
                             : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
@@ -139,6 +141,86 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_shadingTolerance = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
 }
 
+void ProxySolver::setMovingObjects(const std::vector<std::uint32_t>& objects)
+{
+  m_moving.clear();
+  m_movingIndex.clear();
+  if (m_scene == nullptr || objects.empty())
+  {
+    return;
+  }
+  m_movingIndex.assign(m_scene->objects.size(), -1);
+  m_moving.reserve(objects.size());
+  for (const std::uint32_t object : objects)
+  {
+    if (object >= m_scene->objects.size() || m_movingIndex[object] >= 0)
+    {
+      continue;
+    }
+    m_movingIndex[object] = static_cast<int>(m_moving.size());
+    MovingObject moving;
+    moving.object = object;
+    moving.mesh = m_scene->objects[object].mesh;
+    m_moving.push_back(std::move(moving));
+  }
+  m_cache.invalidate();
+  m_planesValid = false;
+}
+
+void ProxySolver::setObjectPose(std::uint32_t object, const RigidTransform& pose)
+{
+  const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+  if (moving >= 0)
+  {
+    m_moving[static_cast<std::size_t>(moving)].pose = pose;
+  }
+}
+
+const RigidTransform& ProxySolver::objectPose(std::uint32_t object) const
+{
+  static const RigidTransform identity;
+  const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+  return moving < 0 ? identity : m_moving[static_cast<std::size_t>(moving)].pose;
+}
+
+void ProxySolver::followMovingObjects(ProxyTickResult& result)
+{
+  bool moved = false;
+  for (MovingObject& moving : m_moving)
+  {
+    if (moving.pose == moving.applied)
+    {
+      continue;
+    }
+    // The object's motion relative to the proxy, seen from the object: the proxy goes from where
+    // the old pose puts it to where the new one does (a straight chord of a rotation's arc, whose
+    // sag at a haptic rate is far inside the skin). A contact on the way means the object reached
+    // the proxy and carries it from there on, as the move stage would stop the proxy on it.
+    const CollisionObject& object = m_scene->objects[moving.object];
+    SweepQuery query;
+    query.start = moving.applied.applyInverse(m_proxy);
+    query.end = moving.pose.applyInverse(m_proxy);
+    query.radius = m_parameters.radius;
+    query.skin = m_skin;
+    const SweepContact contact =
+      object.tree.firstContact(object.mesh, query, m_scratch, &result.queries);
+    if (contact.hit && contact.t < 1.0)
+    {
+      const Vec3 stopped = query.start + (query.end - query.start) * contact.t;
+      m_proxy = moving.pose.apply(stopped);
+      result.pushedByObject = true;
+    }
+    moving.mesh.placeAs(object.mesh, moving.pose);
+    moving.applied = moving.pose;
+    moved = true;
+  }
+  if (moved)
+  {
+    m_planesValid = false;
+    result.proxy = m_proxy;
+  }
+}
+
 void ProxySolver::refreshCache(QueryStats& stats)
 {
   if (!cacheNeedsRebuild())
@@ -158,9 +240,9 @@ void ProxySolver::refreshCache(QueryStats& stats)
 
 bool ProxySolver::cacheNeedsRebuild() const
 {
-  if (!m_parameters.temporalCoherence || m_scene == nullptr)
+  if (!m_parameters.temporalCoherence || m_scene == nullptr || !m_moving.empty())
   {
-    return false;
+    return false; // moving objects: the cached triangles would move under the cache
   }
   // Valid, and the proxy within half the cached margin of the centre: the next moves are likely
   // to stay covered.
@@ -247,9 +329,17 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
       return outcome;
     }
   }
-  for (const CollisionObject& object : m_scene->objects)
+  for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
   {
-    const SweepContact contact = object.tree.firstContact(object.mesh, query, m_scratch, &stats);
+    const CollisionObject& object = m_scene->objects[objectIndex];
+    const RigidTransform* pose = treePose(objectIndex);
+    SweepQuery inObject = query;
+    if (pose != nullptr)
+    {
+      inObject.start = pose->applyInverse(from);
+      inObject.end = pose->applyInverse(to);
+    }
+    const SweepContact contact = object.tree.firstContact(object.mesh, inObject, m_scratch, &stats);
     if (contact.hit && contact.t < outcome.t)
     {
       outcome.hit = true;
@@ -304,14 +394,21 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
     {
       const CollisionObject& object = m_scene->objects[objectIndex];
+      const RigidTransform* pose = treePose(objectIndex);
       const std::uint32_t room = kMaxNearbyTriangles - stored;
       const std::uint32_t found = object.tree.gatherWithin(
-        object.mesh, position, reach, m_nearby + stored, room, m_scratch, &stats);
+        object.mesh, pose != nullptr ? pose->applyInverse(position) : position, reach,
+        m_nearby + stored, room, m_scratch, &stats);
       complete = complete && found <= room;
       const std::uint32_t kept = found < room ? found : room;
       for (std::uint32_t i = 0; i < kept; ++i)
       {
         m_nearbyObject[stored + i] = objectIndex;
+        if (pose != nullptr)
+        {
+          // Found in the object's frame; the planes are made in the world's.
+          m_nearby[stored + i].closest.point = pose->apply(m_nearby[stored + i].closest.point);
+        }
       }
       stored += kept;
     }
@@ -327,8 +424,8 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
       continue; // the centre lies on the triangle: no direction is free of it
     }
     const Vec3 normal = away / length;
-    const bool curved = touchesCurvedPart(
-      m_scene->objects[m_nearbyObject[i]].mesh.corners(near.triangle), near.closest, normal);
+    const bool curved =
+      touchesCurvedPart(placedMesh(m_nearbyObject[i]).corners(near.triangle), near.closest, normal);
     bool duplicate = false;
     for (int k = 0; k < m_numPlanes && !duplicate; ++k)
     {
@@ -410,7 +507,7 @@ bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t 
 {
   // The touched edge (both its points) or corner of the plane's triangle, looked for in the other
   // triangles within reach: a rim no other triangle shares is the edge of an open sheet.
-  const auto& own = m_scene->objects[plane.object].mesh.indices(plane.triangle);
+  const auto& own = placedMesh(plane.object).indices(plane.triangle);
   std::uint32_t points[2] = {0, 0};
   int numPoints = 1;
   switch (plane.closest.feature)
@@ -435,7 +532,7 @@ bool ProxySolver::sharesTouchedFeature(const ContactPlane& plane, std::uint32_t 
       break;
     case TriangleFeature::Face: return true;
   }
-  const TriangleMesh& mesh = m_scene->objects[plane.object].mesh;
+  const TriangleMesh& mesh = placedMesh(plane.object);
   if (numPoints == 2)
   {
     for (std::uint32_t i = 0; i < numNearby; ++i)
@@ -498,22 +595,25 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
 {
   // Shading only where the material asks for it and the mesh has normals, texture only where it
   // has maps and texture coordinates: a plain surface pays a few branches per plane.
-  const CollisionObject& object = m_scene->objects[plane.object];
-  const SurfaceMaterial& material = object.material;
-  plane.shaded = material.shading && object.mesh.hasPointNormals() &&
-                 interpolatedNormal(object.mesh, plane.triangle, plane.closest, plane.normal,
-                                    plane.shadedNormal);
+  const SurfaceMaterial& material = m_scene->objects[plane.object].material;
+  const TriangleMesh& mesh = placedMesh(plane.object);
+  plane.shaded =
+    material.shading && mesh.hasPointNormals() &&
+    interpolatedNormal(mesh, plane.triangle, plane.closest, plane.normal, plane.shadedNormal);
   if (plane.shaded && alone && plane.closest.feature != TriangleFeature::Face)
   {
     // An edge or corner that no other triangle shares here: the rim of an open sheet, where the
     // proxy can roll from the top side to the bottom. Paper Fig. 7's tilted hypothetical surface.
-    plane.shadedNormal = tiltedRimNormal(object.mesh, plane);
+    plane.shadedNormal = tiltedRimNormal(mesh, plane);
   }
-  plane.textured = !material.textures.empty() && object.mesh.hasTexCoords();
+  plane.textured = !material.textures.empty() && mesh.hasTexCoords();
   plane.stiffnessScale = material.stiffness;
   for (const StiffnessRegion& region : material.stiffnessRegions)
   {
-    plane.stiffnessScale *= stiffnessRegionScale(region, plane.closest.point);
+    // Regions lie in the object as placed, and move with it.
+    const RigidTransform* pose = treePose(plane.object);
+    plane.stiffnessScale *= stiffnessRegionScale(
+      region, pose != nullptr ? pose->applyInverse(plane.closest.point) : plane.closest.point);
   }
   plane.staticFriction = material.staticFriction;
   plane.dynamicFriction = material.dynamicFriction;
@@ -526,7 +626,7 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
   {
     // Paper 4.3: the contact weights interpolate the texture coordinate; each bump map gives a
     // first-pass plane of its own, and property maps scale the coefficients there.
-    plane.texCoord = interpolateTexCoord(object.mesh, plane.triangle, plane.closest);
+    plane.texCoord = interpolateTexCoord(mesh, plane.triangle, plane.closest);
     const double friction = textureScale(material, TextureRole::Friction, plane.texCoord);
     plane.staticFriction *= friction;
     plane.dynamicFriction *= friction;
@@ -536,7 +636,7 @@ bool ProxySolver::dressPlane(ContactPlane& plane, bool alone)
     {
       Vec3 bumped;
       if (map.role != TextureRole::Bump ||
-          !bumpedNormal(object.mesh, plane.triangle, plane.texCoord, firstPass, map, bumped))
+          !bumpedNormal(mesh, plane.triangle, plane.texCoord, firstPass, map, bumped))
       {
         continue;
       }
@@ -680,6 +780,10 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   {
     result.refusedFinger = true;
     return result;
+  }
+  if (!m_moving.empty())
+  {
+    followMovingObjects(result);
   }
   ProxyTickState tick(m_parameters, withinReach(requestedFinger), m_proxy, m_skin);
   refreshCache(result.queries);

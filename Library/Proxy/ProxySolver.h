@@ -4,6 +4,7 @@
 // stops moving. No allocation, locks, exceptions, I/O or virtual calls inside update().
 #pragma once
 
+#include "Core/RigidTransform.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SphereTree.h"
 #include "Proxy/CandidateCache.h"
@@ -12,6 +13,7 @@
 #include "Proxy/ProxyParameters.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace proxima
 {
@@ -59,6 +61,9 @@ struct ProxyTickResult
   bool hitIterationCap = false;
   /// The tick's work budget (ProxyParameters::tickBudget*) ended it before the proxy stopped.
   bool budgetLimited = false;
+  /// A moving object (setObjectPose) came into the proxy at the tick's start and pushed it along
+  /// (paper section 6) before the proxy sought the finger.
+  bool pushedByObject = false;
   /// The finger position was not finite: the tick was refused and the proxy held.
   bool refusedFinger = false;
   /// The first update after resetProxyOutside: the proxy began this tick outside the closed
@@ -110,6 +115,30 @@ public:
   {
     resetProxy(position);
     m_startedOutsidePending = true;
+  }
+
+  /// Lets the listed objects of the scene move (paper section 6: bodies and mechanisms). Each gets
+  /// a copy of its mesh that setObjectPose moves; its sphere tree stays in the frame the object
+  /// was placed in, and queries reach it through the pose, so nothing is rebuilt when it moves.
+  /// A scene with moving objects answers every query from the trees (no candidate cache, whose
+  /// triangles would move under it). Allocates: call after setScene, off the haptic thread. Every
+  /// pose starts as the identity (the object where it was placed). An empty list: a static scene.
+  void setMovingObjects(const std::vector<std::uint32_t>& objects);
+  /// Where moving object `object` now is, relative to where it was placed. The next update first
+  /// lets it push the proxy: the proxy is swept, in the object's frame, along its motion relative
+  /// to the object since the last pose, and carried with the object from its first contact; then
+  /// the tick runs as usual against the object where it now is. Costs O(the object's points) per
+  /// pose that changed. Allocates nothing.
+  void setObjectPose(std::uint32_t object, const RigidTransform& pose);
+  /// The pose setObjectPose gave (the identity for any other object).
+  const RigidTransform& objectPose(std::uint32_t object) const;
+  bool hasMovingObjects() const { return !m_moving.empty(); }
+  /// Object `object`'s mesh where it is now: the moved copy of a moving object, or the scene's.
+  const TriangleMesh& placedMesh(std::uint32_t object) const
+  {
+    const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+    return moving < 0 ? m_scene->objects[object].mesh
+                      : m_moving[static_cast<std::size_t>(moving)].mesh;
   }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow. A finger farther
@@ -222,8 +251,31 @@ private:
   /// half its margin of its centre.
   bool cacheNeedsRebuild() const;
 
+  /// At a tick's start: moves each moving object whose pose changed, letting it push the proxy.
+  void followMovingObjects(ProxyTickResult& result);
+  /// The pose a query in the world reaches object `object`'s tree through, or null for a static
+  /// object.
+  const RigidTransform* treePose(std::uint32_t object) const
+  {
+    const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+    return moving < 0 ? nullptr : &m_moving[static_cast<std::size_t>(moving)].applied;
+  }
+
+  /// An object that moves: its pose as set, the pose its mesh copy and queries use now, and the
+  /// copy.
+  struct MovingObject
+  {
+    std::uint32_t object = 0;
+    RigidTransform pose;
+    RigidTransform applied;
+    TriangleMesh mesh;
+  };
+
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
+  std::vector<MovingObject> m_moving;
+  /// Per scene object: its index in m_moving, or -1 (empty for a static scene).
+  std::vector<int> m_movingIndex;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;

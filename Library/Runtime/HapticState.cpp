@@ -18,6 +18,7 @@ std::uint32_t tickFlags(const HapticState& state)
   set(state.contactOverflow, kTickContactOverflow);
   set(state.rateLimited, kTickForceRateLimited);
   set(state.startedOutside, kTickStartedOutside);
+  set(state.pushedByObject, kTickPushedByObject);
   return flags;
 }
 
@@ -35,6 +36,7 @@ void setTickFlags(HapticState& state, std::uint32_t flags)
   state.contactOverflow = has(kTickContactOverflow);
   state.rateLimited = has(kTickForceRateLimited);
   state.startedOutside = has(kTickStartedOutside);
+  state.pushedByObject = has(kTickPushedByObject);
 }
 
 } // namespace proxima

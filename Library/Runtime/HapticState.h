@@ -39,6 +39,9 @@ struct ContactSnapshot
   /// atan(staticFriction) and atan(dynamicFriction).
   double staticFriction = 0.0;
   double dynamicFriction = 0.0;
+  /// How far the spring presses into this plane (m; the goal solver's multiplier): the contacts
+  /// share the force on the finger in proportion to it, and a moving body feels its share.
+  double depth = 0.0;
 };
 
 struct HapticState
@@ -64,6 +67,10 @@ struct HapticState
   double stiffnessScale = 1.0;
   /// Wall time of the proxy update in nanoseconds: the one field that is not deterministic.
   std::int64_t solveNanoseconds = 0;
+  /// A moving body came into the proxy at the tick's start and pushed it (paper section 6).
+  bool pushedByObject = false;
+  /// Wall time of the dynamics step (TickDynamics.h) in nanoseconds; 0 in a scene without bodies.
+  std::int64_t dynamicsNanoseconds = 0;
   /// The sample held no usable finger (invalid, device lost, or not finite): the proxy held.
   bool fingerRefused = false;
   bool hitIterationCap = false;
@@ -113,6 +120,7 @@ enum TickFlag : std::uint32_t
   kTickContactOverflow = 1u << 8,
   kTickForceRateLimited = 1u << 9,
   kTickStartedOutside = 1u << 10,
+  kTickPushedByObject = 1u << 11,
 };
 
 /// The state's conditions as a TickFlag bitmask.

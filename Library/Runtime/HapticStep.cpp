@@ -35,6 +35,7 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
     contact.triangle = plane.triangle;
     contact.staticFriction = plane.staticFriction;
     contact.dynamicFriction = plane.dynamicFriction;
+    contact.depth = plane.depth;
   }
   state.contactObject = result.numContacts > 0 ? static_cast<int>(result.contacts[0].object) : -1;
   state.iterations = result.iterations;
@@ -46,18 +47,19 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
   state.frictionLimited = result.frictionLimited;
   state.budgetLimited = result.budgetLimited;
   state.startedOutside = result.startedOutside;
+  state.pushedByObject = result.pushedByObject;
 }
 
 HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
-                       ServoForce& servo, std::uint64_t sceneVersion)
+                       ServoForce& servo, std::uint64_t sceneVersion, TickDynamics* dynamics)
 {
   const TickInput input{tick, time, device.read(time)};
   HapticState state;
   stepProxy(solver, input, state);
   state.sceneVersion = sceneVersion;
   state.proxyAge = 0.0;
-  stepDynamics(input, state);
   servo.step(input, state);
+  stepDynamics(dynamics, solver, state);
   device.writeForce(state.force, time);
   return state;
 }

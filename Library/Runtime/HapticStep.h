@@ -11,6 +11,7 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoForce.h"
+#include "Runtime/TickDynamics.h"
 
 #include <cstdint>
 
@@ -22,17 +23,24 @@ namespace proxima
 /// proxy fields (not sceneVersion or proxyAge: the caller knows those).
 void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state);
 
-/// The slot of the dynamics step (paper section 6): a scene with bodies will, here, apply the
-/// contact force kp (proxy - finger) to the touched body (J^T f_c, eqs. 23-24) and move the
-/// scene's objects to the bodies' new poses. No scene has bodies yet, and a scene without bodies
-/// runs no dynamics step, so it is empty.
-inline void stepDynamics(const TickInput& /*input*/, HapticState& /*state*/) {}
+/// The dynamics step (paper section 6), after the force stage: the force the device renders,
+/// equal and opposite, on the touched bodies (J^T f_c, eqs. 23-24), one step of the bodies, and
+/// their new poses into `solver` for the next proxy update (TickDynamics.h). A scene without
+/// bodies has no `dynamics` and runs nothing here.
+inline void stepDynamics(TickDynamics* dynamics, ProxySolver& solver, HapticState& state)
+{
+  if (dynamics != nullptr)
+  {
+    dynamics->step(state, solver);
+  }
+}
 
 /// One whole tick in one thread: reads `device` at `time`, runs the proxy step on that sample
-/// (on the scene of version `sceneVersion`), the dynamics step and the force stage on the fresh
-/// proxy (age 0), and writes the force. `servo` keeps the force stage's state (last force, fade)
-/// across ticks.
+/// (on the scene of version `sceneVersion`), the force stage on the fresh proxy (age 0), the
+/// dynamics step with that force when the scene has bodies, and writes the force. `servo` keeps
+/// the force stage's state (last force, fade) across ticks.
 HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
-                       ServoForce& servo, std::uint64_t sceneVersion = 0);
+                       ServoForce& servo, std::uint64_t sceneVersion = 0,
+                       TickDynamics* dynamics = nullptr);
 
 } // namespace proxima

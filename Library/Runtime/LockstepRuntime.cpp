@@ -19,14 +19,14 @@ std::uint64_t ticksCovering(double start, double end, double rate)
 
 void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDevice& device,
                  const ServoParameters& parameters,
-                 const std::function<void(const HapticState&)>& onTick)
+                 const std::function<void(const HapticState&)>& onTick, TickDynamics* dynamics)
 {
   ServoForce servo(parameters, device.limits());
   for (std::uint64_t tick = 0; tick < settings.numTicks; ++tick)
   {
     // Time from the tick count, not by accumulating 1/rate: no drift over millions of ticks.
     const double time = settings.startTime + static_cast<double>(tick) / settings.rate;
-    onTick(hapticStep(tick, time, solver, device, servo));
+    onTick(hapticStep(tick, time, solver, device, servo, 0, dynamics));
   }
 }
 

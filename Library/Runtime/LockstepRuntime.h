@@ -8,6 +8,7 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoParameters.h"
+#include "Runtime/TickDynamics.h"
 
 #include <cstdint>
 #include <functional>
@@ -26,9 +27,11 @@ struct LockstepSettings
 /// Number of servo ticks that cover [start, end] at `rate` (both ends included).
 std::uint64_t ticksCovering(double start, double end, double rate);
 
-/// Runs settings.numTicks ticks and hands each tick's state to `onTick`, in order.
+/// Runs settings.numTicks ticks and hands each tick's state to `onTick`, in order; with
+/// `dynamics`, each tick ends with its bodies' step.
 void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDevice& device,
                  const ServoParameters& parameters,
-                 const std::function<void(const HapticState&)>& onTick);
+                 const std::function<void(const HapticState&)>& onTick,
+                 TickDynamics* dynamics = nullptr);
 
 } // namespace proxima

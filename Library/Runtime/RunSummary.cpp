@@ -53,6 +53,29 @@ void RunSummary::add(const HapticState& record)
   }
   m_solveNanoseconds.push_back(record.solveNanoseconds);
   m_sorted = false;
+  m_pushedTicks += record.pushedByObject ? 1 : 0;
+  if (record.dynamicsNanoseconds > 0)
+  {
+    m_dynamicsNanoseconds.push_back(record.dynamicsNanoseconds);
+    m_dynamicsSorted = false;
+  }
+}
+
+double RunSummary::dynamicsNanosecondsQuantile(double q) const
+{
+  if (m_dynamicsNanoseconds.empty())
+  {
+    return 0.0;
+  }
+  if (!m_dynamicsSorted)
+  {
+    std::sort(m_dynamicsNanoseconds.begin(), m_dynamicsNanoseconds.end());
+    m_dynamicsSorted = true;
+  }
+  const double clamped = std::clamp(q, 0.0, 1.0);
+  const auto rank = static_cast<std::size_t>(
+    std::ceil(clamped * static_cast<double>(m_dynamicsNanoseconds.size())));
+  return static_cast<double>(m_dynamicsNanoseconds[rank == 0 ? 0 : rank - 1]);
 }
 
 double RunSummary::solveNanosecondsQuantile(double q) const

@@ -35,6 +35,11 @@ public:
   /// Quantile q in [0, 1] of the per-tick solve time in nanoseconds (nearest rank).
   double solveNanosecondsQuantile(double q) const;
   double meanTrianglesTested() const;
+  /// Ticks a moving body pushed the proxy (HapticState::pushedByObject).
+  std::uint64_t pushedTicks() const { return m_pushedTicks; }
+  /// Whether any tick ran a dynamics step (a scene with bodies), and quantile q of its time.
+  bool hasDynamics() const { return !m_dynamicsNanoseconds.empty(); }
+  double dynamicsNanosecondsQuantile(double q) const;
 
   /// Ticks the work budget stopped before the proxy settled (HapticState::budgetLimited).
   std::uint64_t budgetLimitedTicks() const { return m_budgetLimitedTicks; }
@@ -76,6 +81,9 @@ private:
   mutable std::vector<std::uint64_t> m_recoveryTicks;
   mutable std::vector<double> m_budgetResiduals;
   mutable std::vector<std::int64_t> m_solveNanoseconds;
+  mutable std::vector<std::int64_t> m_dynamicsNanoseconds;
+  mutable bool m_dynamicsSorted = true;
+  std::uint64_t m_pushedTicks = 0;
   mutable bool m_sorted = true;
 };
 

@@ -190,7 +190,6 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       }
     }
     updated.sceneVersion = live != nullptr ? live->version : 0;
-    stepDynamics(post, updated);
     proxyState.write(updated);
     proxyPosted.store(true, std::memory_order_release);
     if (recordCount < records.size())

@@ -67,6 +67,13 @@ inline constexpr ParameterRange kStiffnessScaleRange{0.001, false, 1000.0, ""};
 /// A stiffness region's radius.
 inline constexpr ParameterRange kStiffnessRegionRadiusRange{0.0, true, 1e3, " m"};
 
+// Bodies (paper section 6; Documentation/Dynamics.md): from a MEMS test mass to a crank handle.
+inline constexpr ParameterRange kBodyDensityRange{0.0, true, 1e5, " kg/m^3"};
+inline constexpr ParameterRange kBodyMassRange{0.0, true, 1e4, " kg"};
+inline constexpr ParameterRange kJointStiffnessRange{0.0, false, 1e6, ""};
+inline constexpr ParameterRange kJointDampingRange{0.0, false, 1e6, ""};
+inline constexpr ParameterRange kGravityRange{-100.0, false, 100.0, " m/s^2"};
+
 /// Empty when mu_s and mu_d go together; else why not. Sliding never holds harder than sticking
 /// (Coulomb; paper section 4.1), so with a static phase (mu_s > 0) mu_d must not be above mu_s.
 /// mu_s = 0 is the documented surface with no static phase that drags at mu_d

@@ -58,6 +58,7 @@ LoadedScene buildScene(const SceneDescription& description, const SphereTreeOpti
   }
   LoadedScene loaded;
   loaded.scene = std::make_unique<CollisionScene>();
+  loaded.description = description;
   ImageCache images;
   for (std::size_t i = 0; i < description.objects.size(); ++i)
   {

@@ -49,6 +49,8 @@ struct LoadedScene
   /// On the heap so that its address, which a ProxySolver keeps, stays put when this moves.
   std::unique_ptr<CollisionScene> scene;
   std::vector<LoadedObject> objects;
+  /// What the scene was built from (its bodies are made from it: IO/Scene/SceneBodies.h).
+  SceneDescription description;
   /// Wall time of reading meshes and images and preparing the meshes.
   double readMilliseconds = 0.0;
   /// Wall time of building the sphere trees.

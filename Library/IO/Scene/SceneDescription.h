@@ -51,6 +51,32 @@ struct SceneMaterial
   std::vector<StiffnessRegion> stiffnessRegions;
 };
 
+/// The joint that holds a body to the world (Documentation/Dynamics.md).
+enum class SceneJoint
+{
+  Hinge,
+  Slide,
+  Ball,
+  Free
+};
+
+/// A body on an object (scene file version 2): the object moves as a rigid body on its joint
+/// (paper section 6). Axis and anchor are in the scene's frame, where the object is placed.
+struct SceneBody
+{
+  SceneJoint joint = SceneJoint::Hinge;
+  Vec3 axis{0.0, 0.0, 1.0};
+  Vec3 anchor;
+  bool limited = false;
+  double range[2] = {0.0, 0.0};
+  /// Spring toward the start pose (N m/rad or N/m) and viscous damping (N m s/rad or N s/m).
+  double stiffness = 0.0;
+  double damping = 0.0;
+  /// Exactly one of the two is above 0: kg/m^3 of the solid the mesh bounds, or its whole mass.
+  double density = 0.0;
+  double mass = 0.0;
+};
+
 struct SceneObject
 {
   /// The mesh file, resolved against the scene file's folder.
@@ -59,6 +85,9 @@ struct SceneObject
   double scale = 1.0;
   ScenePose pose;
   SceneMaterial material;
+  /// The object is a body when `hasBody`.
+  bool hasBody = false;
+  SceneBody body;
 };
 
 struct SceneDescription
@@ -67,6 +96,19 @@ struct SceneDescription
   std::string path;
   int version = 1;
   std::vector<SceneObject> objects;
+  /// m/s^2 on the bodies, in the scene's frame (a scene has no "up" of its own).
+  Vec3 gravity;
+  bool hasBodies() const
+  {
+    for (const SceneObject& object : objects)
+    {
+      if (object.hasBody)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
 };
 
 } // namespace proxima

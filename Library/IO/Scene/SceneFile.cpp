@@ -43,14 +43,30 @@ public:
     // unknown keys.
     if (const Json* version = find(root, "version"))
     {
-      if (!version->is_number() || version->get<double>() != kSceneFileVersion)
+      if (!version->is_number() ||
+          (version->get<double>() != 1.0 && version->get<double>() != kSceneFileVersion))
       {
-        fail("version", "must be " + std::to_string(kSceneFileVersion) +
-                          " (the scene file version this program reads), got " + quoted(*version));
+        fail("version", "must be 1 or " + std::to_string(kSceneFileVersion) +
+                          " (the scene file versions this program reads), got " + quoted(*version));
       }
-      scene.version = kSceneFileVersion;
+      scene.version = static_cast<int>(version->get<double>());
     }
-    checkKeys(root, "", {"version", "objects"});
+    m_version = scene.version;
+    checkKeys(root, "", {"version", "gravity", "objects"});
+    if (const Json* gravity = find(root, "gravity"))
+    {
+      needsVersion2("gravity");
+      const std::vector<double> g = numbers(*gravity, "gravity", 3, "[gx, gy, gz] in m/s^2");
+      for (const double component : g)
+      {
+        if (!kGravityRange.contains(component))
+        {
+          fail("gravity", "each component must be " + describeRange(kGravityRange) + ", got " +
+                            quoted(*gravity));
+        }
+      }
+      scene.gravity = {g[0], g[1], g[2]};
+    }
     const Json& objects = require(root, "objects", "");
     if (!objects.is_array() || objects.empty())
     {
@@ -67,7 +83,7 @@ private:
   SceneObject readObject(const Json& value, const std::string& where) const
   {
     requireObject(value, where);
-    checkKeys(value, where, {"mesh", "scale", "pose", "material"});
+    checkKeys(value, where, {"mesh", "scale", "pose", "material", "body"});
     SceneObject object;
     object.mesh = filePath(require(value, "mesh", where), child(where, "mesh"));
     if (const Json* scale = find(value, "scale"))
@@ -82,7 +98,122 @@ private:
     {
       object.material = readMaterial(*material, child(where, "material"));
     }
+    if (const Json* body = find(value, "body"))
+    {
+      needsVersion2(child(where, "body"));
+      object.hasBody = true;
+      object.body = readBody(*body, child(where, "body"));
+    }
     return object;
+  }
+
+  void needsVersion2(const std::string& where) const
+  {
+    if (m_version < 2)
+    {
+      fail(where, "bodies need \"version\": 2 at the top level (this file reads as version 1)");
+    }
+  }
+
+  void readJoint(const Json& value, const std::string& where, SceneBody& body) const
+  {
+    requireObject(value, where);
+    checkKeys(value, where, {"type", "axis", "anchor", "range", "stiffness", "damping"});
+    const Json& type = require(value, "type", where);
+    const std::string typeName = type.is_string() ? type.get<std::string>() : std::string();
+    if (typeName == "hinge")
+    {
+      body.joint = SceneJoint::Hinge;
+    }
+    else if (typeName == "slide")
+    {
+      body.joint = SceneJoint::Slide;
+    }
+    else if (typeName == "ball")
+    {
+      body.joint = SceneJoint::Ball;
+    }
+    else if (typeName == "free")
+    {
+      body.joint = SceneJoint::Free;
+    }
+    else
+    {
+      fail(child(where, "type"),
+           "must be \"hinge\", \"slide\", \"ball\" or \"free\", got " + quoted(type));
+    }
+    const bool axial = body.joint == SceneJoint::Hinge || body.joint == SceneJoint::Slide;
+    const auto onlyFor = [&](const char* key, bool allowed, const char* why) {
+      if (!allowed && find(value, key) != nullptr)
+      {
+        fail(child(where, key), "a " + typeName + " joint takes no " + key + " (" + why + ")");
+      }
+    };
+    onlyFor("axis", axial, "only hinge and slide joints have an axis");
+    onlyFor("range", axial, "only hinge and slide joints have one coordinate to limit");
+    onlyFor("stiffness", body.joint != SceneJoint::Free, "a free body has no joint to spring");
+    onlyFor("damping", body.joint != SceneJoint::Free, "a free body has no joint to damp");
+    onlyFor("anchor", body.joint != SceneJoint::Free, "a free body turns about its centre of mass");
+    if (axial)
+    {
+      const std::string at = child(where, "axis");
+      const std::vector<double> a = numbers(require(value, "axis", where), at, 3, "[ax, ay, az]");
+      body.axis = {a[0], a[1], a[2]};
+      if (!(norm(body.axis) > 0.0))
+      {
+        fail(at, "must not be zero");
+      }
+    }
+    if (const Json* anchor = find(value, "anchor"))
+    {
+      const std::vector<double> a =
+        numbers(*anchor, child(where, "anchor"), 3, "[x, y, z] in metres");
+      body.anchor = {a[0], a[1], a[2]};
+    }
+    if (const Json* range = find(value, "range"))
+    {
+      const std::string at = child(where, "range");
+      const std::vector<double> r = numbers(*range, at, 2, "[low, high]");
+      if (!(r[0] < r[1]))
+      {
+        fail(at, "must be [low, high] with low below high, got " + quoted(*range));
+      }
+      body.limited = true;
+      body.range[0] = r[0];
+      body.range[1] = r[1];
+    }
+    if (const Json* stiffness = find(value, "stiffness"))
+    {
+      body.stiffness = ranged(*stiffness, child(where, "stiffness"), kJointStiffnessRange);
+    }
+    if (const Json* damping = find(value, "damping"))
+    {
+      body.damping = ranged(*damping, child(where, "damping"), kJointDampingRange);
+    }
+  }
+
+  SceneBody readBody(const Json& value, const std::string& where) const
+  {
+    requireObject(value, where);
+    checkKeys(value, where, {"joint", "density", "mass"});
+    SceneBody body;
+    readJoint(require(value, "joint", where), child(where, "joint"), body);
+    const Json* density = find(value, "density");
+    const Json* mass = find(value, "mass");
+    if ((density == nullptr) == (mass == nullptr))
+    {
+      fail(where, std::string(density == nullptr ? "needs" : "takes only") +
+                    " one of \"density\" (kg/m^3) and \"mass\" (kg)");
+    }
+    if (density != nullptr)
+    {
+      body.density = ranged(*density, child(where, "density"), kBodyDensityRange);
+    }
+    else
+    {
+      body.mass = ranged(*mass, child(where, "mass"), kBodyMassRange);
+    }
+    return body;
   }
 
   ScenePose readPose(const Json& value, const std::string& where) const
@@ -281,6 +412,7 @@ private:
   }
 
   static constexpr double kQuaternionNormTolerance = 1e-3;
+  int m_version = 1;
 };
 } // namespace
 

@@ -8,6 +8,16 @@
 #include <chrono>
 #include <memory>
 
+#ifdef PROXIMA_WITH_DYNAMICS
+#include "IO/Scene/SceneBodies.h"
+#else
+namespace proxima
+{
+class BodyCoupling : public TickDynamics
+{};
+} // namespace proxima
+#endif
+
 namespace proxima
 {
 namespace
@@ -23,7 +33,8 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     const CollisionScene& scene, const FingerPath& path,
                                     HapticDevice& device,
                                     const std::function<void(const HapticState&)>& onTick,
-                                    const std::function<void(std::uint64_t)>& progress)
+                                    const std::function<void(std::uint64_t)>& progress,
+                                    BodyCoupling* bodies)
 {
   ScriptedRunOutcome outcome;
   // Lockstep runs default to no budget, so that their traces stay reproducible bit for bit.
@@ -36,6 +47,10 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
   // A finger that starts inside a closed object would trap the proxy there: it starts outside.
   outcome.start = placeProxyStart(scene, parameters, path.positions.front());
   resetProxyTo(*solver, outcome.start);
+  if (bodies != nullptr)
+  {
+    bodies->attach(*solver);
+  }
 
   LockstepSettings lockstep;
   lockstep.rate = settings.rate;
@@ -46,28 +61,67 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
   BudgetResidualProbe residualProbe(scene, parameters);
   Vec3 tickStart = solver->proxy();
   const auto runStart = std::chrono::steady_clock::now();
-  runLockstep(lockstep, *solver, device, servoParameters(settings), [&](const HapticState& record) {
-    onTick(record);
-    outcome.summary.add(record);
-    if (record.budgetLimited)
-    {
-      const auto replayStart = std::chrono::steady_clock::now();
-      outcome.summary.addBudgetResidual(
-        residualProbe.residual(tickStart, record.finger, record.proxy));
-      outcome.replayMilliseconds += millisecondsSince(replayStart);
-    }
-    tickStart = record.proxy;
-    if (progress && (record.tick & 1023u) == 0)
-    {
-      progress(record.tick);
-    }
-  });
+  runLockstep(
+    lockstep, *solver, device, servoParameters(settings),
+    [&](const HapticState& record) {
+      onTick(record);
+      outcome.summary.add(record);
+      if (record.budgetLimited && bodies == nullptr)
+      {
+        // (With bodies the replay would need their motion too: no residual is measured.)
+        const auto replayStart = std::chrono::steady_clock::now();
+        outcome.summary.addBudgetResidual(
+          residualProbe.residual(tickStart, record.finger, record.proxy));
+        outcome.replayMilliseconds += millisecondsSince(replayStart);
+      }
+      tickStart = record.proxy;
+      if (progress && (record.tick & 1023u) == 0)
+      {
+        progress(record.tick);
+      }
+    },
+    bodies);
   if (progress)
   {
     progress(lockstep.numTicks);
   }
   outcome.runMilliseconds = millisecondsSince(runStart) - outcome.replayMilliseconds;
+#ifdef PROXIMA_WITH_DYNAMICS
+  if (bodies != nullptr)
+  {
+    for (std::size_t body = 0; body < bodies->numBodies(); ++body)
+    {
+      BodyOutcome report;
+      report.name = bodies->name(body);
+      report.object = bodies->object(body);
+      report.joint = jointTypeName(bodies->world().jointType(body));
+      report.jointPosition = bodies->world().jointPosition(body);
+      report.jointVelocity = bodies->world().jointVelocity(body);
+      const BodyEnergy energy = bodies->world().bodyEnergy(body);
+      report.kinetic = energy.kinetic;
+      report.potential = energy.potential;
+      report.work = bodies->work(body);
+      outcome.bodies.push_back(report);
+    }
+  }
+#endif
   return outcome;
+}
+
+std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
+                                          const LoadedScene& loaded)
+{
+#ifdef PROXIMA_WITH_DYNAMICS
+  return buildSceneBodies(loaded, settings.stiffness, settings.rate);
+#else
+  if (loaded.description.hasBodies())
+  {
+    throw InputError(loaded.description.path,
+                     "the scene has bodies, and this build has no Dynamics layer "
+                     "(configure with PROXIMA_BUILD_DYNAMICS=ON)");
+  }
+  return nullptr;
+#endif
 }
 
 std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
@@ -88,9 +142,10 @@ std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPat
   report.readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
   checkRadiusAgainstScene(settings, loaded);
   checkPathStart(settings, loaded, path);
+  const std::unique_ptr<BodyCoupling> bodies = sceneBodies(settings, loaded);
   SimulatedDevice device(path);
   const ScriptedRunOutcome outcome =
-    playScriptedPath(settings, *loaded.scene, path, device, onTick);
+    playScriptedPath(settings, *loaded.scene, path, device, onTick, {}, bodies.get());
   return scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, report);
 }
 

@@ -22,6 +22,23 @@
 namespace proxima
 {
 
+class BodyCoupling;
+
+/// A body of the scene at the end of a run (paper section 6), for the summary.
+struct BodyOutcome
+{
+  std::string name;
+  std::uint32_t object = 0;
+  std::string joint;
+  /// The joint coordinate (hinge: rad; slide: m; 0 for ball and free) and its rate.
+  double jointPosition = 0.0;
+  double jointVelocity = 0.0;
+  /// Joules: kinetic and potential energy at the end, and the work the finger did on the body.
+  double kinetic = 0.0;
+  double potential = 0.0;
+  double work = 0.0;
+};
+
 /// What playing a path gave, beside the ticks themselves.
 struct ScriptedRunOutcome
 {
@@ -36,6 +53,8 @@ struct ScriptedRunOutcome
   /// (not part of the run's time).
   double runMilliseconds = 0.0;
   double replayMilliseconds = 0.0;
+  /// The scene's bodies at the end (empty without bodies).
+  std::vector<BodyOutcome> bodies;
 };
 
 /// Plays `path` through `scene` in lockstep at the settings' rate, reading the finger from
@@ -43,12 +62,20 @@ struct ScriptedRunOutcome
 /// path's first sample, or outside the closed object that holds it (ProxyStart.h). Each tick is
 /// handed to `onTick` as it ends, then added to the summary; a budget-limited tick is replayed
 /// without the budget for its residual. `byDefault` is the budget when the settings give none.
-/// `progress`, when set, is called now and then with the ticks done.
+/// `progress`, when set, is called now and then with the ticks done. With `bodies` (the scene's,
+/// buildSceneBodies), each tick ends with their dynamics step, and `onTick` sees them where that
+/// step left them.
 ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     const CollisionScene& scene, const FingerPath& path,
                                     HapticDevice& device,
                                     const std::function<void(const HapticState&)>& onTick,
-                                    const std::function<void(std::uint64_t)>& progress = {});
+                                    const std::function<void(std::uint64_t)>& progress = {},
+                                    BodyCoupling* bodies = nullptr);
+
+/// The bodies of `loaded`'s scene coupled at the settings' kp and rate, or null when it has
+/// none. Throws InputError as buildSceneBodies does, or when this build has no Dynamics layer.
+std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
+                                          const LoadedScene& loaded);
 
 /// What the summary names beside the settings and the outcome.
 struct ScriptedRunReportContext

@@ -136,6 +136,28 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
                       {"p99.9", outcome.summary.solveNanosecondsQuantile(0.999)},
                       {"max", outcome.summary.solveNanosecondsQuantile(1.0)}};
   json["triangles_tested_per_tick"] = outcome.summary.meanTrianglesTested();
+  if (!outcome.bodies.empty())
+  {
+    // Paper section 6: where each body ended, its energy, and what the finger put into it.
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const BodyOutcome& body : outcome.bodies)
+    {
+      bodies.push_back({{"name", body.name},
+                        {"object", body.object},
+                        {"joint", body.joint},
+                        {"q", body.jointPosition},
+                        {"q_rate", body.jointVelocity},
+                        {"kinetic_J", body.kinetic},
+                        {"potential_J", body.potential},
+                        {"work_by_finger_J", body.work}});
+    }
+    json["bodies"] = std::move(bodies);
+    json["pushed_ticks"] = outcome.summary.pushedTicks();
+    json["dynamics_ns"] = {{"median", outcome.summary.dynamicsNanosecondsQuantile(0.5)},
+                           {"p99", outcome.summary.dynamicsNanosecondsQuantile(0.99)},
+                           {"p99.9", outcome.summary.dynamicsNanosecondsQuantile(0.999)},
+                           {"max", outcome.summary.dynamicsNanosecondsQuantile(1.0)}};
+  }
   nlohmann::ordered_json budgetJson;
   budgetJson["tick_budget"] = outcome.budget.text();
   budgetJson["seconds"] = outcome.budget.seconds;

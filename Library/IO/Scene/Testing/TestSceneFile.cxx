@@ -253,8 +253,82 @@ TEST_F(SceneFile, UnknownTopLevelKeySuggestsTheNearOne)
 TEST_F(SceneFile, UnsupportedVersion)
 {
   // Reported before the unknown key a newer version might bring.
-  expectRefused(write("v2.json", R"({"version": 2, "lights": [], "objects": [{"mesh": "m.obj"}]})"),
-                "version: must be 1 (the scene file version this program reads), got 2");
+  expectRefused(write("v3.json", R"({"version": 3, "lights": [], "objects": [{"mesh": "m.obj"}]})"),
+                "version: must be 1 or 2 (the scene file versions this program reads), got 3");
+}
+
+/// A version 2 scene of one object `{"mesh": "m.obj", "body": <body>}`.
+static std::string bodyScene(const std::string& body)
+{
+  return R"({"version": 2, "objects": [{"mesh": "m.obj", "body": )" + body + "}]}";
+}
+
+TEST_F(SceneFile, BodyKeysRoundTripIntoTheDescription)
+{
+  const proxima::SceneDescription scene = proxima::readSceneFile(
+    write("lever.json", R"({"version": 2, "gravity": [0, 0, -9.81], "objects": [)"
+                        R"({"mesh": "m.obj"}, {"mesh": "m.obj", "body": {"joint": )"
+                        R"({"type": "hinge", "axis": [1, 0, 0], "anchor": [0, -0.1, 0.5], )"
+                        R"("range": [-0.5, 0.25], "stiffness": 2, "damping": 0.1}, )"
+                        R"("density": 1000}}]})"));
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_FALSE(scene.objects[0].hasBody);
+  EXPECT_TRUE(scene.hasBodies());
+  EXPECT_EQ(scene.gravity.z, -9.81);
+  const proxima::SceneBody& body = scene.objects[1].body;
+  EXPECT_EQ(body.joint, proxima::SceneJoint::Hinge);
+  EXPECT_EQ(body.axis.x, 1.0);
+  EXPECT_EQ(body.anchor.y, -0.1);
+  EXPECT_EQ(body.anchor.z, 0.5);
+  EXPECT_TRUE(body.limited);
+  EXPECT_EQ(body.range[0], -0.5);
+  EXPECT_EQ(body.range[1], 0.25);
+  EXPECT_EQ(body.stiffness, 2.0);
+  EXPECT_EQ(body.damping, 0.1);
+  EXPECT_EQ(body.density, 1000.0);
+  EXPECT_EQ(body.mass, 0.0);
+  const proxima::SceneDescription free = proxima::readSceneFile(
+    write("free.json", bodyScene(R"({"joint": {"type": "free"}, "mass": 0.3})")));
+  EXPECT_EQ(free.objects[0].body.joint, proxima::SceneJoint::Free);
+  EXPECT_EQ(free.objects[0].body.mass, 0.3);
+}
+
+TEST_F(SceneFile, BodyRefusals)
+{
+  expectRefused(write("v1.json", R"({"objects": [{"mesh": "m.obj", "body": {}}]})"),
+                "objects[0].body: bodies need \"version\": 2 at the top level (this file reads "
+                "as version 1)");
+  expectRefused(write("g1.json", R"({"gravity": [0, 0, -9.81], "objects": [{"mesh": "m.obj"}]})"),
+                "gravity: bodies need \"version\": 2 at the top level (this file reads as "
+                "version 1)");
+  expectRefused(
+    write("type.json", bodyScene(R"({"joint": {"type": "pivot"}, "mass": 1})")),
+    R"(objects[0].body.joint.type: must be "hinge", "slide", "ball" or "free", got "pivot")");
+  expectRefused(write("axis.json", bodyScene(R"({"joint": {"type": "hinge"}, "mass": 1})")),
+                R"(objects[0].body.joint: missing the required key "axis")");
+  expectRefused(
+    write("zero.json", bodyScene(R"({"joint": {"type": "slide", "axis": [0, 0, 0]}, "mass": 1})")),
+    "objects[0].body.joint.axis: must not be zero");
+  expectRefused(
+    write("ballaxis.json",
+          bodyScene(R"({"joint": {"type": "ball", "axis": [0, 0, 1]}, "mass": 1})")),
+    "objects[0].body.joint.axis: a ball joint takes no axis (only hinge and slide joints have an "
+    "axis)");
+  expectRefused(write("freeanchor.json",
+                      bodyScene(R"({"joint": {"type": "free", "anchor": [0, 0, 0]}, "mass": 1})")),
+                "objects[0].body.joint.anchor: a free joint takes no anchor (a free body turns "
+                "about its centre of mass)");
+  expectRefused(write("range.json", bodyScene(R"({"joint": {"type": "hinge", "axis": [1, 0, 0], )"
+                                              R"("range": [1, -1]}, "mass": 1})")),
+                "objects[0].body.joint.range: must be [low, high] with low below high, got [1,-1]");
+  expectRefused(write("both.json", bodyScene(R"({"joint": {"type": "free"}, "mass": 1, )"
+                                             R"("density": 1000})")),
+                R"(objects[0].body: takes only one of "density" (kg/m^3) and "mass" (kg))");
+  expectRefused(write("neither.json", bodyScene(R"({"joint": {"type": "free"}})")),
+                R"(objects[0].body: needs one of "density" (kg/m^3) and "mass" (kg))");
+  expectRefusedStartingWith(write("light.json", bodyScene(R"({"joint": {"type": "free"}, )"
+                                                          R"("mass": -1})")),
+                            "objects[0].body.mass: must be a number above 0");
 }
 
 TEST_F(SceneFile, RepeatedKey)
@@ -297,8 +371,9 @@ TEST_F(SceneFile, MeshNotAPath)
 
 TEST_F(SceneFile, UnknownObjectKeyListsTheKnownOnes)
 {
-  expectRefused(oneObject("colour.json", R"("colour": "red")"),
-                "objects[0].colour: unknown key (the keys here are mesh, scale, pose, material)");
+  expectRefused(
+    oneObject("colour.json", R"("colour": "red")"),
+    "objects[0].colour: unknown key (the keys here are mesh, scale, pose, material, body)");
 }
 
 TEST_F(SceneFile, ScaleNotPositive)
@@ -582,7 +657,7 @@ TEST_F(SceneFile, LongKeysAreCutShortInTheLocation)
   const std::string key(1000, 'k');
   expectRefused(oneObject("key.json", "\"" + key + "\": 1"),
                 "objects[0]." + std::string(36, 'k') +
-                  " ...: unknown key (the keys here are mesh, scale, pose, material)");
+                  " ...: unknown key (the keys here are mesh, scale, pose, material, body)");
   expectRefused(oneObject("key2.json", "\"" + key + "\": 1, \"" + key + "\": 2"),
                 "objects[0]." + std::string(36, 'k') +
                   " ...: the key appears twice in the same object");

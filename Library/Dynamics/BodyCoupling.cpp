@@ -1,0 +1,222 @@
+#include "Dynamics/BodyCoupling.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace proxima
+{
+
+namespace
+{
+std::vector<BodyDescription> descriptions(const std::vector<CoupledBody>& bodies)
+{
+  std::vector<BodyDescription> list;
+  list.reserve(bodies.size());
+  for (const CoupledBody& body : bodies)
+  {
+    list.push_back(body.description);
+  }
+  return list;
+}
+
+// The inertia tensor (about the centre of mass) as a matrix.
+std::array<Vec3, 3> inertiaRows(const SolidMassProperties& mass)
+{
+  const double* i = mass.inertia;
+  return {Vec3{i[0], i[3], i[4]}, Vec3{i[3], i[1], i[5]}, Vec3{i[4], i[5], i[2]}};
+}
+
+// The least eigenvalue of a symmetric 3 x 3 matrix (the trigonometric closed form).
+double leastEigenvalue(const std::array<Vec3, 3>& a)
+{
+  const double offDiagonal = a[0].y * a[0].y + a[0].z * a[0].z + a[1].z * a[1].z;
+  if (offDiagonal == 0.0)
+  {
+    return std::min({a[0].x, a[1].y, a[2].z});
+  }
+  const double mean = (a[0].x + a[1].y + a[2].z) / 3.0;
+  const double spread =
+    std::sqrt(((a[0].x - mean) * (a[0].x - mean) + (a[1].y - mean) * (a[1].y - mean) +
+               (a[2].z - mean) * (a[2].z - mean) + 2.0 * offDiagonal) /
+              6.0);
+  std::array<Vec3, 3> b = a;
+  for (int k = 0; k < 3; ++k)
+  {
+    b[k][k] -= mean;
+    b[k] = b[k] / spread;
+  }
+  const double determinant = dot(b[0], cross(b[1], b[2]));
+  const double half = std::clamp(determinant / 2.0, -1.0, 1.0);
+  const double angle = std::acos(half) / 3.0;
+  // The three roots are mean + 2 spread cos(angle + 2 pi k / 3); k = 1 gives the least.
+  return mean + 2.0 * spread * std::cos(angle + 2.0 * M_PI / 3.0);
+}
+
+std::string figure(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+} // namespace
+
+std::string couplingStabilityDefect(const BodyDescription& body, const TriangleMesh& mesh,
+                                    double kp, double timeStep)
+{
+  const JointDescription& joint = body.joint;
+  const SolidMassProperties& mass = body.mass;
+  const Vec3 axis = normalizedOrZero(joint.axis);
+  double effectiveMass = mass.mass;
+  std::string where = "its mass";
+  if (joint.type == JointType::Hinge)
+  {
+    // I about the hinge's axis: about the parallel axis through the centre of mass, plus m d^2.
+    const std::array<Vec3, 3> inertia = inertiaRows(mass);
+    const Vec3 offset = mass.centroid - joint.anchor;
+    const Vec3 across = offset - axis * dot(offset, axis);
+    const double axial =
+      dot(axis, Vec3{dot(inertia[0], axis), dot(inertia[1], axis), dot(inertia[2], axis)}) +
+      mass.mass * squaredNorm(across);
+    double farthest = 0.0;
+    for (const Vec3& point : mesh.points())
+    {
+      const Vec3 toPoint = point - joint.anchor;
+      farthest = std::max(farthest, squaredNorm(toPoint - axis * dot(toPoint, axis)));
+    }
+    effectiveMass = farthest > 0.0 ? axial / farthest : mass.mass;
+    where = "its inertia about the hinge over the square of its reach from the axis";
+  }
+  else if (joint.type == JointType::Ball || joint.type == JointType::Free)
+  {
+    // A push at r from the centre of rotation moves the point as a mass m_eff with
+    // 1 / m_eff <= 1 / m + |r|^2 / I_min (for a ball: m is infinite, I about the anchor).
+    std::array<Vec3, 3> inertia = inertiaRows(mass);
+    const Vec3 centre = joint.type == JointType::Ball ? joint.anchor : mass.centroid;
+    if (joint.type == JointType::Ball)
+    {
+      const Vec3 d = mass.centroid - joint.anchor;
+      // The parallel-axis theorem: I_anchor = I_c + m (|d|^2 E - d d^T).
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          inertia[r][c] += mass.mass * ((r == c ? squaredNorm(d) : 0.0) - d[r] * d[c]);
+        }
+      }
+    }
+    double farthest = 0.0;
+    for (const Vec3& point : mesh.points())
+    {
+      farthest = std::max(farthest, squaredNorm(point - centre));
+    }
+    const double least = leastEigenvalue(inertia);
+    const double inverse =
+      (joint.type == JointType::Free ? 1.0 / mass.mass : 0.0) + farthest / std::max(least, 1e-300);
+    effectiveMass = 1.0 / inverse;
+    where = "its least principal inertia and its reach";
+  }
+  const double needed = kp * timeStep * timeStep;
+  if (effectiveMass >= needed)
+  {
+    return {};
+  }
+  return "too light to touch stably: at kp " + figure(kp) + " N/m and " + figure(1.0 / timeStep) +
+         " Hz a push anywhere on it needs an effective mass of at least " + figure(needed) +
+         " kg, and it has " + figure(effectiveMass) + " kg (from " + where +
+         "; make it heavier, or use a softer kp or a faster rate)";
+}
+
+BodyCoupling::BodyCoupling(const std::vector<CoupledBody>& bodies, const DynamicsSettings& settings)
+  : m_world(descriptions(bodies), settings)
+{
+  std::uint32_t largest = 0;
+  for (const CoupledBody& body : bodies)
+  {
+    m_names.push_back(body.description.name);
+    m_objects.push_back(body.object);
+    largest = std::max(largest, body.object);
+  }
+  m_bodyOfObject.assign(bodies.empty() ? 0 : largest + 1, -1);
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    m_bodyOfObject[bodies[i].object] = static_cast<int>(i);
+  }
+  m_work.assign(bodies.size(), 0.0);
+}
+
+RigidTransform BodyCoupling::transform(std::size_t body) const
+{
+  const BodyPose pose = m_world.pose(body);
+  return RigidTransform::fromQuaternion(pose.orientation[0], pose.orientation[1],
+                                        pose.orientation[2], pose.orientation[3], pose.position);
+}
+
+void BodyCoupling::attach(ProxySolver& solver)
+{
+  solver.setMovingObjects(m_objects);
+  for (std::size_t body = 0; body < m_objects.size(); ++body)
+  {
+    solver.setObjectPose(m_objects[body], transform(body));
+  }
+}
+
+void BodyCoupling::step(HapticState& state, ProxySolver& solver)
+{
+  const auto begin = std::chrono::steady_clock::now();
+  // The contacts share the force on the finger by how deep the spring presses into each (their
+  // goal multipliers); a contact on a static object passes its share to the world.
+  double totalDepth = 0.0;
+  for (int i = 0; i < state.numContacts; ++i)
+  {
+    totalDepth += state.contacts[i].depth;
+  }
+  struct Push
+  {
+    int body;
+    Vec3 point;
+    Vec3 force;
+  };
+  Push pushes[3];
+  int numPushes = 0;
+  const Vec3 onBodies = -state.force;
+  for (int i = 0; i < state.numContacts; ++i)
+  {
+    const ContactSnapshot& contact = state.contacts[i];
+    const int body = bodyOfObject(contact.object);
+    if (body < 0 || !(squaredNorm(onBodies) > 0.0))
+    {
+      continue;
+    }
+    const double share =
+      totalDepth > 0.0 ? contact.depth / totalDepth : 1.0 / static_cast<double>(state.numContacts);
+    if (!(share > 0.0))
+    {
+      continue;
+    }
+    pushes[numPushes] = Push{body, contact.point, onBodies * share};
+    m_world.applyForce(static_cast<std::size_t>(body), contact.point, pushes[numPushes].force);
+    ++numPushes;
+  }
+  m_world.step();
+  for (int i = 0; i < numPushes; ++i)
+  {
+    // Work: the force times how far the material point it pushed moved over the step.
+    const std::size_t body = static_cast<std::size_t>(pushes[i].body);
+    const RigidTransform& before = solver.objectPose(m_objects[body]);
+    const Vec3 placed = before.applyInverse(pushes[i].point);
+    const Vec3 moved = transform(body).apply(placed) - pushes[i].point;
+    m_work[body] += dot(pushes[i].force, moved);
+  }
+  for (std::size_t body = 0; body < m_objects.size(); ++body)
+  {
+    solver.setObjectPose(m_objects[body], transform(body));
+  }
+  const auto end = std::chrono::steady_clock::now();
+  state.dynamicsNanoseconds =
+    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+}
+
+} // namespace proxima

@@ -1,0 +1,73 @@
+// The coupling of the proxy and the bodies of a scene (paper section 6), each haptic tick after
+// the force stage: the force the device renders on the finger, equal and opposite, on the bodies
+// touched at the tick's contacts (J^T f_c, eqs. 23-24, shared among the contacts by how far the
+// spring presses into each), one step of the bodies at the haptic rate, and their new poses into
+// the proxy solver, which sweeps the proxy against their motion at its next update. The sphere
+// trees stay in the frames the objects were placed in: nothing is rebuilt when a body moves.
+#pragma once
+
+#include "Core/RigidTransform.h"
+#include "Dynamics/BodyWorld.h"
+#include "Runtime/TickDynamics.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// A body and the scene object that is its surface.
+struct CoupledBody
+{
+  BodyDescription description;
+  std::uint32_t object = 0;
+};
+
+/// Why a body of `mesh` (its surface, as placed) is too light to couple stably to the servo's
+/// spring `kp` (N/m) at the step `timeStep` (s), or empty when it is not. The coupled spring and
+/// mass, integrated by semi-implicit Euler, stay stable while kp dt^2 / m < 4; the check asks for
+/// kp dt^2 / m <= 1 with m the body's smallest effective mass at any point of its surface (for a
+/// hinge I / d^2 at the farthest point from the axis, a slide its mass, a ball or free body a
+/// bound from its least principal inertia), so that a push anywhere on it stays well inside.
+std::string couplingStabilityDefect(const BodyDescription& body, const TriangleMesh& mesh,
+                                    double kp, double timeStep);
+
+class BodyCoupling final : public TickDynamics
+{
+public:
+  /// Builds the bodies' world (BodyWorld's errors, naming the body).
+  BodyCoupling(const std::vector<CoupledBody>& bodies, const DynamicsSettings& settings);
+
+  /// Lets the bodies' objects move in `solver` and gives them the bodies' present poses. Call
+  /// after setScene, off the haptic thread (it allocates the moved copies of their meshes).
+  void attach(ProxySolver& solver) override;
+
+  /// The tick's coupling (TickDynamics). Allocates nothing.
+  void step(HapticState& state, ProxySolver& solver) override;
+
+  std::size_t numBodies() const { return m_objects.size(); }
+  const std::string& name(std::size_t body) const { return m_names[body]; }
+  std::uint32_t object(std::size_t body) const { return m_objects[body]; }
+  /// The body of scene object `object`, or -1 for a static object.
+  int bodyOfObject(std::uint32_t object) const
+  {
+    return object < m_bodyOfObject.size() ? m_bodyOfObject[object] : -1;
+  }
+  /// Where body `body` is now, relative to where it was placed.
+  RigidTransform transform(std::size_t body) const;
+  BodyWorld& world() { return m_world; }
+  const BodyWorld& world() const { return m_world; }
+  /// Joules the finger has done on `body` so far: each step's force on it times the displacement
+  /// over that step of the material point it pushed.
+  double work(std::size_t body) const { return m_work[body]; }
+
+private:
+  BodyWorld m_world;
+  std::vector<std::string> m_names;
+  std::vector<std::uint32_t> m_objects;
+  std::vector<int> m_bodyOfObject;
+  std::vector<double> m_work;
+};
+
+} // namespace proxima

@@ -1,0 +1,36 @@
+// The bodies file of `proxima run --bodies-out` (DESIGN.md section 3, "Bodies"): one row per
+// moving object per tick, `tick,t,object,x,y,z,qw,qx,qy,qz,q`, the world pose of the object's
+// frame (a point p of the object as placed is now at (x, y, z) + rotate(q, p)) and the joint
+// coordinate in radians or metres, empty for ball and free joints. Written atomically, like a
+// trace.
+#pragma once
+
+#include "Core/Vec3.h"
+#include "IO/Output/AtomicOutputFile.h"
+
+#include <cstdint>
+#include <string>
+
+namespace proxima
+{
+
+class BodyPoseWriter
+{
+public:
+  static constexpr const char* kHeader = "tick,t,object,x,y,z,qw,qx,qy,qz,q";
+
+  /// Starts `path` (under a temporary name until close()) with the header. Throws OutputError.
+  explicit BodyPoseWriter(const std::string& path);
+
+  /// One row; `jointPosition` null for a joint with no single coordinate. Throws OutputError.
+  void write(std::uint64_t tick, double time, std::uint32_t object, const Vec3& position,
+             const double orientation[4], const double* jointPosition);
+  /// As TraceWriter: finish() writes out and checks, close() puts the file in place.
+  void finish();
+  void close();
+
+private:
+  AtomicOutputFile m_file;
+};
+
+} // namespace proxima

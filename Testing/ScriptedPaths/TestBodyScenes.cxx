@@ -1,0 +1,250 @@
+// The paper's section 6 scenes (Data/Scenes: lever, pendulum, sensor-mass, free-block), played
+// from their scripted paths (Data/Paths/Bodies) through the coupling `proxima run` uses, and
+// checked against answers that do not come from the coupling:
+// - statics and closed forms: the lever's spring balances the push (k q = F L), the pendulum's
+//   and the test mass's periods (2 pi sqrt(I / m g d), 2 pi sqrt(m / k)), a free block's momentum
+//   equals the impulse the trace's forces gave it;
+// - no tick penetrates a moving body: the oracle (CGAL, 128-bit distances) measures the proxy
+//   against the body's mesh in the body's frame, with the pose the tick's proxy update used;
+// - the coupled system adds no energy: the bodies' energy gain never exceeds the work the finger
+//   did on them.
+// Masses and inertias in the closed forms come from the box's dimensions, not from the mesh
+// integration the scene builder uses.
+#include "Dynamics/BodyCoupling.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
+#include "ProxyOracle.h"
+#include "Runtime/SimulatedDevice.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+namespace
+{
+// Data/Meshes/box.obj: 0.1 x 0.2 x 0.01 m, centred on the origin; at 1000 kg/m^3 it weighs 0.2 kg.
+constexpr double kBoxMass = 0.2;
+constexpr double kBoxX = 0.1;
+constexpr double kBoxY = 0.2;
+constexpr double kBoxZ = 0.01;
+
+struct BodyTick
+{
+  HapticState state;
+  /// Each body's pose after the tick's dynamics step (used by the next tick's proxy update).
+  std::vector<RigidTransform> poses;
+  std::vector<double> q;
+};
+
+struct BodyRun
+{
+  std::vector<BodyTick> ticks;
+  ScriptedRunOutcome outcome;
+  std::vector<std::uint32_t> objects;
+  /// Each body's energy (kinetic + potential) at the start.
+  std::vector<double> startEnergy;
+  LoadedScene loaded;
+};
+
+BodyRun playBodyScene(const std::string& scene, const std::string& path)
+{
+  ScriptedRunSettings settings;
+  settings.scene = std::string(PROXIMA_SOURCE_DIR) + "/Data/Scenes/" + scene;
+  settings.path = std::string(PROXIMA_SOURCE_DIR) + "/Data/Paths/Bodies/" + path;
+  BodyRun run;
+  run.loaded = loadScene(settings);
+  const std::unique_ptr<BodyCoupling> bodies = sceneBodies(settings, run.loaded);
+  EXPECT_NE(bodies, nullptr);
+  for (std::size_t body = 0; body < bodies->numBodies(); ++body)
+  {
+    run.objects.push_back(bodies->object(body));
+    const BodyEnergy energy = bodies->world().bodyEnergy(body);
+    run.startEnergy.push_back(energy.kinetic + energy.potential);
+  }
+  const FingerPath finger = readFingerPathFile(settings.path);
+  SimulatedDevice device(finger);
+  run.outcome = playScriptedPath(
+    settings, *run.loaded.scene, finger, device,
+    [&](const HapticState& state) {
+      BodyTick tick;
+      tick.state = state;
+      for (std::size_t body = 0; body < bodies->numBodies(); ++body)
+      {
+        tick.poses.push_back(bodies->transform(body));
+        tick.q.push_back(bodies->world().jointPosition(body));
+      }
+      run.ticks.push_back(std::move(tick));
+    },
+    {}, bodies.get());
+  return run;
+}
+
+// Upward zero crossings of body 0's joint coordinate after `after` seconds, interpolated.
+std::vector<double> upwardCrossings(const BodyRun& run, double after)
+{
+  std::vector<double> times;
+  for (std::size_t k = 1; k < run.ticks.size(); ++k)
+  {
+    const double q0 = run.ticks[k - 1].q[0];
+    const double q1 = run.ticks[k].q[0];
+    const double t0 = run.ticks[k - 1].state.time;
+    const double t1 = run.ticks[k].state.time;
+    if (t0 > after && q0 < 0.0 && q1 >= 0.0)
+    {
+      times.push_back(t0 + (0.0 - q0) / (q1 - q0) * (t1 - t0));
+    }
+  }
+  return times;
+}
+
+// The largest depth of the proxy inside any moving body, each tick measured against the body
+// where that tick's proxy update saw it (the pose after the previous tick's dynamics step).
+double deepestPenetration(const BodyRun& run, double radius)
+{
+  double deepest = 0.0;
+  for (std::size_t b = 0; b < run.objects.size(); ++b)
+  {
+    const TriangleMesh& placed = run.loaded.scene->objects[run.objects[b]].mesh;
+    std::vector<TriangleCorners> corners;
+    for (std::uint32_t t = 0; t < placed.numTriangles(); ++t)
+    {
+      corners.push_back(placed.corners(t));
+    }
+    const oracle::MeshOracle mesh(std::move(corners));
+    RigidTransform pose; // the identity: where the body was placed
+    for (const BodyTick& tick : run.ticks)
+    {
+      const Vec3 inBody = pose.applyInverse(tick.state.proxy);
+      deepest = std::max(deepest, radius - mesh.distance(inBody, 2.0 * radius));
+      pose = tick.poses[b];
+    }
+  }
+  return deepest;
+}
+
+void expectNoEnergyGain(const BodyRun& run)
+{
+  for (std::size_t b = 0; b < run.outcome.bodies.size(); ++b)
+  {
+    const BodyOutcome& body = run.outcome.bodies[b];
+    const double gain = body.kinetic + body.potential - run.startEnergy[b];
+    std::printf("[ measured ] %s: energy gained %.6g J, work by the finger %.6g J\n",
+                body.name.c_str(), gain, body.work);
+    EXPECT_LE(gain, body.work + 1e-12) << body.name;
+  }
+}
+
+TEST(BodyScenes, LeverSpringBalancesThePushAsFLOverK)
+{
+  const BodyRun run = playBodyScene("lever.json", "lever-press-hold.csv");
+  // Settled under the held finger (1.4 s): the joint's spring torque k q against the moment of
+  // the force on the body, -F_finger, about the hinge (anchor (0, -0.1, 0), axis x).
+  const BodyTick& held = run.ticks[1400];
+  ASSERT_EQ(held.state.numContacts, 1);
+  const double k = 2.0;
+  const double q = held.q[0];
+  const Vec3 onBody = -held.state.force;
+  const Vec3 arm = held.state.contacts[0].point - Vec3{0.0, -0.1, 0.0};
+  const double pushTorque = cross(arm, onBody).x;
+  std::printf("[ measured ] lever: q %.9g rad, F %.6g N, k q %.9g N m, push moment %.9g N m\n", q,
+              norm(onBody), k * q, pushTorque);
+  EXPECT_LT(q, -0.01); // pressed down (about -x) by a visible angle
+  EXPECT_NEAR(-k * q + pushTorque, 0.0, 0.01 * std::abs(pushTorque));
+  // The closed form F L / k with L the lever arm of the force's normal component.
+  const double lever = std::abs(arm.y);
+  EXPECT_NEAR(std::abs(q), std::abs(onBody.z) * lever / k, 0.01 * std::abs(q));
+  EXPECT_LE(deepestPenetration(run, 0.001), 1e-9);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, PendulumSwingsWithItsSmallAnglePeriod)
+{
+  const BodyRun run = playBodyScene("pendulum.json", "pendulum-push-release.csv");
+  // A bar hung from one end, swinging about x: I_pivot = m (y^2 + z^2) / 12 + m d^2 over its
+  // cross-section across the axis (0.01 x 0.2 m once turned upright), d = 0.1 m.
+  const double d = kBoxY / 2.0;
+  const double inertia = kBoxMass * (kBoxZ * kBoxZ + kBoxY * kBoxY) / 12.0 + kBoxMass * d * d;
+  const double period = 2.0 * M_PI * std::sqrt(inertia / (kBoxMass * 9.81 * d));
+  const std::vector<double> crossings = upwardCrossings(run, 0.4);
+  ASSERT_GE(crossings.size(), 3u);
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+  {
+    const double measured = crossings[i] - crossings[i - 1];
+    std::printf("[ measured ] pendulum period %.6f s, small-angle %.6f s (%+.4f %%)\n", measured,
+                period, 100.0 * (measured - period) / period);
+    EXPECT_NEAR(measured, period, 0.01 * period);
+  }
+  EXPECT_LE(deepestPenetration(run, 0.001), 1e-9);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, SensorTestMassDeflectsAndRingsAtItsNaturalFrequency)
+{
+  const BodyRun run = playBodyScene("sensor-mass.json", "sensor-press-release.csv");
+  // Held (2.1 s, settled): the spring k x balances the force on the mass.
+  const double k = 50.0;
+  const double damping = 2.0;
+  const BodyTick& held = run.ticks[2100];
+  std::printf("[ measured ] test mass: x %.9g m under %.6g N (k x = %.9g N)\n", held.q[0],
+              -held.state.force.z, k * held.q[0]);
+  EXPECT_LT(held.q[0], -0.001);
+  EXPECT_NEAR(k * held.q[0], -held.state.force.z, 0.01 * std::abs(held.state.force.z));
+  // Released: it rings at its damped natural frequency, sqrt(k / m) sqrt(1 - zeta^2).
+  const double zeta = damping / (2.0 * std::sqrt(k * kBoxMass));
+  const double period = 2.0 * M_PI * std::sqrt(kBoxMass / k) / std::sqrt(1.0 - zeta * zeta);
+  const std::vector<double> crossings = upwardCrossings(run, 2.25);
+  ASSERT_GE(crossings.size(), 3u);
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+  {
+    const double measured = crossings[i] - crossings[i - 1];
+    std::printf("[ measured ] test mass period %.6f s, closed form %.6f s (%+.4f %%)\n", measured,
+                period, 100.0 * (measured - period) / period);
+    EXPECT_NEAR(measured, period, 0.01 * period);
+  }
+  EXPECT_LE(deepestPenetration(run, 0.001), 1e-9);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, FreeBlockTakesTheImpulseOfThePush)
+{
+  const BodyRun run = playBodyScene("free-block.json", "free-block-push.csv");
+  // The impulse of the forces on the block (minus the finger's, one period each), against the
+  // block's momentum at the end from its motion over the last 0.1 s.
+  Vec3 impulse;
+  for (const BodyTick& tick : run.ticks)
+  {
+    if (tick.state.contactObject == 0)
+    {
+      impulse -= tick.state.force * 0.001;
+    }
+  }
+  const std::size_t last = run.ticks.size() - 1;
+  const Vec3 velocity =
+    (run.ticks[last].poses[0].translation - run.ticks[last - 100].poses[0].translation) / 0.1;
+  std::printf("[ measured ] free block: impulse %.9g N s, m v %.9g N s\n", impulse.x,
+              kBoxMass * velocity.x);
+  EXPECT_GT(velocity.x, 0.01);
+  EXPECT_NEAR(kBoxMass * velocity.x, impulse.x, 0.01 * impulse.x);
+  EXPECT_LE(deepestPenetration(run, 0.001), 1e-9);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, StaticObjectsBesideABodyStayPut)
+{
+  // The table under the free block is no body: the run keeps it where it was placed, and a
+  // scene without bodies makes no coupling at all.
+  const BodyRun run = playBodyScene("free-block.json", "free-block-push.csv");
+  ASSERT_EQ(run.objects.size(), 1u);
+  EXPECT_EQ(run.objects[0], 0u);
+  ScriptedRunSettings plain;
+  plain.scene = std::string(PROXIMA_SOURCE_DIR) + "/Data/Scenes/spheres-on-table.json";
+  const LoadedScene loaded = loadScene(plain);
+  EXPECT_EQ(sceneBodies(plain, loaded), nullptr);
+}
+
+} // namespace
+} // namespace proxima
