@@ -230,6 +230,7 @@ int view(const ViewOptions& options)
                                      "--screenshot a --path, or take the window's picture");
   }
   LoadedScene loaded = loadScene(shared);
+  refuseSceneBodies(loaded, "proxima view");
   const FingerPath fingerPath = shared.path.empty() ? mouseStartPath(*loaded.scene, shared.radius)
                                                     : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, loaded);

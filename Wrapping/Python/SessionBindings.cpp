@@ -56,6 +56,7 @@ public:
   {
     const ScriptedRunSettings settings = settingsFromKeywords(keywords);
     LoadedScene loaded = loadScene(settings);
+    refuseSceneBodies(loaded, "proxima.Session");
     checkRadiusAgainstScene(settings, loaded);
     HapticSessionSettings session;
     session.proxy = proxyParameters(settings);

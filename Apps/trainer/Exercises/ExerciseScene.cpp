@@ -18,6 +18,7 @@ ScriptedRunSettings exerciseRunSettings(const Exercise& exercise, const std::str
 LoadedScene loadExerciseScene(const ScriptedRunSettings& settings)
 {
   LoadedScene loaded = loadScene(settings);
+  refuseSceneBodies(loaded, "the trainer");
   checkRadiusAgainstScene(settings, loaded);
   return loaded;
 }

@@ -241,6 +241,17 @@ ServoParameters servoParameters(const ScriptedRunSettings& options)
   return servo;
 }
 
+void refuseSceneBodies(const LoadedScene& loaded, const std::string& who)
+{
+  if (loaded.description.hasBodies())
+  {
+    throw InputError(loaded.description.path,
+                     "the scene has bodies, which " + who +
+                       " does not move yet (proxima run and proxima remote play them, "
+                       "Documentation/Dynamics.md)");
+  }
+}
+
 void checkRadiusAgainstScene(const ScriptedRunSettings& options, const LoadedScene& loaded)
 {
   Aabb bounds;

@@ -66,6 +66,10 @@ ServoParameters servoParameters(const ScriptedRunSettings& settings);
 /// Throws InputError naming --radius when the proxy is larger than the whole scene (the
 /// diagonal of its bounding box).
 void checkRadiusAgainstScene(const ScriptedRunSettings& settings, const LoadedScene& loaded);
+
+/// Throws InputError naming the scene file when its scene has bodies, which `who` (a program or
+/// mode that runs scenes without their dynamics so far) would show standing still.
+void refuseSceneBodies(const LoadedScene& loaded, const std::string& who);
 /// Throws InputError naming the path when its first sample leaves no room for the proxy sphere
 /// against some object: a proxy that starts overlapping a surface has no free side to be pushed
 /// back to.
