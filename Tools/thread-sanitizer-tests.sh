@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
 # The runtime's tests again under ThreadSanitizer (RelWithDebInfo, in build-tsan/): every
 # hand-off between the servo thread, the proxy thread and the reader is checked for data races;
-# any report fails the test. Only the kernel, the runtime and the mesh readers (for the model
-# swap's skull) are built, not the VTK pipeline or the applications, so this takes about two
-# minutes on two cores. CI runs it after the AddressSanitizer suite.
+# any report fails the test. Only the kernel, the runtime, the Dynamics layer (the bodies on the
+# proxy thread) and the mesh readers (for the model swap's skull) are built, not the VTK pipeline
+# or the applications, so this takes about two minutes on two cores. CI runs it after the AddressSanitizer suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 cmake -G Ninja -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPROXIMA_ENABLE_THREAD_SANITIZER=ON -DPROXIMA_BUILD_APPS=OFF -DPROXIMA_BUILD_VTK=OFF \
   -DPROXIMA_BUILD_BENCHMARKS=OFF
-cmake --build build-tsan --parallel 2 --target RuntimeTests ThreadedRuntimeTests
+cmake --build build-tsan --parallel 2 --target RuntimeTests ThreadedRuntimeTests ThreadedBodyTests
 # halt_on_error: the first race fails the test that found it, with both stacks printed.
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \
-  ctest --test-dir build-tsan --output-on-failure -j2 -R '^(ThreadedRuntime|SnapshotChannel|LoopStatistics|ServoForce|Lockstep|PointerDevice)'
+  ctest --test-dir build-tsan --output-on-failure -j2 -R '^(ThreadedRuntime|ThreadedBodies|SnapshotChannel|LoopStatistics|ServoForce|Lockstep|PointerDevice)'

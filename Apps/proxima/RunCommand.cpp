@@ -139,7 +139,8 @@ std::string deadlineLine(const LoopStatistics& statistics)
 void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene> scene,
                  const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
                  const std::function<void(const HapticState&)>& onTick,
-                 nlohmann::ordered_json& report, ProxyStartPlacement& start)
+                 nlohmann::ordered_json& report, ProxyStartPlacement& start,
+                 std::shared_ptr<BodyCoupling> bodies)
 {
   const SceneOptions& shared = options.scene;
   RuntimeSettings settings;
@@ -161,7 +162,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   }
   ThreadedRuntime runtime(device, servoParameters(shared), settings);
   runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front(),
-                       &start);
+                       &start, std::move(bodies));
   std::string message;
   if (!runtime.start(message))
   {
@@ -250,11 +251,12 @@ int run(const RunOptions& options)
   // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
   // outputs into one file.
   // The bodies, before any output exists: a body too light or a mesh with no volume is bad input.
-  std::unique_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
-  if (bodies != nullptr && options.realtime)
+  const std::shared_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
+  if (bodies != nullptr && options.realtime && !options.bodiesOut.empty())
   {
-    throw InputError("--realtime", "the scene has bodies, which run in lockstep only so far "
-                                   "(leave out --realtime)");
+    // The threaded runtime records each tick's state, not where the bodies were at each tick.
+    throw InputError("--bodies-out", "is written in lockstep only: leave out --realtime, or "
+                                     "--bodies-out (the summary still reports the bodies)");
   }
   if (bodies == nullptr && !options.bodiesOut.empty())
   {
@@ -300,8 +302,12 @@ int run(const RunOptions& options)
         writeTick(record);
         outcome.summary.add(record);
       },
-      realtimeReport, outcome.start);
+      realtimeReport, outcome.start, bodies);
     outcome.runMilliseconds = millisecondsSince(runStart);
+    if (bodies != nullptr)
+    {
+      outcome.bodies = bodyOutcomes(*bodies); // the threads have stopped
+    }
     realtimeJson = realtimeReport.dump();
   }
   else

@@ -154,12 +154,23 @@ RigidTransform BodyCoupling::transform(std::size_t body) const
                                         pose.orientation[2], pose.orientation[3], pose.position);
 }
 
-void BodyCoupling::attach(ProxySolver& solver)
+void BodyCoupling::placeBodies(ProxySolver& solver) const
 {
-  solver.setMovingObjects(m_objects);
   for (std::size_t body = 0; body < m_objects.size(); ++body)
   {
     solver.setObjectPose(m_objects[body], transform(body));
+  }
+}
+
+void BodyCoupling::poses(BodyPoses& out) const
+{
+  const std::size_t count =
+    std::min(m_objects.size(), static_cast<std::size_t>(BodyPoses::kCapacity));
+  out.count = static_cast<int>(count);
+  for (std::size_t body = 0; body < count; ++body)
+  {
+    out.objects[body] = m_objects[body];
+    out.poses[body] = transform(body);
   }
 }
 

@@ -39,12 +39,11 @@ public:
   /// Builds the bodies' world (BodyWorld's errors, naming the body).
   BodyCoupling(const std::vector<CoupledBody>& bodies, const DynamicsSettings& settings);
 
-  /// Lets the bodies' objects move in `solver` and gives them the bodies' present poses. Call
-  /// after setScene, off the haptic thread (it allocates the moved copies of their meshes).
-  void attach(ProxySolver& solver) override;
-
-  /// The tick's coupling (TickDynamics). Allocates nothing.
+  // TickDynamics.
+  std::vector<std::uint32_t> movingObjects() const override { return m_objects; }
+  void placeBodies(ProxySolver& solver) const override;
   void step(HapticState& state, ProxySolver& solver) override;
+  void poses(BodyPoses& out) const override;
 
   std::size_t numBodies() const { return m_objects.size(); }
   const std::string& name(std::size_t body) const { return m_names[body]; }

@@ -114,8 +114,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
 {
   m_scene = scene;
   m_parameters = parameters;
-  m_moving.clear();
-  m_movingIndex.clear();
+  m_moving = nullptr; // (a set this solver made stays until replaced: nothing is freed here)
   m_skin = scene != nullptr ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
                             : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
@@ -143,50 +142,38 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
 
 void ProxySolver::setMovingObjects(const std::vector<std::uint32_t>& objects)
 {
-  m_moving.clear();
-  m_movingIndex.clear();
-  if (m_scene == nullptr || objects.empty())
-  {
-    return;
-  }
-  m_movingIndex.assign(m_scene->objects.size(), -1);
-  m_moving.reserve(objects.size());
-  for (const std::uint32_t object : objects)
-  {
-    if (object >= m_scene->objects.size() || m_movingIndex[object] >= 0)
-    {
-      continue;
-    }
-    m_movingIndex[object] = static_cast<int>(m_moving.size());
-    MovingObject moving;
-    moving.object = object;
-    moving.mesh = m_scene->objects[object].mesh;
-    m_moving.push_back(std::move(moving));
-  }
+  m_ownedMoving =
+    m_scene != nullptr && !objects.empty() ? makeMovingObjects(*m_scene, objects) : nullptr;
+  useMovingObjects(m_ownedMoving.get());
+}
+
+void ProxySolver::useMovingObjects(MovingObjectSet* objects)
+{
+  m_moving = objects != nullptr && !objects->entries.empty() ? objects : nullptr;
   m_cache.invalidate();
   m_planesValid = false;
 }
 
 void ProxySolver::setObjectPose(std::uint32_t object, const RigidTransform& pose)
 {
-  const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+  const int moving = m_moving != nullptr ? m_moving->indexOf(object) : -1;
   if (moving >= 0)
   {
-    m_moving[static_cast<std::size_t>(moving)].pose = pose;
+    m_moving->entries[static_cast<std::size_t>(moving)].pose = pose;
   }
 }
 
 const RigidTransform& ProxySolver::objectPose(std::uint32_t object) const
 {
   static const RigidTransform identity;
-  const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
-  return moving < 0 ? identity : m_moving[static_cast<std::size_t>(moving)].pose;
+  const int moving = m_moving != nullptr ? m_moving->indexOf(object) : -1;
+  return moving < 0 ? identity : m_moving->entries[static_cast<std::size_t>(moving)].pose;
 }
 
 void ProxySolver::followMovingObjects(ProxyTickResult& result)
 {
   bool moved = false;
-  for (MovingObject& moving : m_moving)
+  for (MovingObjectSet::Entry& moving : m_moving->entries)
   {
     if (moving.pose == moving.applied)
     {
@@ -240,7 +227,7 @@ void ProxySolver::refreshCache(QueryStats& stats)
 
 bool ProxySolver::cacheNeedsRebuild() const
 {
-  if (!m_parameters.temporalCoherence || m_scene == nullptr || !m_moving.empty())
+  if (!m_parameters.temporalCoherence || m_scene == nullptr || m_moving != nullptr)
   {
     return false; // moving objects: the cached triangles would move under the cache
   }
@@ -781,7 +768,7 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     result.refusedFinger = true;
     return result;
   }
-  if (!m_moving.empty())
+  if (m_moving != nullptr)
   {
     followMovingObjects(result);
   }

@@ -10,6 +10,7 @@
 #include "Proxy/CandidateCache.h"
 #include "Proxy/CollisionScene.h"
 #include "Proxy/GoalSolver.h"
+#include "Proxy/MovingObjects.h"
 #include "Proxy/ProxyParameters.h"
 
 #include <cstdint>
@@ -124,6 +125,10 @@ public:
   /// triangles would move under it). Allocates: call after setScene, off the haptic thread. Every
   /// pose starts as the identity (the object where it was placed). An empty list: a static scene.
   void setMovingObjects(const std::vector<std::uint32_t>& objects);
+  /// The same with a set made elsewhere (makeMovingObjects on this solver's scene; not owned,
+  /// must outlive its use here, null for none): allocates and frees nothing, so a threaded
+  /// runner may hand over a set built off the haptic thread with the scene it belongs to.
+  void useMovingObjects(MovingObjectSet* objects);
   /// Where moving object `object` now is, relative to where it was placed. The next update first
   /// lets it push the proxy: the proxy is swept, in the object's frame, along its motion relative
   /// to the object since the last pose, and carried with the object from its first contact; then
@@ -132,13 +137,13 @@ public:
   void setObjectPose(std::uint32_t object, const RigidTransform& pose);
   /// The pose setObjectPose gave (the identity for any other object).
   const RigidTransform& objectPose(std::uint32_t object) const;
-  bool hasMovingObjects() const { return !m_moving.empty(); }
+  bool hasMovingObjects() const { return m_moving != nullptr && !m_moving->entries.empty(); }
   /// Object `object`'s mesh where it is now: the moved copy of a moving object, or the scene's.
   const TriangleMesh& placedMesh(std::uint32_t object) const
   {
-    const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
+    const int moving = m_moving != nullptr ? m_moving->indexOf(object) : -1;
     return moving < 0 ? m_scene->objects[object].mesh
-                      : m_moving[static_cast<std::size_t>(moving)].mesh;
+                      : m_moving->entries[static_cast<std::size_t>(moving)].mesh;
   }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow. A finger farther
@@ -257,25 +262,15 @@ private:
   /// object.
   const RigidTransform* treePose(std::uint32_t object) const
   {
-    const int moving = object < m_movingIndex.size() ? m_movingIndex[object] : -1;
-    return moving < 0 ? nullptr : &m_moving[static_cast<std::size_t>(moving)].applied;
+    const int moving = m_moving != nullptr ? m_moving->indexOf(object) : -1;
+    return moving < 0 ? nullptr : &m_moving->entries[static_cast<std::size_t>(moving)].applied;
   }
-
-  /// An object that moves: its pose as set, the pose its mesh copy and queries use now, and the
-  /// copy.
-  struct MovingObject
-  {
-    std::uint32_t object = 0;
-    RigidTransform pose;
-    RigidTransform applied;
-    TriangleMesh mesh;
-  };
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
-  std::vector<MovingObject> m_moving;
-  /// Per scene object: its index in m_moving, or -1 (empty for a static scene).
-  std::vector<int> m_movingIndex;
+  /// The moving objects in use (null: a static scene), and the set setMovingObjects made.
+  MovingObjectSet* m_moving = nullptr;
+  std::unique_ptr<MovingObjectSet> m_ownedMoving;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;

@@ -27,6 +27,10 @@ struct SceneSlot
   Vec3 proxyStart;
   bool movedOutside = false;
   std::uint64_t version = 0;
+  /// The scene's bodies (null without), and the moved copies of their objects, made on the
+  /// publisher's thread and freed there with the slot.
+  std::shared_ptr<TickDynamics> dynamics;
+  std::unique_ptr<MovingObjectSet> moving;
 };
 } // namespace
 
@@ -73,6 +77,8 @@ struct ThreadedRuntime::Impl
   SnapshotChannel<TickInput> finger;
   /// Proxy thread to servo thread: the proxy half of the newest update's state.
   SnapshotChannel<HapticState> proxyState;
+  /// Proxy thread to the application: where the bodies are after the newest dynamics step.
+  SnapshotChannel<BodyPoses> bodyPoses;
   /// Servo thread to the application: each tick's whole state.
   SnapshotChannel<HapticState> state;
   /// Set (release) after the first write of `finger` and `proxyState`: a reader that sees one
@@ -118,6 +124,11 @@ void ThreadedRuntime::Impl::installPendingScene()
   }
   const Nanoseconds begin = monotonicNanoseconds();
   solver->setScene(next->scene.get(), next->parameters);
+  solver->useMovingObjects(next->moving.get());
+  if (next->dynamics != nullptr)
+  {
+    next->dynamics->placeBodies(*solver);
+  }
   if (next->movedOutside)
   {
     solver->resetProxyOutside(next->proxyStart);
@@ -143,6 +154,10 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
   DeadlineClock clock(start, settings.proxyRate, proxyStatistics);
   ServoForce recordForce(servo, limits);
+  // The force the bodies feel: the servo's stage on this thread's sequence, as lockstep runs it
+  // before the dynamics step (the servo thread's own force is for the device).
+  ServoForce couplingForce(servo, limits);
+  BodyPoses poses;
   bool updatedOnce = false;
   std::uint64_t lastTick = 0;
   while (!stopRequested.load(std::memory_order_acquire) &&
@@ -175,6 +190,14 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
     if (live != nullptr)
     {
       stepProxy(*solver, post, updated);
+      if (live->dynamics != nullptr)
+      {
+        couplingForce.step(post, updated);
+        stepDynamics(live->dynamics.get(), *solver, updated);
+        live->dynamics->poses(poses);
+        poses.tick = post.tick;
+        bodyPoses.write(poses);
+      }
     }
     else
     {
@@ -266,7 +289,8 @@ ThreadedRuntime::~ThreadedRuntime()
 
 std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene> scene,
                                             const ProxyParameters& parameters,
-                                            const Vec3& proxyStart, ProxyStartPlacement* placement)
+                                            const Vec3& proxyStart, ProxyStartPlacement* placement,
+                                            std::shared_ptr<TickDynamics> dynamics)
 {
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
@@ -293,7 +317,14 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
   }
   // A proxy that is not moved keeps its place at a swap; the first scene places it anyway.
   const Vec3 start = decided.movedOutside ? decided.position : proxyStart;
-  auto* slot = new SceneSlot{std::move(scene), budgeted, start, decided.movedOutside, version};
+  std::unique_ptr<MovingObjectSet> moving;
+  if (dynamics != nullptr && scene != nullptr)
+  {
+    moving = makeMovingObjects(*scene, dynamics->movingObjects());
+  }
+  auto* slot =
+    new SceneSlot{std::move(scene),    budgeted,         start, decided.movedOutside, version,
+                  std::move(dynamics), std::move(moving)};
   // A scene published before the proxy loop took the last one replaces it unseen.
   delete m_impl->pending.exchange(slot, std::memory_order_acq_rel);
   m_impl->collectRetired();
@@ -384,6 +415,11 @@ bool ThreadedRuntime::running() const
 bool ThreadedRuntime::finished() const
 {
   return m_impl->finishedFlag.load(std::memory_order_acquire);
+}
+
+BodyPoses ThreadedRuntime::latestBodyPoses() const
+{
+  return m_impl->bodyPoses.read();
 }
 
 HapticState ThreadedRuntime::latestState() const

@@ -17,6 +17,7 @@
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/ServoParameters.h"
 #include "Runtime/TickBudget.h"
+#include "Runtime/TickDynamics.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -81,9 +82,14 @@ public:
   /// at the nearest free point outside instead (ProxyStart.h), decided here on the caller's
   /// thread in O(triangles), and the first tick on the scene reports it; `placement`, when
   /// given, receives the decision.
+  /// Bodies (paper section 6): with `dynamics` (the scene's, e.g. Dynamics/BodyCoupling), the
+  /// moved copies of their objects are made here, and each proxy update on the scene runs the
+  /// force stage and the dynamics step after the proxy step, as lockstep does; a skipped finger
+  /// sample is a dynamics step not taken. latestBodyPoses hands over where they are.
   std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
                              const ProxyParameters& parameters, const Vec3& proxyStart,
-                             ProxyStartPlacement* placement = nullptr);
+                             ProxyStartPlacement* placement = nullptr,
+                             std::shared_ptr<TickDynamics> dynamics = nullptr);
 
   /// Starts both threads; false (and `message` says why) if they could not start. `message`
   /// also says whether real-time scheduling was granted.
@@ -96,6 +102,9 @@ public:
 
   /// The last state the servo thread published: lock-free, any thread.
   HapticState latestState() const;
+  /// Where the live scene's bodies are after the proxy thread's newest dynamics step (count 0
+  /// before any, or without bodies): lock-free, any thread.
+  BodyPoses latestBodyPoses() const;
   /// Version of the scene the proxy loop is using (0 before the first is installed).
   std::uint64_t liveSceneVersion() const;
   /// The longest time the proxy loop spent installing a published scene, in nanoseconds: the

@@ -5,23 +5,53 @@
 // without bodies, needs no physics engine.
 #pragma once
 
+#include "Core/RigidTransform.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/HapticState.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace proxima
 {
+
+/// Where the bodies' objects are, for a viewer: plain values, so that a copy is a snapshot the
+/// threaded runtime can hand over without locks. The first kCapacity bodies of a scene.
+struct BodyPoses
+{
+  static constexpr int kCapacity = 16;
+  /// The tick whose dynamics step left the bodies here.
+  std::uint64_t tick = 0;
+  int count = 0;
+  std::uint32_t objects[kCapacity] = {};
+  /// Each object's pose: where a point of the object as placed is now.
+  RigidTransform poses[kCapacity];
+};
 
 class TickDynamics
 {
 public:
   virtual ~TickDynamics() = default;
-  /// Lets the bodies' objects move in `solver` (after its setScene), at their present poses.
-  /// Off the haptic thread: it may allocate.
-  virtual void attach(ProxySolver& solver) = 0;
+
+  /// The scene objects that move (for makeMovingObjects, off the haptic thread).
+  virtual std::vector<std::uint32_t> movingObjects() const = 0;
+  /// Gives `solver` the bodies' present poses. Allocates nothing.
+  virtual void placeBodies(ProxySolver& solver) const = 0;
   /// Once per tick, after the force stage filled `state.force` (the force on the finger): apply
   /// it, equal and opposite, to the bodies touched at `state.contacts`, step the bodies one
-  /// period, and give `solver` their new poses. Sets `state.dynamicsNanoseconds`.
+  /// period, and give `solver` their new poses. Sets `state.dynamicsNanoseconds`. Allocates
+  /// nothing.
   virtual void step(HapticState& state, ProxySolver& solver) = 0;
+  /// The bodies' present poses (`tick` is left to the caller). Allocates nothing.
+  virtual void poses(BodyPoses& out) const = 0;
+
+  /// For one thread that owns `solver`: lets the bodies' objects move in it (after its
+  /// setScene; allocates their moved copies) at their present poses.
+  void attach(ProxySolver& solver) const
+  {
+    solver.setMovingObjects(movingObjects());
+    placeBodies(solver);
+  }
 };
 
 } // namespace proxima

@@ -86,26 +86,35 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
     progress(lockstep.numTicks);
   }
   outcome.runMilliseconds = millisecondsSince(runStart) - outcome.replayMilliseconds;
-#ifdef PROXIMA_WITH_DYNAMICS
   if (bodies != nullptr)
   {
-    for (std::size_t body = 0; body < bodies->numBodies(); ++body)
-    {
-      BodyOutcome report;
-      report.name = bodies->name(body);
-      report.object = bodies->object(body);
-      report.joint = jointTypeName(bodies->world().jointType(body));
-      report.jointPosition = bodies->world().jointPosition(body);
-      report.jointVelocity = bodies->world().jointVelocity(body);
-      const BodyEnergy energy = bodies->world().bodyEnergy(body);
-      report.kinetic = energy.kinetic;
-      report.potential = energy.potential;
-      report.work = bodies->work(body);
-      outcome.bodies.push_back(report);
-    }
+    outcome.bodies = bodyOutcomes(*bodies);
   }
-#endif
   return outcome;
+}
+
+std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies)
+{
+  std::vector<BodyOutcome> reports;
+#ifdef PROXIMA_WITH_DYNAMICS
+  for (std::size_t body = 0; body < bodies.numBodies(); ++body)
+  {
+    BodyOutcome report;
+    report.name = bodies.name(body);
+    report.object = bodies.object(body);
+    report.joint = jointTypeName(bodies.world().jointType(body));
+    report.jointPosition = bodies.world().jointPosition(body);
+    report.jointVelocity = bodies.world().jointVelocity(body);
+    const BodyEnergy energy = bodies.world().bodyEnergy(body);
+    report.kinetic = energy.kinetic;
+    report.potential = energy.potential;
+    report.work = bodies.work(body);
+    reports.push_back(report);
+  }
+#else
+  static_cast<void>(bodies);
+#endif
+  return reports;
 }
 
 std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,

@@ -72,6 +72,9 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     const std::function<void(std::uint64_t)>& progress = {},
                                     BodyCoupling* bodies = nullptr);
 
+/// The summary's report of each body where `bodies` left it.
+std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies);
+
 /// The bodies of `loaded`'s scene coupled at the settings' kp and rate, or null when it has
 /// none. Throws InputError as buildSceneBodies does, or when this build has no Dynamics layer.
 std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
