@@ -20,12 +20,14 @@
 #include "SceneOptions.h"
 #include "Validators.h"
 
+#include "Dynamics/BodyCoupling.h"
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputError.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/PointerDevice.h"
@@ -40,6 +42,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
@@ -47,6 +50,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -162,19 +166,78 @@ Vec3 freeSide(const HapticState& state)
 // with the finger read from `device`; every tick's force goes to `plot`.
 HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& scene,
                             const FingerPath& path, double at, HapticDevice& device,
-                            shell::ForcePlot& plot)
+                            shell::ForcePlot& plot, TickDynamics* bodies)
 {
   ProxyParameters parameters = proxyParameters(shared);
   tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
   const std::uint64_t ticks = ticksCovering(0.0, at, shared.rate);
   HapticState last;
-  vtk::playLockstepStates(scene, parameters, servoParameters(shared), path, shared.rate, device,
-                          [&last, &plot, ticks](const HapticState& state) {
-                            last = state;
-                            plot.add(state.time, norm(state.force));
-                            return state.tick + 1 < ticks;
-                          });
+  vtk::playLockstepStates(
+    scene, parameters, servoParameters(shared), path, shared.rate, device,
+    [&last, &plot, ticks](const HapticState& state) {
+      last = state;
+      plot.add(state.time, norm(state.force));
+      return state.tick + 1 < ticks;
+    },
+    bodies);
   return last;
+}
+
+// The scene's surface: one actor for the objects that stay put, and one per body, which its
+// pose moves (placeBodyActors).
+struct SceneActors
+{
+  vtkSmartPointer<vtkActor> still;
+  std::vector<std::uint32_t> bodyObjects;
+  std::vector<vtkSmartPointer<vtkActor>> bodies;
+};
+
+SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* bodies)
+{
+  SceneActors actors;
+  if (bodies != nullptr)
+  {
+    actors.bodyObjects = bodies->movingObjects();
+  }
+  std::vector<std::uint32_t> still;
+  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+  {
+    if (std::find(actors.bodyObjects.begin(), actors.bodyObjects.end(), object) ==
+        actors.bodyObjects.end())
+    {
+      still.push_back(object);
+    }
+  }
+  actors.still = shell::makeSceneSurfaceActor(scene, still);
+  for (const std::uint32_t object : actors.bodyObjects)
+  {
+    actors.bodies.push_back(shell::makeSceneSurfaceActor(scene, {object}));
+  }
+  return actors;
+}
+
+void placeBodyActors(const SceneActors& actors, const BodyPoses& poses)
+{
+  for (int i = 0; i < poses.count; ++i)
+  {
+    const auto at =
+      std::find(actors.bodyObjects.begin(), actors.bodyObjects.end(), poses.objects[i]);
+    if (at == actors.bodyObjects.end())
+    {
+      continue;
+    }
+    const RigidTransform& pose = poses.poses[i];
+    vtkNew<vtkMatrix4x4> matrix;
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        matrix->SetElement(r, c, pose.row[r][c]);
+      }
+      matrix->SetElement(r, 3, pose.translation[r]);
+    }
+    actors.bodies[static_cast<std::size_t>(at - actors.bodyObjects.begin())]->SetUserMatrix(matrix);
+  }
 }
 
 // Looks at the proxy from `distance`, from the free side of its contacts (tilted, so that the
@@ -230,7 +293,8 @@ int view(const ViewOptions& options)
                                      "--screenshot a --path, or take the window's picture");
   }
   LoadedScene loaded = loadScene(shared);
-  refuseSceneBodies(loaded, "proxima view");
+  // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
+  const std::shared_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
   const FingerPath fingerPath = shared.path.empty() ? mouseStartPath(*loaded.scene, shared.radius)
                                                     : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, loaded);
@@ -278,7 +342,7 @@ int view(const ViewOptions& options)
     throw InputError("proxima view", noDisplay);
   }
   vtkNew<vtkHapticRenderer> haptics;
-  haptics->SetCollisionScene(scene);
+  haptics->SetCollisionScene(scene, bodies);
   haptics->SetDevice(&device.device());
   haptics->SetProxyStart(fingerPath.positions.front().x, fingerPath.positions.front().y,
                          fingerPath.positions.front().z);
@@ -292,7 +356,7 @@ int view(const ViewOptions& options)
   haptics->SetTickBudgetSeconds(budget.seconds);
   haptics->SetTickBudgetIterations(budget.iterations);
 
-  const vtkSmartPointer<vtkActor> surface = shell::makeSceneSurfaceActor(*scene);
+  const SceneActors surface = makeSceneActors(*scene, bodies.get());
 
   vtkNew<vtkHapticStateRepresentation> representation;
   const double forceScale =
@@ -304,7 +368,14 @@ int view(const ViewOptions& options)
   shell::ForcePlot forcePlot(5.0, shared.maxForce);
 
   vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(surface);
+  if (surface.still != nullptr)
+  {
+    renderer->AddActor(surface.still);
+  }
+  for (const vtkSmartPointer<vtkActor>& body : surface.bodies)
+  {
+    renderer->AddActor(body);
+  }
   representation->AddToRenderer(renderer);
   renderer->AddViewProp(status);
   forcePlot.addToRenderer(renderer);
@@ -331,8 +402,15 @@ int view(const ViewOptions& options)
       // A scripted finger needs no real clock: the state at --at comes from the lockstep run
       // (the same steps as the threads, on a virtual clock) in a fraction of --at, and is the
       // same picture every time. As `proxima run`, lockstep takes no budget unless given one.
-      state = lockstepStateAt(shared, *scene, shifted, at, device.device(), forcePlot);
+      state =
+        lockstepStateAt(shared, *scene, shifted, at, device.device(), forcePlot, bodies.get());
       servo.rate = shared.rate;
+      if (bodies != nullptr)
+      {
+        BodyPoses poses;
+        bodies->poses(poses);
+        placeBodyActors(surface, poses);
+      }
     }
     else
     {
@@ -348,6 +426,7 @@ int view(const ViewOptions& options)
       }
       state = haptics->GetState();
       servo = haptics->GetServoStatistics();
+      placeBodyActors(surface, haptics->GetBodyPoses());
       haptics->Stop();
     }
     representation->SetState(state);
@@ -408,6 +487,7 @@ int view(const ViewOptions& options)
     vtkRenderer* renderer;
     vtkHapticMouseFinger* mouse;
     shell::ForcePlot* forcePlot;
+    const SceneActors* surface;
     bool follow;
     std::chrono::steady_clock::time_point last;
   } frame{haptics,
@@ -416,6 +496,7 @@ int view(const ViewOptions& options)
           renderer,
           mouse ? mouseFinger.Get() : nullptr,
           &forcePlot,
+          &surface,
           !mouse,
           std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
@@ -435,6 +516,7 @@ int view(const ViewOptions& options)
     f->last = now;
     const HapticState state = f->haptics->GetState();
     f->representation->SetState(state);
+    placeBodyActors(*f->surface, f->haptics->GetBodyPoses());
     f->forcePlot->add(state.time, norm(state.force));
     f->forcePlot->update();
     f->status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());

@@ -26,4 +26,19 @@ vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene)
   return surface;
 }
 
+vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,
+                                                const std::vector<std::uint32_t>& objects)
+{
+  if (objects.empty())
+  {
+    return nullptr;
+  }
+  CollisionScene some; // shares the objects' meshes, copies nothing
+  for (const std::uint32_t object : objects)
+  {
+    some.addObject(scene.objects.shared(object));
+  }
+  return makeSceneSurfaceActor(some);
+}
+
 } // namespace proxima::shell

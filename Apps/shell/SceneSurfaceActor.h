@@ -8,9 +8,17 @@
 #include <vtkActor.h>
 #include <vtkSmartPointer.h>
 
+#include <cstdint>
+#include <vector>
+
 namespace proxima::shell
 {
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene);
+
+/// The same for some of the scene's objects only (a moving body's, which its own actor's
+/// transform then moves; or all the others), or null when `objects` is empty.
+vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,
+                                                const std::vector<std::uint32_t>& objects);
 
 } // namespace proxima::shell

@@ -9,6 +9,7 @@
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoParameters.h"
+#include "Runtime/TickDynamics.h"
 
 #include <functional>
 
@@ -22,10 +23,11 @@ void playLockstepStates(const CollisionScene& scene, const ProxyParameters& para
                         const std::function<bool(const HapticState&)>& onState);
 
 /// The same with the finger read from `device` (a recording device around the path's, say) over
-/// the ticks of `path`.
+/// the ticks of `path`; with `bodies` (the scene's), each tick ends with their dynamics step.
 void playLockstepStates(const CollisionScene& scene, const ProxyParameters& parameters,
                         const ServoParameters& servo, const FingerPath& path, double rate,
                         HapticDevice& device,
-                        const std::function<bool(const HapticState&)>& onState);
+                        const std::function<bool(const HapticState&)>& onState,
+                        TickDynamics* bodies = nullptr);
 
 } // namespace proxima::vtk

@@ -25,7 +25,19 @@ vtkHapticRenderer::~vtkHapticRenderer()
 
 void vtkHapticRenderer::SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene)
 {
+  this->SetCollisionScene(std::move(scene), nullptr);
+}
+
+proxima::BodyPoses vtkHapticRenderer::GetBodyPoses() const
+{
+  return m_runtime ? m_runtime->latestBodyPoses() : proxima::BodyPoses{};
+}
+
+void vtkHapticRenderer::SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene,
+                                          std::shared_ptr<proxima::TickDynamics> bodies)
+{
   m_current = scene;
+  m_bodies = std::move(bodies);
   if (m_runtime)
   {
     this->Publish(std::move(scene));
@@ -119,7 +131,8 @@ bool vtkHapticRenderer::Publish(std::shared_ptr<const proxima::CollisionScene> s
   // The proxy loop's rate as the running runtime has it: ServoRate and ProxyRate may have been
   // set again since Start.
   parameters.timeStep = 1.0 / m_proxyLoopRate;
-  m_publishedVersion = m_runtime->publishScene(std::move(scene), parameters, m_proxyStart);
+  m_publishedVersion =
+    m_runtime->publishScene(std::move(scene), parameters, m_proxyStart, nullptr, m_bodies);
   return true;
 }
 
@@ -200,6 +213,7 @@ vtkTypeUInt64 vtkHapticRenderer::UpdateScene()
     {
       m_sceneVersionSeen = this->Scene->GetSceneVersion();
       m_current = this->Scene->GetCollisionScene();
+      m_bodies = nullptr; // a pipeline's scene has no bodies
       if (m_runtime)
       {
         this->Publish(m_current);

@@ -12,6 +12,7 @@
 #include "Runtime/HapticState.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/TickBudget.h"
+#include "Runtime/TickDynamics.h"
 
 #include <vtkObject.h>
 
@@ -44,6 +45,14 @@ public:
   /// Or a snapshot built elsewhere (a scene file): published at Start, or at once when running.
   /// Used when no vtkHapticScene is set.
   void SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene);
+  /// The same with the scene's bodies (paper section 6; Dynamics/BodyCoupling.h, made by
+  /// IO/Scene/SceneBodies.h from a scene file), published with it: each proxy update pushes and
+  /// steps them on the proxy thread. They are not reset at a restart: a looped path finds them
+  /// where it left them. GetBodyPoses hands their poses to the render thread.
+  void SetCollisionScene(std::shared_ptr<const proxima::CollisionScene> scene,
+                         std::shared_ptr<proxima::TickDynamics> bodies);
+  /// Where the bodies are after the newest proxy update (count 0 without bodies or before Start).
+  proxima::BodyPoses GetBodyPoses() const;
   /// The newest scene snapshot (published, or waiting for Start); null before any. For the
   /// thread that sets scenes, as the snapshot is replaced there.
   std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const { return m_current; }
@@ -200,6 +209,8 @@ private:
   std::unique_ptr<proxima::ThreadedRuntime> m_runtime;
   /// The newest snapshot (published, or waiting for Start).
   std::shared_ptr<const proxima::CollisionScene> m_current;
+  /// The bodies of m_current when SetCollisionScene gave them.
+  std::shared_ptr<proxima::TickDynamics> m_bodies;
   /// The rate of the running proxy loop (ProxyRate, or ServoRate when 0) as of Start: the time
   /// step of every scene published to this runtime.
   double m_proxyLoopRate = 4000.0;
