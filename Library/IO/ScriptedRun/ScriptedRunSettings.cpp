@@ -247,8 +247,8 @@ void refuseSceneBodies(const LoadedScene& loaded, const std::string& who)
   {
     throw InputError(loaded.description.path,
                      "the scene has bodies, which " + who +
-                       " does not move yet (proxima run, proxima view and proxima remote "
-                       "play them, Documentation/Dynamics.md)");
+                       " does not move yet (proxima run and proxima view play them, "
+                       "Documentation/Dynamics.md)");
   }
 }
 
