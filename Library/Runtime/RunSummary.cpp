@@ -7,19 +7,38 @@ namespace proxima
 {
 namespace
 {
-// Nearest-rank quantile of `values`, sorted here in place; 0 for none.
+// Nearest-rank quantile q in [0, 1] of `values`, which are sorted; 0 for none.
 template <typename T>
-double nearestRank(std::vector<T>& values, double q)
+double rankOfSorted(const std::vector<T>& values, double q)
 {
   if (values.empty())
   {
     return 0.0;
   }
-  std::sort(values.begin(), values.end());
   const double clamped = std::clamp(q, 0.0, 1.0);
   const auto rank =
     static_cast<std::size_t>(std::ceil(clamped * static_cast<double>(values.size())));
   return static_cast<double>(values[rank == 0 ? 0 : rank - 1]);
+}
+
+// The same of `values`, sorted here in place.
+template <typename T>
+double nearestRank(std::vector<T>& values, double q)
+{
+  std::sort(values.begin(), values.end());
+  return rankOfSorted(values, q);
+}
+
+// The same, sorting only when `sorted` says they are not yet (per-tick times: asked for four
+// quantiles at once).
+double nearestRank(std::vector<std::int64_t>& times, bool& sorted, double q)
+{
+  if (!sorted)
+  {
+    std::sort(times.begin(), times.end());
+    sorted = true;
+  }
+  return rankOfSorted(times, q);
 }
 } // namespace
 
@@ -63,36 +82,12 @@ void RunSummary::add(const HapticState& record)
 
 double RunSummary::dynamicsNanosecondsQuantile(double q) const
 {
-  if (m_dynamicsNanoseconds.empty())
-  {
-    return 0.0;
-  }
-  if (!m_dynamicsSorted)
-  {
-    std::sort(m_dynamicsNanoseconds.begin(), m_dynamicsNanoseconds.end());
-    m_dynamicsSorted = true;
-  }
-  const double clamped = std::clamp(q, 0.0, 1.0);
-  const auto rank = static_cast<std::size_t>(
-    std::ceil(clamped * static_cast<double>(m_dynamicsNanoseconds.size())));
-  return static_cast<double>(m_dynamicsNanoseconds[rank == 0 ? 0 : rank - 1]);
+  return nearestRank(m_dynamicsNanoseconds, m_dynamicsSorted, q);
 }
 
 double RunSummary::solveNanosecondsQuantile(double q) const
 {
-  if (m_solveNanoseconds.empty())
-  {
-    return 0.0;
-  }
-  if (!m_sorted)
-  {
-    std::sort(m_solveNanoseconds.begin(), m_solveNanoseconds.end());
-    m_sorted = true;
-  }
-  const double clamped = std::clamp(q, 0.0, 1.0);
-  const auto rank =
-    static_cast<std::size_t>(std::ceil(clamped * static_cast<double>(m_solveNanoseconds.size())));
-  return static_cast<double>(m_solveNanoseconds[rank == 0 ? 0 : rank - 1]);
+  return nearestRank(m_solveNanoseconds, m_sorted, q);
 }
 
 void RunSummary::addBudgetResidual(double metres)

@@ -103,6 +103,21 @@ std::vector<double> upwardCrossings(const BodyRun& run, double after)
   return times;
 }
 
+// Body 0 swings with `period` after `after` seconds: every full swing (upward zero crossing to
+// the next) within 1 %, and at least two of them.
+void expectPeriods(const BodyRun& run, double after, double period, const char* what)
+{
+  const std::vector<double> crossings = upwardCrossings(run, after);
+  ASSERT_GE(crossings.size(), 3u) << what;
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+  {
+    const double measured = crossings[i] - crossings[i - 1];
+    std::printf("[ measured ] %s period %.6f s, closed form %.6f s (%+.4f %%)\n", what, measured,
+                period, 100.0 * (measured - period) / period);
+    EXPECT_NEAR(measured, period, 0.01 * period) << what;
+  }
+}
+
 // The largest depth of the proxy inside any moving body, each tick measured against the body
 // where that tick's proxy update saw it (the pose after the previous tick's dynamics step).
 double deepestPenetration(const BodyRun& run, double radius)
@@ -178,15 +193,7 @@ TEST(BodyScenes, PendulumSwingsWithItsSmallAnglePeriod)
   const double d = kBoxY / 2.0;
   const double inertia = kBoxMass * (kBoxZ * kBoxZ + kBoxY * kBoxY) / 12.0 + kBoxMass * d * d;
   const double period = 2.0 * M_PI * std::sqrt(inertia / (kBoxMass * 9.81 * d));
-  const std::vector<double> crossings = upwardCrossings(run, 0.4);
-  ASSERT_GE(crossings.size(), 3u);
-  for (std::size_t i = 1; i < crossings.size(); ++i)
-  {
-    const double measured = crossings[i] - crossings[i - 1];
-    std::printf("[ measured ] pendulum period %.6f s, small-angle %.6f s (%+.4f %%)\n", measured,
-                period, 100.0 * (measured - period) / period);
-    EXPECT_NEAR(measured, period, 0.01 * period);
-  }
+  expectPeriods(run, 0.4, period, "pendulum");
   expectNoPenetration(run);
   expectNoEnergyGain(run);
 }
@@ -205,15 +212,7 @@ TEST(BodyScenes, SensorTestMassDeflectsAndRingsAtItsNaturalFrequency)
   // Released: it rings at its damped natural frequency, sqrt(k / m) sqrt(1 - zeta^2).
   const double zeta = damping / (2.0 * std::sqrt(k * kBoxMass));
   const double period = 2.0 * M_PI * std::sqrt(kBoxMass / k) / std::sqrt(1.0 - zeta * zeta);
-  const std::vector<double> crossings = upwardCrossings(run, 2.25);
-  ASSERT_GE(crossings.size(), 3u);
-  for (std::size_t i = 1; i < crossings.size(); ++i)
-  {
-    const double measured = crossings[i] - crossings[i - 1];
-    std::printf("[ measured ] test mass period %.6f s, closed form %.6f s (%+.4f %%)\n", measured,
-                period, 100.0 * (measured - period) / period);
-    EXPECT_NEAR(measured, period, 0.01 * period);
-  }
+  expectPeriods(run, 2.25, period, "test mass");
   expectNoPenetration(run);
   expectNoEnergyGain(run);
 }
