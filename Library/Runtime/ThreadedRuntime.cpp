@@ -192,6 +192,8 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       stepProxy(*solver, post, updated);
       if (live->dynamics != nullptr)
       {
+        // As the servo sees it (a new scene limits the force's rate of change), age 0.
+        updated.sceneVersion = live->version;
         couplingForce.step(post, updated);
         stepDynamics(live->dynamics.get(), *solver, updated);
         live->dynamics->poses(poses);
