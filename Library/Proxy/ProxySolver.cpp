@@ -343,9 +343,10 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
 
 bool ProxySolver::gatherPlanes(const Vec3& position, QueryStats& stats)
 {
-  // The scene is static between setScene calls, so the planes at a point are the planes found
-  // there last time: a tick that starts where the last one ended (every tick in resting or
-  // sliding contact) reuses the last update stage's planes instead of gathering them again.
+  // The scene stands still between setScene calls and moves of its moving objects (which forget
+  // the planes), so the planes at a point are the planes found there last time: a tick that
+  // starts where the last one ended (every tick in resting or sliding contact) reuses the last
+  // update stage's planes instead of gathering them again.
   if (m_planesValid && position == m_planesPosition)
   {
     return m_planesComplete;
