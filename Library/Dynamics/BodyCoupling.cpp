@@ -212,18 +212,20 @@ void BodyCoupling::step(HapticState& state, ProxySolver& solver)
     ++numPushes;
   }
   m_world.step();
-  for (int i = 0; i < numPushes; ++i)
-  {
-    // Work: the force times how far the material point it pushed moved over the step.
-    const std::size_t body = static_cast<std::size_t>(pushes[i].body);
-    const RigidTransform& before = solver.objectPose(m_objects[body]);
-    const Vec3 placed = before.applyInverse(pushes[i].point);
-    const Vec3 moved = transform(body).apply(placed) - pushes[i].point;
-    m_work[body] += dot(pushes[i].force, moved);
-  }
   for (std::size_t body = 0; body < m_objects.size(); ++body)
   {
-    solver.setObjectPose(m_objects[body], transform(body));
+    const RigidTransform after = transform(body);
+    const RigidTransform& before = solver.objectPose(m_objects[body]);
+    for (int i = 0; i < numPushes; ++i)
+    {
+      // Work: the force times how far the material point it pushed moved over the step.
+      if (static_cast<std::size_t>(pushes[i].body) == body)
+      {
+        const Vec3 moved = after.apply(before.applyInverse(pushes[i].point)) - pushes[i].point;
+        m_work[body] += dot(pushes[i].force, moved);
+      }
+    }
+    solver.setObjectPose(m_objects[body], after);
   }
   const auto end = std::chrono::steady_clock::now();
   state.dynamicsNanoseconds =

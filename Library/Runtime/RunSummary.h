@@ -37,8 +37,8 @@ public:
   double meanTrianglesTested() const;
   /// Ticks a moving body pushed the proxy (HapticState::pushedByObject).
   std::uint64_t pushedTicks() const { return m_pushedTicks; }
-  /// Whether any tick ran a dynamics step (a scene with bodies), and quantile q of its time.
-  bool hasDynamics() const { return !m_dynamicsNanoseconds.empty(); }
+  /// Quantile q in [0, 1] of the dynamics step's time per tick (ticks of a scene with bodies; 0
+  /// without).
   double dynamicsNanosecondsQuantile(double q) const;
 
   /// Ticks the work budget stopped before the proxy settled (HapticState::budgetLimited).

@@ -262,10 +262,10 @@ TEST(BodyScenes, WindmillTurnsAsFastAsItsDampingLetsThePush)
   expectNoEnergyGain(run);
 }
 
-TEST(BodyScenes, StaticObjectsBesideABodyStayPut)
+TEST(BodyScenes, OnlyObjectsWithABodyAreCoupled)
 {
-  // The table under the free block is no body: the run keeps it where it was placed, and a
-  // scene without bodies makes no coupling at all.
+  // The slab under the free block is no body: only the block is coupled, and a scene without
+  // bodies makes no coupling at all.
   const BodyRun run = playBodyScene("free-block.json", "free-block-push.csv");
   ASSERT_EQ(run.objects.size(), 1u);
   EXPECT_EQ(run.objects[0], 0u);

@@ -23,6 +23,16 @@ void addSurfaceKeys(nlohmann::ordered_json& json, const LoadedObject& object,
   json["viscosity_N_s_per_m"] = material.viscosity;
 }
 
+// A per-tick time as the summary gives it: median, p99, p99.9 and max of `quantile`.
+template <typename Quantile>
+nlohmann::ordered_json tickTimesJson(const Quantile& quantile)
+{
+  return {{"median", quantile(0.5)},
+          {"p99", quantile(0.99)},
+          {"p99.9", quantile(0.999)},
+          {"max", quantile(1.0)}};
+}
+
 } // namespace
 
 std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const LoadedScene& loaded,
@@ -131,10 +141,9 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
     json["started_inside"] = nullptr;
   }
   json["max_force_N"] = outcome.summary.maxForce();
-  json["solve_ns"] = {{"median", outcome.summary.solveNanosecondsQuantile(0.5)},
-                      {"p99", outcome.summary.solveNanosecondsQuantile(0.99)},
-                      {"p99.9", outcome.summary.solveNanosecondsQuantile(0.999)},
-                      {"max", outcome.summary.solveNanosecondsQuantile(1.0)}};
+  const RunSummary& summary = outcome.summary;
+  json["solve_ns"] =
+    tickTimesJson([&summary](double q) { return summary.solveNanosecondsQuantile(q); });
   json["triangles_tested_per_tick"] = outcome.summary.meanTrianglesTested();
   if (!outcome.bodies.empty())
   {
@@ -153,10 +162,8 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
     }
     json["bodies"] = std::move(bodies);
     json["pushed_ticks"] = outcome.summary.pushedTicks();
-    json["dynamics_ns"] = {{"median", outcome.summary.dynamicsNanosecondsQuantile(0.5)},
-                           {"p99", outcome.summary.dynamicsNanosecondsQuantile(0.99)},
-                           {"p99.9", outcome.summary.dynamicsNanosecondsQuantile(0.999)},
-                           {"max", outcome.summary.dynamicsNanosecondsQuantile(1.0)}};
+    json["dynamics_ns"] =
+      tickTimesJson([&summary](double q) { return summary.dynamicsNanosecondsQuantile(q); });
   }
   nlohmann::ordered_json budgetJson;
   budgetJson["tick_budget"] = outcome.budget.text();
