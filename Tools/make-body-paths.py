@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the scripted finger paths of the body scenes (Data/Paths/Bodies, for Data/Scenes/*.json
 with bodies; Documentation/Dynamics.md). Most are a few corners, played by linear interpolation;
-the windmill's follows its rotor around a circle and is sampled at 1 kHz.
+the windmill's and the crank's follow their rotors around a circle and are sampled at 1 kHz.
 
 Usage (from the repository's root): /usr/bin/python3 Tools/make-body-paths.py [--out Data/Paths/Bodies]
 """
@@ -37,6 +37,15 @@ WINDMILL_TURN_SECONDS = 1.5
 WINDMILL_PRESSED_Y = -0.004
 RATE = 1000.0
 
+# The crank (Data/Scenes/crank.xml: hanging from a hinge about y through the origin, its handle's
+# pushed face at x = 0.008 m, 10 cm below the axis, centred at y = -0.019 m): a finger comes in
+# against the face, 1 mm deep for the 1 mm proxy, goes round the axis at CRANK_SPEED for
+# CRANK_TURN_SECONDS (a turn and an eighth), slides off the handle along -y and leaves it to
+# settle.
+CRANK_SPEED = math.pi
+CRANK_TURN_SECONDS = 2.25
+CRANK_FACE = (0.008, -0.019, -0.1)
+
 
 def windmill():
     rows = []
@@ -60,6 +69,25 @@ def windmill():
     return rows
 
 
+def crank():
+    rows = []
+    approach = 0.2
+    x0, y0, z0 = CRANK_FACE
+    for k in range(int(approach * RATE) + 1):
+        t = k / RATE
+        rows.append((t, 0.03 + (x0 - 0.03) * t / approach, y0, z0))
+    for k in range(1, int(CRANK_TURN_SECONDS * RATE) + 1):
+        t = approach + k / RATE
+        angle = CRANK_SPEED * k / RATE
+        c, s = math.cos(angle), math.sin(angle)
+        # A turn by `angle` about +y: x' = x cos + z sin, z' = -x sin + z cos.
+        rows.append((t, x0 * c + z0 * s, y0, -x0 * s + z0 * c))
+    end, x, y, z = rows[-1]
+    rows.append((end + 0.1, x, -0.06, z))
+    rows.append((end + 3.0, x, -0.06, z))
+    return rows
+
+
 def write(path, rows):
     with open(path, "w") as stream:
         stream.write("t,x,y,z\n")
@@ -76,7 +104,8 @@ def main():
     for name, corners in CORNERS.items():
         write(os.path.join(args.out, name + ".csv"), corners)
     write(os.path.join(args.out, "windmill-turn.csv"), windmill())
-    print("wrote %d paths to %s" % (len(CORNERS) + 1, args.out))
+    write(os.path.join(args.out, "crank-turn.csv"), crank())
+    print("wrote %d paths to %s" % (len(CORNERS) + 2, args.out))
 
 
 if __name__ == "__main__":

@@ -11,6 +11,16 @@ namespace proxima
 
 namespace
 {
+std::vector<std::string> boundNames(const std::vector<MechanismBinding>& bindings)
+{
+  std::vector<std::string> names;
+  for (const MechanismBinding& binding : bindings)
+  {
+    names.push_back(binding.body);
+  }
+  return names;
+}
+
 std::vector<BodyDescription> descriptions(const std::vector<CoupledBody>& bodies)
 {
   std::vector<BodyDescription> list;
@@ -118,6 +128,12 @@ std::string couplingStabilityDefect(const BodyDescription& body, const TriangleM
     effectiveMass = 1.0 / inverse;
     where = "its least principal inertia and its reach";
   }
+  return couplingStabilityDefect(effectiveMass, where, kp, timeStep);
+}
+
+std::string couplingStabilityDefect(double effectiveMass, const std::string& where, double kp,
+                                    double timeStep)
+{
   const double needed = kp * timeStep * timeStep;
   if (effectiveMass >= needed)
   {
@@ -132,19 +148,43 @@ std::string couplingStabilityDefect(const BodyDescription& body, const TriangleM
 BodyCoupling::BodyCoupling(const std::vector<CoupledBody>& bodies, const DynamicsSettings& settings)
   : m_world(descriptions(bodies), settings)
 {
-  std::uint32_t largest = 0;
+  std::vector<std::uint32_t> objects;
   for (const CoupledBody& body : bodies)
   {
     m_names.push_back(body.description.name);
-    m_objects.push_back(body.object);
-    largest = std::max(largest, body.object);
+    objects.push_back(body.object);
   }
-  m_bodyOfObject.assign(bodies.empty() ? 0 : largest + 1, -1);
-  for (std::size_t i = 0; i < bodies.size(); ++i)
+  bind(objects);
+}
+
+BodyCoupling::BodyCoupling(const std::string& mjcfFile,
+                           const std::vector<MechanismBinding>& bindings,
+                           const DynamicsSettings& settings)
+  : m_world(mjcfFile, boundNames(bindings), settings)
+{
+  std::vector<std::uint32_t> objects;
+  for (const MechanismBinding& binding : bindings)
   {
-    m_bodyOfObject[bodies[i].object] = static_cast<int>(i);
+    m_names.push_back(binding.body);
+    objects.push_back(binding.object);
   }
-  m_work.assign(bodies.size(), 0.0);
+  bind(objects);
+}
+
+void BodyCoupling::bind(const std::vector<std::uint32_t>& objects)
+{
+  m_objects = objects;
+  std::uint32_t largest = 0;
+  for (const std::uint32_t object : objects)
+  {
+    largest = std::max(largest, object);
+  }
+  m_bodyOfObject.assign(objects.empty() ? 0 : largest + 1, -1);
+  for (std::size_t i = 0; i < objects.size(); ++i)
+  {
+    m_bodyOfObject[objects[i]] = static_cast<int>(i);
+  }
+  m_work.assign(objects.size(), 0.0);
 }
 
 RigidTransform BodyCoupling::transform(std::size_t body) const

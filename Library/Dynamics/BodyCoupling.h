@@ -24,6 +24,13 @@ struct CoupledBody
   std::uint32_t object = 0;
 };
 
+/// A scene object bound to a body of an MJCF mechanism by the body's name.
+struct MechanismBinding
+{
+  std::uint32_t object = 0;
+  std::string body;
+};
+
 /// Why a body of `mesh` (its surface, as placed) is too light to couple stably to the servo's
 /// spring `kp` (N/m) at the step `timeStep` (s), or empty when it is not. The coupled spring and
 /// mass, integrated by semi-implicit Euler, stay stable while kp dt^2 / m < 4; the check asks for
@@ -32,12 +39,20 @@ struct CoupledBody
 /// bound from its least principal inertia), so that a push anywhere on it stays well inside.
 std::string couplingStabilityDefect(const BodyDescription& body, const TriangleMesh& mesh,
                                     double kp, double timeStep);
+/// The same rule for a body whose least effective mass is known (`from` says where it comes
+/// from, for the message).
+std::string couplingStabilityDefect(double effectiveMass, const std::string& from, double kp,
+                                    double timeStep);
 
 class BodyCoupling final : public TickDynamics
 {
 public:
   /// Builds the bodies' world (BodyWorld's errors, naming the body).
   BodyCoupling(const std::vector<CoupledBody>& bodies, const DynamicsSettings& settings);
+  /// The bodies of the MJCF file `mjcfFile` that `bindings` name, each moving its object
+  /// (BodyWorld's errors).
+  BodyCoupling(const std::string& mjcfFile, const std::vector<MechanismBinding>& bindings,
+               const DynamicsSettings& settings);
 
   // TickDynamics.
   std::vector<std::uint32_t> movingObjects() const override { return m_objects; }
@@ -62,6 +77,8 @@ public:
   double work(std::size_t body) const { return m_work[body]; }
 
 private:
+  void bind(const std::vector<std::uint32_t>& objects);
+
   BodyWorld m_world;
   std::vector<std::string> m_names;
   std::vector<std::uint32_t> m_objects;

@@ -23,9 +23,12 @@ enum class JointType
   Ball,
   /// No joint: six degrees of freedom.
   Free,
+  /// A body of an MJCF mechanism without one joint of its own to the world: several joints, or
+  /// none (welded to a parent that moves); no single coordinate.
+  Mechanism,
 };
 
-/// "hinge", "slide", "ball", "free".
+/// "hinge", "slide", "ball", "free", "mechanism".
 const char* jointTypeName(JointType type);
 
 struct JointDescription

@@ -2,7 +2,9 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -21,6 +23,7 @@ const char* jointTypeName(JointType type)
     case JointType::Slide: return "slide";
     case JointType::Ball: return "ball";
     case JointType::Free: return "free";
+    case JointType::Mechanism: return "mechanism";
   }
   return "hinge";
 }
@@ -182,12 +185,116 @@ BodyWorld::BodyWorld(const std::vector<BodyDescription>& bodies, const DynamicsS
   {
     throw std::invalid_argument(std::string("MuJoCo refused the bodies: ") + error);
   }
+  std::vector<int> ids;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    ids.push_back(static_cast<int>(i) + 1); // 0 is MuJoCo's world
+  }
+  start(ids);
+}
+
+namespace
+{
+// The joint type of a bound MJCF body: its own single joint's, or Mechanism.
+JointType mechanismJointType(const mjModel* model, int body)
+{
+  if (model->body_jntnum[body] != 1)
+  {
+    return JointType::Mechanism;
+  }
+  switch (model->jnt_type[model->body_jntadr[body]])
+  {
+    case mjJNT_HINGE: return JointType::Hinge;
+    case mjJNT_SLIDE: return JointType::Slide;
+    case mjJNT_BALL: return JointType::Ball;
+    case mjJNT_FREE: return JointType::Free;
+    default: return JointType::Mechanism;
+  }
+}
+
+// True when the body or one of its ancestors has a degree of freedom.
+bool moves(const mjModel* model, int body)
+{
+  for (int b = body; b > 0; b = model->body_parentid[b])
+  {
+    if (model->body_dofnum[b] > 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+BodyWorld::BodyWorld(const std::string& mjcfFile, const std::vector<std::string>& boundBodies,
+                     const DynamicsSettings& settings)
+  : m_model(std::make_unique<Model>())
+  , m_settings(settings)
+{
+  if (!(settings.timeStep > 0.0) || !std::isfinite(settings.timeStep))
+  {
+    throw std::invalid_argument("the dynamics time step must be above 0 s");
+  }
+  char error[1000] = "";
+  m_model->model = mj_loadXML(mjcfFile.c_str(), nullptr, error, sizeof error);
+  if (m_model->model == nullptr)
+  {
+    throw std::invalid_argument(std::string("MuJoCo refused it: ") + error);
+  }
+  mjModel* model = m_model->model;
+  // The bodies step with the servo, whatever step the file chose for itself.
+  model->opt.timestep = settings.timeStep;
+  model->opt.enableflags |= mjENBL_ENERGY;
+  m_settings.gravity = Vec3{model->opt.gravity[0], model->opt.gravity[1], model->opt.gravity[2]};
+  std::vector<int> ids;
+  for (std::size_t index = 0; index < boundBodies.size(); ++index)
+  {
+    const std::string& name = boundBodies[index];
+    const int id = mj_name2id(model, mjOBJ_BODY, name.c_str());
+    if (id <= 0)
+    {
+      std::string names;
+      for (int b = 1; b < model->nbody; ++b)
+      {
+        const char* other = mj_id2name(model, mjOBJ_BODY, b);
+        names += std::string(names.empty() ? "" : ", ") + (other != nullptr ? other : "(unnamed)");
+      }
+      throw MechanismBindingError(index, "no body named '" + name + "' in it (it has: " +
+                                           (names.empty() ? "none" : names) + ")");
+    }
+    if (!moves(model, id))
+    {
+      throw MechanismBindingError(
+        index, "body '" + name + "' is fixed to the world (neither it nor a parent has a joint)");
+    }
+    ids.push_back(id);
+    m_joints.push_back(mechanismJointType(model, id));
+  }
+  start(ids);
+}
+
+void BodyWorld::start(const std::vector<int>& bodyIds)
+{
   m_model->data = mj_makeData(m_model->model);
   m_model->jacobian.resize(3 * static_cast<std::size_t>(m_model->model->nv));
   // The poses and Jacobian frames of the start (MuJoCo computes them at the beginning of each
   // step).
   mj_kinematics(m_model->model, m_model->data);
   mj_comPos(m_model->model, m_model->data);
+  m_ids = bodyIds;
+  m_start.clear();
+  const mjData* data = m_model->data;
+  for (const int b : m_ids)
+  {
+    BodyPose pose;
+    const std::size_t at = static_cast<std::size_t>(b);
+    pose.position = Vec3{data->xpos[3 * at], data->xpos[3 * at + 1], data->xpos[3 * at + 2]};
+    for (std::size_t k = 0; k < 4; ++k)
+    {
+      pose.orientation[k] = data->xquat[4 * at + k];
+    }
+    m_start.push_back(pose);
+  }
 }
 
 BodyWorld::~BodyWorld() = default;
@@ -208,7 +315,7 @@ void BodyWorld::applyForce(std::size_t body, const Vec3& point, const Vec3& forc
   const mjtNum torque[3] = {0.0, 0.0, 0.0};
   mjtNum at[3] = {point.x, point.y, point.z};
   // J^T f into the generalised applied forces (eqs. 23-24); body 0 is MuJoCo's world.
-  mj_applyFT(m_model->model, m_model->data, f, torque, at, static_cast<int>(body) + 1,
+  mj_applyFT(m_model->model, m_model->data, f, torque, at, m_ids[body],
              m_model->data->qfrc_applied);
 }
 
@@ -227,13 +334,19 @@ void BodyWorld::step()
 BodyPose BodyWorld::pose(std::size_t body) const
 {
   const mjData* data = m_model->data;
-  const std::size_t b = body + 1;
+  const auto b = static_cast<std::size_t>(m_ids[body]);
+  // Relative to the start: R = R_now R_start^T, t = x_now - R x_start (the start is the identity
+  // for bodies declared on objects, whose frames are the world's at the start).
+  const BodyPose& start = m_start[body];
+  mjtNum inverseStart[4];
+  mju_negQuat(inverseStart, start.orientation);
   BodyPose pose;
-  pose.position = Vec3{data->xpos[3 * b], data->xpos[3 * b + 1], data->xpos[3 * b + 2]};
-  for (int k = 0; k < 4; ++k)
-  {
-    pose.orientation[k] = data->xquat[4 * b + static_cast<std::size_t>(k)];
-  }
+  mju_mulQuat(pose.orientation, data->xquat + 4 * b, inverseStart);
+  const mjtNum from[3] = {start.position.x, start.position.y, start.position.z};
+  mjtNum turned[3];
+  mju_rotVecQuat(turned, from, pose.orientation);
+  pose.position = Vec3{data->xpos[3 * b] - turned[0], data->xpos[3 * b + 1] - turned[1],
+                       data->xpos[3 * b + 2] - turned[2]};
   return pose;
 }
 
@@ -245,7 +358,7 @@ double BodyWorld::jointPosition(std::size_t body) const
     return 0.0;
   }
   const mjModel* model = m_model->model;
-  const int joint = model->body_jntadr[body + 1];
+  const int joint = model->body_jntadr[m_ids[body]];
   return m_model->data->qpos[model->jnt_qposadr[joint]];
 }
 
@@ -257,7 +370,7 @@ double BodyWorld::jointVelocity(std::size_t body) const
     return 0.0;
   }
   const mjModel* model = m_model->model;
-  const int joint = model->body_jntadr[body + 1];
+  const int joint = model->body_jntadr[m_ids[body]];
   return m_model->data->qvel[model->jnt_dofadr[joint]];
 }
 
@@ -267,7 +380,7 @@ Vec3 BodyWorld::pointVelocity(std::size_t body, const Vec3& point) const
   const mjData* data = m_model->data;
   const mjtNum at[3] = {point.x, point.y, point.z};
   mjtNum* jacobian = m_model->jacobian.data();
-  mj_jac(model, data, jacobian, nullptr, at, static_cast<int>(body) + 1);
+  mj_jac(model, data, jacobian, nullptr, at, m_ids[body]);
   double v[3] = {0.0, 0.0, 0.0};
   for (int row = 0; row < 3; ++row)
   {
@@ -293,31 +406,27 @@ BodyEnergy BodyWorld::bodyEnergy(std::size_t body)
   mjModel* model = m_model->model;
   mjData* data = m_model->data;
   mj_forward(model, data);
-  const int b = static_cast<int>(body) + 1;
-  const int firstDof = model->body_dofadr[b];
-  const int numDofs = model->body_dofnum[b];
-  // Kinetic: 1/2 v^T M v with the velocities of this body's joint only (M is block diagonal, a
-  // block per body, as every body hangs from the world).
-  std::vector<mjtNum> velocity(static_cast<std::size_t>(model->nv), 0.0);
-  std::vector<mjtNum> momentum(static_cast<std::size_t>(model->nv), 0.0);
-  for (int dof = firstDof; dof < firstDof + numDofs; ++dof)
-  {
-    velocity[static_cast<std::size_t>(dof)] = data->qvel[dof];
-  }
-  mj_mulM(model, data, momentum.data(), velocity.data());
+  const int b = m_ids[body];
+  // Kinetic: the body's own, from the velocity of its centre of mass and its angular velocity in
+  // its principal frame (where MuJoCo keeps its inertia diagonal); the same for a body on its own
+  // joint and for one link of a mechanism.
+  mjtNum velocity[6];
+  mj_objectVelocity(model, data, mjOBJ_BODY, b, velocity, 1);
+  const mjtNum* inertia = model->body_inertia + 3 * b;
   BodyEnergy energy;
-  for (int dof = firstDof; dof < firstDof + numDofs; ++dof)
+  energy.kinetic = 0.5 * model->body_mass[b] * mju_dot3(velocity + 3, velocity + 3);
+  for (int k = 0; k < 3; ++k)
   {
-    energy.kinetic +=
-      0.5 * velocity[static_cast<std::size_t>(dof)] * momentum[static_cast<std::size_t>(dof)];
+    energy.kinetic += 0.5 * inertia[k] * velocity[k] * velocity[k];
   }
-  // Potential: gravity's (zero at the world's origin, as MuJoCo counts it) and the joint spring's.
+  // Potential: gravity's (zero at the world's origin, as MuJoCo counts it) and the springs of the
+  // body's own joints.
   const mjtNum* g = model->opt.gravity;
   const mjtNum* c = data->xipos + 3 * b;
   energy.potential = -model->body_mass[b] * (g[0] * c[0] + g[1] * c[1] + g[2] * c[2]);
-  if (model->body_jntnum[b] > 0)
+  for (int joint = model->body_jntadr[b];
+       joint >= 0 && joint < model->body_jntadr[b] + model->body_jntnum[b]; ++joint)
   {
-    const int joint = model->body_jntadr[b];
     const double k = model->jnt_stiffness[joint];
     const int at = model->jnt_qposadr[joint];
     if (model->jnt_type[joint] == mjJNT_HINGE || model->jnt_type[joint] == mjJNT_SLIDE)
@@ -334,6 +443,67 @@ BodyEnergy BodyWorld::bodyEnergy(std::size_t body)
     }
   }
   return energy;
+}
+
+namespace
+{
+// The largest eigenvalue of a symmetric positive semi-definite 3 x 3 matrix (row-major), by the
+// trigonometric closed form.
+double largestEigenvalue(const double a[9])
+{
+  const double offDiagonal = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
+  if (offDiagonal == 0.0)
+  {
+    return std::max({a[0], a[4], a[8]});
+  }
+  const double mean = (a[0] + a[4] + a[8]) / 3.0;
+  const double spread = std::sqrt(((a[0] - mean) * (a[0] - mean) + (a[4] - mean) * (a[4] - mean) +
+                                   (a[8] - mean) * (a[8] - mean) + 2.0 * offDiagonal) /
+                                  6.0);
+  double b[9];
+  for (int k = 0; k < 9; ++k)
+  {
+    b[k] = (a[k] - (k % 4 == 0 ? mean : 0.0)) / spread;
+  }
+  const double determinant = b[0] * (b[4] * b[8] - b[5] * b[7]) -
+                             b[1] * (b[3] * b[8] - b[5] * b[6]) +
+                             b[2] * (b[3] * b[7] - b[4] * b[6]);
+  const double angle = std::acos(std::clamp(determinant / 2.0, -1.0, 1.0)) / 3.0;
+  return mean + 2.0 * spread * std::cos(angle);
+}
+} // namespace
+
+double BodyWorld::leastEffectiveMass(std::size_t body, const std::vector<Vec3>& points)
+{
+  const mjModel* model = m_model->model;
+  mjData* data = m_model->data;
+  // The mass matrix of the present state, factorised.
+  mj_forward(model, data);
+  const auto nv = static_cast<std::size_t>(model->nv);
+  std::vector<mjtNum> jacobian(3 * nv);
+  std::vector<mjtNum> solved(3 * nv);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Vec3& point : points)
+  {
+    const mjtNum at[3] = {point.x, point.y, point.z};
+    mj_jac(model, data, jacobian.data(), nullptr, at, m_ids[body]);
+    // M^-1 J^T, a row per direction.
+    mj_solveM(model, data, solved.data(), jacobian.data(), 3);
+    double mobility[9];
+    for (std::size_t r = 0; r < 3; ++r)
+    {
+      for (std::size_t c = 0; c < 3; ++c)
+      {
+        mobility[3 * r + c] = mju_dot(jacobian.data() + r * nv, solved.data() + c * nv, model->nv);
+      }
+    }
+    const double largest = largestEigenvalue(mobility);
+    if (largest > 0.0)
+    {
+      least = std::min(least, 1.0 / largest);
+    }
+  }
+  return least;
 }
 
 } // namespace proxima

@@ -9,6 +9,8 @@
 
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace proxima
@@ -32,6 +34,17 @@ struct BodyEnergy
   double potential = 0.0;
 };
 
+/// An MJCF file's bodies could not be bound as asked: `binding` is the index, in the names
+/// given, of the one that failed.
+struct MechanismBindingError : std::invalid_argument
+{
+  MechanismBindingError(std::size_t index, const std::string& what)
+    : std::invalid_argument(what)
+    , binding(index)
+  {}
+  std::size_t binding;
+};
+
 class BodyWorld
 {
 public:
@@ -39,6 +52,14 @@ public:
   /// defect (a zero axis, a mass or inertia that is not positive, a range that is empty, a
   /// negative stiffness or damping, a time step that is not positive) or MuJoCo's complaint.
   BodyWorld(const std::vector<BodyDescription>& bodies, const DynamicsSettings& settings);
+  /// Loads the MJCF file `mjcfFile` (a mechanism: bodies on joints, nested, as MuJoCo reads them)
+  /// and binds its bodies named in `boundBodies`, in that order, as this world's bodies 0, 1, ...
+  /// (a name may come more than once). Its time step becomes `settings.timeStep` (the servo's
+  /// period); its gravity and everything else stay the file's. Throws std::invalid_argument with
+  /// MuJoCo's complaint, or MechanismBindingError for a name the file has not or a body fixed
+  /// to the world.
+  BodyWorld(const std::string& mjcfFile, const std::vector<std::string>& boundBodies,
+            const DynamicsSettings& settings);
   ~BodyWorld();
   BodyWorld(const BodyWorld&) = delete;
   BodyWorld& operator=(const BodyWorld&) = delete;
@@ -54,7 +75,8 @@ public:
 
   /// Where the body is now, relative to where it started.
   BodyPose pose(std::size_t body) const;
-  /// The joint coordinate q and its rate (hinge: radians; slide: metres); 0 for ball and free.
+  /// The joint coordinate q and its rate (hinge: radians; slide: metres); 0 for ball, free and
+  /// mechanism bodies.
   double jointPosition(std::size_t body) const;
   double jointVelocity(std::size_t body) const;
   /// Velocity (m/s) of the body's material point now at `point` (world).
@@ -62,17 +84,26 @@ public:
   /// The energies of the present state (computes the model forward: for reports and tests, not
   /// for the haptic loop).
   BodyEnergy energy();
-  /// The same energies for one body (each body hangs from the world by its own joint, so the
-  /// bodies' kinetic energies add up to the whole; the potentials are gravity's and its joint
-  /// spring's). For reports and tests.
+  /// The same energies for one body: its own kinetic energy (1/2 m v^2 + 1/2 w^T I w at its
+  /// centre of mass), its weight's potential and its own joints' springs'. For reports and tests.
   BodyEnergy bodyEnergy(std::size_t body);
   JointType jointType(std::size_t body) const { return m_joints[body]; }
+  /// The least effective mass (kg) of the body at any of `points` (world, where the body is now)
+  /// in any direction: 1 / the largest eigenvalue of J M^-1 J^T, with J the points' translational
+  /// Jacobian. What a push there moves, through every joint of the mechanism (for the coupling's
+  /// stability check of MJCF bodies; O(points nv^2)).
+  double leastEffectiveMass(std::size_t body, const std::vector<Vec3>& points);
 
 private:
   struct Model;
+  void start(const std::vector<int>& bodyIds);
+
   std::unique_ptr<Model> m_model;
   DynamicsSettings m_settings;
   std::vector<JointType> m_joints;
+  /// MuJoCo's id of each body, and where it was at the start (poses are relative to it).
+  std::vector<int> m_ids;
+  std::vector<BodyPose> m_start;
 };
 
 } // namespace proxima

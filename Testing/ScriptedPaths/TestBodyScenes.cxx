@@ -262,6 +262,78 @@ TEST(BodyScenes, WindmillTurnsAsFastAsItsDampingLetsThePush)
   expectNoEnergyGain(run);
 }
 
+// The crank's links (Data/Scenes/crank.xml): aluminium boxes, the arm 2 x 0.8 x 12 cm centred
+// 5 cm below the hinge (axis y), the handle 1.6 x 3 x 1.6 cm centred 10 cm below it.
+constexpr double kAluminium = 2700.0;
+constexpr double kArmMass = kAluminium * 0.02 * 0.008 * 0.12;
+constexpr double kHandleMass = kAluminium * 0.016 * 0.03 * 0.016;
+
+TEST(BodyScenes, CrankTurnsAgainstItsWeightAndItsDamping)
+{
+  const BodyRun run = playBodyScene("crank.json", "crank-turn.csv");
+  ASSERT_EQ(run.objects.size(), 2u); // the arm (the hinge's body) and the handle fixed to it
+  // About the hinge: I = sum of m (a^2 + c^2) / 12 + m d^2 over the links; gravity's moment at
+  // angle q from hanging is -m g d sin q summed, the damping's -c q'.
+  const double inertia = kArmMass * (0.02 * 0.02 + 0.12 * 0.12) / 12.0 + kArmMass * 0.05 * 0.05 +
+                         kHandleMass * (0.016 * 0.016 + 0.016 * 0.016) / 12.0 +
+                         kHandleMass * 0.1 * 0.1;
+  const double weightMoment = 9.81 * (kArmMass * 0.05 + kHandleMass * 0.1);
+  const double damping = 0.03;
+  const double dt = 0.001;
+  // While the finger goes round (a turn at pi rad/s, from 0.2 s to 2.45 s; after the first
+  // half second, once the push has settled) the moment of its push about the hinge is what the
+  // equation of motion asks: I q'' + c q' + m g d sin q.
+  double worst = 0.0;
+  for (std::size_t k = 700; k < 2400; ++k)
+  {
+    const BodyTick& tick = run.ticks[k];
+    ASSERT_GE(tick.state.numContacts, 1) << "tick " << k;
+    const double push = cross(tick.state.contacts[0].point, -tick.state.force).y;
+    const double acceleration = (run.ticks[k + 1].qRate[0] - run.ticks[k - 1].qRate[0]) / (2 * dt);
+    const double asked =
+      inertia * acceleration + damping * tick.qRate[0] + weightMoment * std::sin(tick.q[0]);
+    worst = std::max(worst, std::abs(push - asked));
+    // The handle turns with the arm: one rigid motion.
+    for (int r = 0; r < 3; ++r)
+    {
+      EXPECT_LT(norm(tick.poses[1].row[r] - tick.poses[0].row[r]), 1e-12);
+    }
+    EXPECT_LT(norm(tick.poses[1].translation - tick.poses[0].translation), 1e-12);
+  }
+  std::printf("[ measured ] crank: push moment against I q'' + c q' + m g d sin q: worst %.3g N m "
+              "of %.3g (weight) + %.3g (damping at pi rad/s)\n",
+              worst, weightMoment, damping * M_PI);
+  EXPECT_LT(worst, 0.01 * (weightMoment + damping * M_PI));
+  // A whole turn and more, then it hangs again (q back to 2 pi, within its slow settling).
+  const BodyTick& released = run.ticks[2450];
+  EXPECT_GT(released.q[0], 2.0 * M_PI);
+  const double rest = run.ticks.back().q[0];
+  std::printf("[ measured ] crank: q %.6f rad at release, %.6f rad at the end\n", released.q[0],
+              rest);
+  EXPECT_NEAR(rest, 2.0 * M_PI, 0.02);
+  // The energy the finger put in went into the damper: the work equals the damping's loss plus
+  // the change of the links' energy.
+  double dissipated = 0.0;
+  for (const BodyTick& tick : run.ticks)
+  {
+    dissipated += damping * tick.qRate[0] * tick.qRate[0] * dt;
+  }
+  double work = 0.0;
+  double gain = 0.0;
+  for (std::size_t b = 0; b < run.outcome.bodies.size(); ++b)
+  {
+    const BodyOutcome& body = run.outcome.bodies[b];
+    work += body.work;
+    gain += body.kinetic + body.potential - run.startEnergy[b];
+  }
+  std::printf("[ measured ] crank: work by the finger %.6g J, damping's loss %.6g J, energy "
+              "gained %.3g J\n",
+              work, dissipated, gain);
+  EXPECT_NEAR(work, dissipated + gain, 0.01 * work);
+  EXPECT_LE(gain, work);
+  expectNoPenetration(run);
+}
+
 TEST(BodyScenes, OnlyObjectsWithABodyAreCoupled)
 {
   // The slab under the free block is no body: only the block is coupled, and a scene without

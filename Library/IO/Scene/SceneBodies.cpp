@@ -40,6 +40,58 @@ BodyDescription bodyDescription(const SceneBody& body, const std::string& name,
   return description;
 }
 
+namespace
+{
+std::string objectBody(std::size_t object)
+{
+  return "objects[" + std::to_string(object) + "].body";
+}
+
+// The bodies bound by name to the scene's MJCF file, each checked heavy enough where its
+// object's surface is (through every joint of the mechanism).
+std::unique_ptr<BodyCoupling> buildMechanism(const LoadedScene& loaded, const std::string& file,
+                                             double kp, const DynamicsSettings& settings)
+{
+  const SceneDescription& description = loaded.description;
+  std::vector<MechanismBinding> bindings;
+  for (std::size_t i = 0; i < description.objects.size(); ++i)
+  {
+    if (description.objects[i].hasBody)
+    {
+      bindings.push_back(
+        MechanismBinding{static_cast<std::uint32_t>(i), description.objects[i].body.mjcfBody});
+    }
+  }
+  std::unique_ptr<BodyCoupling> coupling;
+  try
+  {
+    coupling = std::make_unique<BodyCoupling>(description.mjcf, bindings, settings);
+  }
+  catch (const MechanismBindingError& error)
+  {
+    throw InputError(file, objectBody(bindings[error.binding].object) + ".name: " + error.what() +
+                             " (" + description.mjcf + ")");
+  }
+  catch (const std::invalid_argument& error)
+  {
+    throw InputError(description.mjcf, error.what());
+  }
+  for (std::size_t body = 0; body < coupling->numBodies(); ++body)
+  {
+    const std::uint32_t object = coupling->object(body);
+    const double effectiveMass =
+      coupling->world().leastEffectiveMass(body, loaded.scene->objects[object].mesh.points());
+    const std::string unstable = couplingStabilityDefect(
+      effectiveMass, "the mechanism's least effective mass at its surface", kp, settings.timeStep);
+    if (!unstable.empty())
+    {
+      throw InputError(file, objectBody(object) + ": " + unstable);
+    }
+  }
+  return coupling;
+}
+} // namespace
+
 std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double kp, double rate)
 {
   const SceneDescription& description = loaded.description;
@@ -52,6 +104,10 @@ std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double
   DynamicsSettings settings;
   settings.timeStep = 1.0 / rate;
   settings.gravity = description.gravity;
+  if (!description.mjcf.empty())
+  {
+    return buildMechanism(loaded, file, kp, settings);
+  }
   for (std::size_t i = 0; i < description.objects.size(); ++i)
   {
     const SceneObject& object = description.objects[i];
@@ -59,7 +115,7 @@ std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double
     {
       continue;
     }
-    const std::string where = "objects[" + std::to_string(i) + "].body";
+    const std::string where = objectBody(i);
     const TriangleMesh& mesh = loaded.scene->objects[i].mesh;
     CoupledBody body;
     body.object = static_cast<std::uint32_t>(i);

@@ -61,9 +61,12 @@ enum class SceneJoint
 };
 
 /// A body on an object (scene file version 2): the object moves as a rigid body on its joint
-/// (paper section 6). Axis and anchor are in the scene's frame, where the object is placed.
+/// (paper section 6). Axis and anchor are in the scene's frame, where the object is placed. In a
+/// scene that names an MJCF file, the object is bound instead to the file's body `mjcfBody`,
+/// and the joint and mass here are unused.
 struct SceneBody
 {
+  std::string mjcfBody;
   SceneJoint joint = SceneJoint::Hinge;
   Vec3 axis{0.0, 0.0, 1.0};
   Vec3 anchor;
@@ -98,6 +101,9 @@ struct SceneDescription
   std::vector<SceneObject> objects;
   /// m/s^2 on the bodies, in the scene's frame (a scene has no "up" of its own).
   Vec3 gravity;
+  /// An MJCF file (resolved against the scene file's folder) whose bodies the objects bind by
+  /// name; empty when the bodies are declared on the objects. Its gravity is the scene's.
+  std::string mjcf;
   bool hasBodies() const
   {
     for (const SceneObject& object : objects)

@@ -52,7 +52,17 @@ public:
       scene.version = static_cast<int>(version->get<double>());
     }
     m_version = scene.version;
-    checkKeys(root, "", {"version", "gravity", "objects"});
+    checkKeys(root, "", {"version", "gravity", "mjcf", "objects"});
+    if (const Json* mjcf = find(root, "mjcf"))
+    {
+      needsVersion2("mjcf");
+      if (find(root, "gravity") != nullptr)
+      {
+        fail("gravity", "a scene with an \"mjcf\" file takes gravity from the file's <option>");
+      }
+      scene.mjcf = filePath(*mjcf, "mjcf");
+      m_mjcf = true;
+    }
     if (const Json* gravity = find(root, "gravity"))
     {
       needsVersion2("gravity");
@@ -75,6 +85,10 @@ public:
     for (std::size_t i = 0; i < objects.size(); ++i)
     {
       scene.objects.push_back(readObject(objects[i], element("objects", i)));
+    }
+    if (m_mjcf && !scene.hasBodies())
+    {
+      fail("mjcf", "no object binds a body of it (give an object \"body\": {\"name\": ...})");
     }
     return scene;
   }
@@ -195,8 +209,27 @@ private:
   SceneBody readBody(const Json& value, const std::string& where) const
   {
     requireObject(value, where);
-    checkKeys(value, where, {"joint", "density", "mass"});
     SceneBody body;
+    if (m_mjcf)
+    {
+      // Bound by name: the joint and the mass are the MJCF file's.
+      checkKeys(value, where, {"name"});
+      const Json& name = require(value, "name", where);
+      if (!name.is_string() || name.get<std::string>().empty())
+      {
+        fail(child(where, "name"),
+             "must name a body of the scene's \"mjcf\" file, got " + quoted(name));
+      }
+      body.mjcfBody = name.get<std::string>();
+      return body;
+    }
+    if (find(value, "name") != nullptr)
+    {
+      fail(child(where, "name"),
+           "binds a body of an MJCF file, and the scene names none (give \"mjcf\" at the top "
+           "level, or declare the body's \"joint\" here)");
+    }
+    checkKeys(value, where, {"joint", "density", "mass"});
     readJoint(require(value, "joint", where), child(where, "joint"), body);
     const Json* density = find(value, "density");
     const Json* mass = find(value, "mass");
@@ -413,6 +446,8 @@ private:
 
   static constexpr double kQuaternionNormTolerance = 1e-3;
   int m_version = 1;
+  /// The scene names an MJCF file: bodies bind its bodies by name.
+  bool m_mjcf = false;
 };
 } // namespace
 
