@@ -259,7 +259,7 @@ BodyWorld::BodyWorld(const std::string& mjcfFile, const std::vector<std::string>
         const char* other = mj_id2name(model, mjOBJ_BODY, b);
         names += std::string(names.empty() ? "" : ", ") + (other != nullptr ? other : "(unnamed)");
       }
-      throw MechanismBindingError(index, "no body named '" + name + "' in it (it has: " +
+      throw MechanismBindingError(index, "no body named '" + name + "' (the file has: " +
                                            (names.empty() ? "none" : names) + ")");
     }
     if (!moves(model, id))

@@ -215,6 +215,30 @@ TEST(BodyWorld, DampedMechanismGainsNoEnergy)
   EXPECT_LE(rise, 1e-9 * start.kinetic) << "energy rose in a step by " << rise << " J";
 }
 
+TEST(BodyWorld, EffectiveMassIsWhatAPushMovesThroughTheJoint)
+{
+  // A 20 x 2 x 2 cm bar of 1000 kg/m^3 (0.08 kg) on a hinge about z through one end: a push at a
+  // point d from the axis, across it, moves I / d^2 (I = m (L^2 + w^2) / 12 + m (L/2)^2); along
+  // the bar it moves nothing (an infinite mass), so the least over directions is I / d^2.
+  const TriangleMesh bar = boxMesh({0.1, 0.01, 0.01}, {0.1, 0.0, 0.0});
+  const double mass = 1000.0 * 0.2 * 0.02 * 0.02;
+  const double inertia = mass * (0.2 * 0.2 + 0.02 * 0.02) / 12.0 + mass * 0.1 * 0.1;
+  BodyWorld hinged({body("bar", bar, 1000.0, JointDescription{})}, settings());
+  const Vec3 tip{0.2, 0.01, 0.0};
+  const double reach = 0.2 * 0.2 + 0.01 * 0.01;
+  report("effective mass at the tip of a hinged bar (kg)", hinged.leastEffectiveMass(0, {tip}),
+         inertia / reach);
+  EXPECT_NEAR(hinged.leastEffectiveMass(0, {tip}), inertia / reach, 1e-12);
+  // The least over several points is the farthest one's.
+  EXPECT_NEAR(hinged.leastEffectiveMass(0, {{0.05, 0.0, 0.0}, tip, {0.1, 0.0, 0.0}}),
+              inertia / reach, 1e-12);
+  // A free bar pushed at its centre of mass moves its whole mass, in every direction.
+  JointDescription none;
+  none.type = JointType::Free;
+  BodyWorld free({body("bar", bar, 1000.0, none)}, settings());
+  EXPECT_NEAR(free.leastEffectiveMass(0, {{0.1, 0.0, 0.0}}), mass, 1e-12);
+}
+
 TEST(BodyWorld, BadBodiesAreRefusedByName)
 {
   const TriangleMesh bar = boxMesh({0.01, 0.01, 0.1}, {0.0, 0.0, -0.1});

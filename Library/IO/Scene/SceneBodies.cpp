@@ -69,8 +69,8 @@ std::unique_ptr<BodyCoupling> buildMechanism(const LoadedScene& loaded, const st
   }
   catch (const MechanismBindingError& error)
   {
-    throw InputError(file, objectBody(bindings[error.binding].object) + ".name: " + error.what() +
-                             " (" + description.mjcf + ")");
+    throw InputError(file, objectBody(bindings[error.binding].object) +
+                             ".name: " + description.mjcf + ": " + error.what());
   }
   catch (const std::invalid_argument& error)
   {

@@ -213,6 +213,14 @@ private:
     if (m_mjcf)
     {
       // Bound by name: the joint and the mass are the MJCF file's.
+      for (const char* declared : {"joint", "density", "mass"})
+      {
+        if (find(value, declared) != nullptr)
+        {
+          fail(child(where, declared), "the scene's \"mjcf\" file gives the joints and masses: "
+                                       "bind the object to one of its bodies by \"name\" alone");
+        }
+      }
       checkKeys(value, where, {"name"});
       const Json& name = require(value, "name", where);
       if (!name.is_string() || name.get<std::string>().empty())

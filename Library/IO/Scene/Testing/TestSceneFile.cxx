@@ -331,6 +331,41 @@ TEST_F(SceneFile, BodyRefusals)
                             "objects[0].body.mass: must be a number above 0");
 }
 
+TEST_F(SceneFile, MjcfBodiesAreBoundByName)
+{
+  const proxima::SceneDescription scene = proxima::readSceneFile(
+    write("crank.json", R"({"version": 2, "mjcf": "crank.xml", "objects": [)"
+                        R"({"mesh": "m.obj", "body": {"name": "arm"}}, {"mesh": "m.obj"}]})"));
+  EXPECT_EQ(scene.mjcf, (m_dir / "crank.xml").string());
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_TRUE(scene.objects[0].hasBody);
+  EXPECT_EQ(scene.objects[0].body.mjcfBody, "arm");
+  EXPECT_FALSE(scene.objects[1].hasBody);
+}
+
+TEST_F(SceneFile, MjcfRefusals)
+{
+  expectRefused(write("mjcf1.json", R"({"mjcf": "c.xml", "objects": [{"mesh": "m.obj"}]})"),
+                "mjcf: bodies need \"version\": 2 at the top level (this file reads as version 1)");
+  expectRefused(
+    write("unbound.json", R"({"version": 2, "mjcf": "c.xml", "objects": [{"mesh": "m.obj"}]})"),
+    R"(mjcf: no object binds a body of it (give an object "body": {"name": ...}))");
+  expectRefused(write("joint.json",
+                      R"({"version": 2, "mjcf": "c.xml", "objects": [{"mesh": )"
+                      R"("m.obj", "body": {"joint": {"type": "free"}, "mass": 1}}]})"),
+                R"(objects[0].body.joint: the scene's "mjcf" file gives the joints and masses: )"
+                R"(bind the object to one of its bodies by "name" alone)");
+  expectRefused(write("noname.json", bodyScene(R"({"name": "arm"})")),
+                R"(objects[0].body.name: binds a body of an MJCF file, and the scene names none )"
+                R"((give "mjcf" at the top level, or declare the body's "joint" here))");
+  expectRefused(write("gravity.json", R"({"version": 2, "mjcf": "c.xml", "gravity": [0, 0, -1], )"
+                                      R"("objects": [{"mesh": "m.obj", "body": {"name": "a"}}]})"),
+                R"(gravity: a scene with an "mjcf" file takes gravity from the file's <option>)");
+  expectRefused(write("emptyname.json", R"({"version": 2, "mjcf": "c.xml", "objects": [{"mesh": )"
+                                        R"("m.obj", "body": {"name": ""}}]})"),
+                R"(objects[0].body.name: must name a body of the scene's "mjcf" file, got "")");
+}
+
 TEST_F(SceneFile, RepeatedKey)
 {
   expectRefused(write("twice.json", R"({"objects": [{"mesh": "a.obj"},)"
