@@ -24,8 +24,18 @@ CORNERS = {
     "sensor-press-release": [(0, 0, 0, 0.03), (0.2, 0, 0, -0.004), (2.2, 0, 0, -0.004),
                              (2.21, 0, 0, 0.05), (4, 0, 0, 0.05)],
     # The free block (its side at x = -0.05 m, centre height 0.006 m): push along x for 0.2 s.
+    # The ball pendulum (box.obj upright, hung by a ball at z = 0.1 m, its side at x = 0.05 m):
+    # push the side near the bottom along -x for 0.3 s, then step aside (-y) and let it swing in
+    # its own plane.
+    "ball-pendulum-push-release": [(0, 0.08, 0, -0.08), (0.1, 0.052, 0, -0.08),
+                                   (0.3, 0.04, 0, -0.08), (0.32, 0.06, -0.05, -0.08),
+                                   (3.5, 0.06, -0.05, -0.08)],
+    # The carousel (box.obj flat, on a hinge about z through its centre): flick its long side
+    # (x = 0.05 m) along -x, 8 cm from the axis, then lift off above it and let it coast.
+    "carousel-flick": [(0, 0.08, 0.08, 0), (0.1, 0.047, 0.08, 0), (0.15, 0.04, 0.08, 0),
+                       (0.17, 0.04, 0.08, 0.03), (3, 0.04, 0.08, 0.03)],
     "free-block-push": [(0, -0.08, 0, 0.006), (0.1, -0.052, 0, 0.006), (0.3, -0.03, 0, 0.006),
-                        (0.31, -0.09, 0, 0.006), (1, -0.09, 0, 0.006)],
+                        (0.31, -0.09, 0, 0.006), (2, -0.09, 0, 0.006)],
 }
 
 # The windmill: its rotor (the plate on edge, face at y = -0.005 m, turning about z through the

@@ -185,6 +185,16 @@ void BodyCoupling::bind(const std::vector<std::uint32_t>& objects)
     m_bodyOfObject[objects[i]] = static_cast<int>(i);
   }
   m_work.assign(objects.size(), 0.0);
+  m_leftBoundsAt.assign(objects.size(), -1.0);
+}
+
+void BodyCoupling::watchBounds(const Vec3& lower, const Vec3& upper,
+                               const std::vector<Vec3>& references)
+{
+  m_watchingBounds = references.size() == m_objects.size();
+  m_lower = lower;
+  m_upper = upper;
+  m_references = references;
 }
 
 RigidTransform BodyCoupling::transform(std::size_t body) const
@@ -266,6 +276,18 @@ void BodyCoupling::step(HapticState& state, ProxySolver& solver)
       }
     }
     solver.setObjectPose(m_objects[body], after);
+    if (m_watchingBounds && m_leftBoundsAt[body] < 0.0)
+    {
+      const Vec3 where = after.apply(m_references[body]);
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        if (!(where[axis] >= m_lower[axis] && where[axis] <= m_upper[axis]))
+        {
+          m_leftBoundsAt[body] = m_world.time();
+          break;
+        }
+      }
+    }
   }
   const auto end = std::chrono::steady_clock::now();
   state.dynamicsNanoseconds =

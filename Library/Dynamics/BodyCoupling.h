@@ -72,6 +72,13 @@ public:
   RigidTransform transform(std::size_t body) const;
   BodyWorld& world() { return m_world; }
   const BodyWorld& world() const { return m_world; }
+  /// Watches the bodies leave the scene: from now on, the first time the point `references[b]`
+  /// of body b's object (as placed) goes outside the box [lower, upper] is kept
+  /// (leftBoundsAt). O(1) per body per step.
+  void watchBounds(const Vec3& lower, const Vec3& upper, const std::vector<Vec3>& references);
+  /// Seconds of the bodies' clock at which `body` first left the bounds, or -1 while it has not
+  /// (or no bounds are watched).
+  double leftBoundsAt(std::size_t body) const { return m_leftBoundsAt[body]; }
   /// Joules the finger has done on `body` so far: each step's force on it times the displacement
   /// over that step of the material point it pushed.
   double work(std::size_t body) const { return m_work[body]; }
@@ -84,6 +91,11 @@ private:
   std::vector<std::uint32_t> m_objects;
   std::vector<int> m_bodyOfObject;
   std::vector<double> m_work;
+  bool m_watchingBounds = false;
+  Vec3 m_lower;
+  Vec3 m_upper;
+  std::vector<Vec3> m_references;
+  std::vector<double> m_leftBoundsAt;
 };
 
 } // namespace proxima

@@ -231,12 +231,21 @@ TEST(BodyScenes, FreeBlockTakesTheImpulseOfThePush)
     }
   }
   const std::size_t last = run.ticks.size() - 1;
+  ASSERT_GT(run.ticks[last].state.time, 1.5);
   const Vec3 velocity =
     (run.ticks[last].poses[0].translation - run.ticks[last - 100].poses[0].translation) / 0.1;
   std::printf("[ measured ] free block: impulse %.9g N s, m v %.9g N s\n", impulse.x,
               kBoxMass * velocity.x);
   EXPECT_GT(velocity.x, 0.01);
   EXPECT_NEAR(kBoxMass * velocity.x, impulse.x, 0.01 * impulse.x);
+  // It glides out of the scene's bounds (the box around both boxes, 0.1 x 0.2 x 0.022 m, grown
+  // by 0.2 m on every side: x up to 0.25 m) when its centre passes x = 0.25 m, and is reported.
+  const double exit =
+    run.ticks[last].state.time + (0.25 - run.ticks[last].poses[0].translation.x) / velocity.x;
+  std::printf(
+    "[ measured ] free block: left the scene's bounds at %.4f s, gliding there at %.4f s\n",
+    run.outcome.bodies[0].leftBoundsAt, exit);
+  EXPECT_NEAR(run.outcome.bodies[0].leftBoundsAt, exit, 0.002);
   expectNoPenetration(run);
   expectNoEnergyGain(run);
 }
@@ -258,6 +267,72 @@ TEST(BodyScenes, WindmillTurnsAsFastAsItsDampingLetsThePush)
     EXPECT_NEAR(tick.qRate[0], torque / damping, 0.01 * tick.qRate[0]);
     EXPECT_NEAR(tick.qRate[0], 2.0, 0.02);
   }
+  expectNoPenetration(run);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, CarouselTakesTheAngularImpulseAndCoastsDownAtDampingOverInertia)
+{
+  const BodyRun run = playBodyScene("carousel.json", "carousel-flick.csv");
+  // The flat box on a hinge about z through its centre: I = m (a^2 + b^2) / 12.
+  const double inertia = kBoxMass * (kBoxX * kBoxX + kBoxY * kBoxY) / 12.0;
+  const double damping = 0.002;
+  // Flicked: its angular momentum right after the flick is the angular impulse of the forces on
+  // it (the finger's, negated, at the contacts; one period each), less what damping took.
+  double impulse = 0.0;
+  double lost = 0.0;
+  std::size_t last = 0;
+  for (std::size_t k = 0; k < run.ticks.size(); ++k)
+  {
+    const BodyTick& tick = run.ticks[k];
+    if (tick.state.numContacts > 0)
+    {
+      impulse += cross(tick.state.contacts[0].point, -tick.state.force).z * 0.001;
+      last = k;
+    }
+    if (last == k || last == 0)
+    {
+      lost += damping * tick.qRate[0] * 0.001;
+    }
+  }
+  const double momentum = inertia * run.ticks[last].qRate[0];
+  std::printf("[ measured ] carousel: angular impulse %.9g N m s, I omega + damping's %.9g N m s\n",
+              impulse, momentum + lost);
+  EXPECT_GT(run.ticks[last].qRate[0], 1.0);
+  EXPECT_NEAR(momentum + lost, impulse, 0.01 * impulse);
+  // Then it coasts: omega(t) = omega_0 exp(-c t / I), measured over 2 s of coasting.
+  const BodyTick& early = run.ticks[500];
+  const BodyTick& late = run.ticks[2500];
+  const double rate =
+    std::log(early.qRate[0] / late.qRate[0]) / (late.state.time - early.state.time);
+  std::printf("[ measured ] carousel: coasts down at %.6f /s, c / I %.6f /s (%+.3f %%)\n", rate,
+              damping / inertia, 100.0 * (rate - damping / inertia) / (damping / inertia));
+  EXPECT_NEAR(rate, damping / inertia, 0.01 * damping / inertia);
+  expectNoPenetration(run);
+  expectNoEnergyGain(run);
+}
+
+TEST(BodyScenes, BallPendulumSwingsInItsPlaneWithThatPlanesPeriod)
+{
+  BodyRun run = playBodyScene("ball-pendulum.json", "ball-pendulum-push-release.csv");
+  // The upright box hung by a ball at its top edge's middle, pushed on its side: it swings about
+  // y, in its own plane, where its inertia about the ball is m (x^2 + z^2) / 12 + m d^2 over
+  // its 0.1 x 0.2 m face, d = 0.1 m. A ball joint has no coordinate: the angle about y comes
+  // from the pose, and the pose must hold no turn about any other axis.
+  const double d = kBoxY / 2.0;
+  const double inertia = kBoxMass * (kBoxX * kBoxX + kBoxY * kBoxY) / 12.0 + kBoxMass * d * d;
+  const double period = 2.0 * M_PI * std::sqrt(inertia / (kBoxMass * 9.81 * d));
+  double offPlane = 0.0;
+  for (BodyTick& tick : run.ticks)
+  {
+    const RigidTransform& pose = tick.poses[0];
+    tick.q[0] = std::atan2(pose.row[0].z, pose.row[0].x);
+    offPlane = std::max(
+      {offPlane, std::abs(pose.row[1].x), std::abs(pose.row[1].z), std::abs(pose.row[0].y)});
+  }
+  std::printf("[ measured ] ball pendulum: largest turn out of its plane %.3g\n", offPlane);
+  EXPECT_LT(offPlane, 1e-9);
+  expectPeriods(run, 0.4, period, "ball pendulum");
   expectNoPenetration(run);
   expectNoEnergyGain(run);
 }

@@ -2,6 +2,8 @@
 
 #include "IO/InputChecks/InputError.h"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace proxima
@@ -90,9 +92,47 @@ std::unique_ptr<BodyCoupling> buildMechanism(const LoadedScene& loaded, const st
   }
   return coupling;
 }
-} // namespace
 
-std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double kp, double rate)
+// The scene's bounds: the box around every object as placed, grown on every side by its largest
+// side; each body is watched by the centre of its object's box.
+void watchSceneBounds(const LoadedScene& loaded, BodyCoupling& bodies)
+{
+  const double huge = std::numeric_limits<double>::max();
+  Vec3 lower{huge, huge, huge};
+  Vec3 upper{-huge, -huge, -huge};
+  std::vector<Vec3> centres;
+  for (const auto& object : loaded.scene->objects)
+  {
+    Vec3 objectLower{huge, huge, huge};
+    Vec3 objectUpper{-huge, -huge, -huge};
+    for (const Vec3& point : object.mesh.points())
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        objectLower[axis] = std::min(objectLower[axis], point[axis]);
+        objectUpper[axis] = std::max(objectUpper[axis], point[axis]);
+      }
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      lower[axis] = std::min(lower[axis], objectLower[axis]);
+      upper[axis] = std::max(upper[axis], objectUpper[axis]);
+    }
+    centres.push_back((objectLower + objectUpper) * 0.5);
+  }
+  const Vec3 size = upper - lower;
+  const double margin = std::max({size.x, size.y, size.z});
+  std::vector<Vec3> references;
+  for (std::size_t body = 0; body < bodies.numBodies(); ++body)
+  {
+    references.push_back(centres[bodies.object(body)]);
+  }
+  bodies.watchBounds(lower - Vec3{margin, margin, margin}, upper + Vec3{margin, margin, margin},
+                     references);
+}
+
+std::unique_ptr<BodyCoupling> buildSceneBodiesUnwatched(const LoadedScene& loaded, double kp,
+                                                        double rate)
 {
   const SceneDescription& description = loaded.description;
   if (!description.hasBodies())
@@ -144,6 +184,18 @@ std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double
     // BodyWorld names the body by its object ("body 'objects[1]': ...").
     throw InputError(file, error.what());
   }
+}
+
+} // namespace
+
+std::unique_ptr<BodyCoupling> buildSceneBodies(const LoadedScene& loaded, double kp, double rate)
+{
+  std::unique_ptr<BodyCoupling> bodies = buildSceneBodiesUnwatched(loaded, kp, rate);
+  if (bodies != nullptr)
+  {
+    watchSceneBounds(loaded, *bodies);
+  }
+  return bodies;
 }
 
 } // namespace proxima

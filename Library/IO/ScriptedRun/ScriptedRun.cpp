@@ -109,6 +109,7 @@ std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies)
     report.kinetic = energy.kinetic;
     report.potential = energy.potential;
     report.work = bodies.work(body);
+    report.leftBoundsAt = bodies.leftBoundsAt(body);
     reports.push_back(report);
   }
 #else

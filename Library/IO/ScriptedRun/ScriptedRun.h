@@ -37,6 +37,9 @@ struct BodyOutcome
   double kinetic = 0.0;
   double potential = 0.0;
   double work = 0.0;
+  /// Seconds into the run at which the body left the scene's bounds (Documentation/Dynamics.md),
+  /// or -1 when it stayed.
+  double leftBoundsAt = -1.0;
 };
 
 /// What playing a path gave, beside the ticks themselves.

@@ -159,6 +159,15 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
                         {"kinetic_J", body.kinetic},
                         {"potential_J", body.potential},
                         {"work_by_finger_J", body.work}});
+      // A body that left the scene's bounds is reported with when; one that stayed, null.
+      if (body.leftBoundsAt >= 0.0)
+      {
+        bodies.back()["left_bounds_s"] = body.leftBoundsAt;
+      }
+      else
+      {
+        bodies.back()["left_bounds_s"] = nullptr;
+      }
     }
     json["bodies"] = std::move(bodies);
     json["pushed_ticks"] = outcome.summary.pushedTicks();
