@@ -68,6 +68,15 @@ const ProxyStartPlacement& HapticSession::placeProxy(const Vec3& finger)
   return m_placement;
 }
 
+void HapticSession::setDynamics(std::shared_ptr<TickDynamics> dynamics)
+{
+  m_dynamics = std::move(dynamics);
+  if (m_dynamics != nullptr)
+  {
+    m_dynamics->attach(*m_solver);
+  }
+}
+
 HapticState HapticSession::step(const Vec3& finger)
 {
   if (!m_placed)
@@ -76,7 +85,7 @@ HapticState HapticSession::step(const Vec3& finger)
   }
   GivenFinger device(finger);
   const double time = static_cast<double>(m_tick) / m_settings.rate;
-  HapticState state = hapticStep(m_tick, time, *m_solver, device, *m_servo);
+  HapticState state = hapticStep(m_tick, time, *m_solver, device, *m_servo, 0, m_dynamics.get());
   ++m_tick;
   return state;
 }
@@ -95,8 +104,9 @@ std::vector<HapticState> HapticSession::run(const FingerPath& path)
   SimulatedDevice device(path);
   std::vector<HapticState> states;
   states.reserve(lockstep.numTicks);
-  runLockstep(lockstep, *m_solver, device, m_settings.servo,
-              [&](const HapticState& state) { states.push_back(state); });
+  runLockstep(
+    lockstep, *m_solver, device, m_settings.servo,
+    [&](const HapticState& state) { states.push_back(state); }, m_dynamics.get());
   m_tick = lockstep.numTicks;
   return states;
 }

@@ -15,6 +15,7 @@
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoForce.h"
 #include "Runtime/ServoParameters.h"
+#include "Runtime/TickDynamics.h"
 
 #include <cstdint>
 #include <memory>
@@ -49,6 +50,12 @@ public:
   /// of the scene, at the nearest free point outside it (ProxyStart.h; the next tick reports it
   /// and the force ramps in). Restarts the clock and the force stage.
   const ProxyStartPlacement& placeProxy(const Vec3& finger);
+  /// The scene's bodies (paper section 6), stepped at the end of every tick from now on with the
+  /// tick's force (Runtime/TickDynamics.h): their objects move in the solver. The session keeps
+  /// them; they are not reset when the proxy is placed again (a second `run` continues where the
+  /// bodies are), and placing the proxy checks the objects where the scene placed them.
+  void setDynamics(std::shared_ptr<TickDynamics> dynamics);
+  const TickDynamics* dynamics() const { return m_dynamics.get(); }
   /// One tick with the finger at `finger`: the proxy's update toward it and the force on the
   /// device, kp (proxy - finger) clamped to the servo's limit. The first tick places the proxy.
   HapticState step(const Vec3& finger);
@@ -67,6 +74,7 @@ private:
   HapticSessionSettings m_settings;
   std::unique_ptr<ProxySolver> m_solver; // large (fixed buffers): on the heap
   std::unique_ptr<ServoForce> m_servo;
+  std::shared_ptr<TickDynamics> m_dynamics;
   ProxyStartPlacement m_placement;
   bool m_placed = false;
   std::uint64_t m_tick = 0;

@@ -3,6 +3,7 @@
 #include "Bindings.h"
 
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
 #include "Runtime/HapticSession.h"
 
 #include <memory>
@@ -56,8 +57,8 @@ public:
   {
     const ScriptedRunSettings settings = settingsFromKeywords(keywords);
     LoadedScene loaded = loadScene(settings);
-    refuseSceneBodies(loaded, "proxima.Session");
     checkRadiusAgainstScene(settings, loaded);
+    std::shared_ptr<TickDynamics> bodies = sceneDynamics(settings, loaded);
     HapticSessionSettings session;
     session.proxy = proxyParameters(settings);
     tickBudget(settings, TickWorkBudget{}).applyTo(session.proxy);
@@ -65,6 +66,39 @@ public:
     session.rate = settings.rate;
     m_session = std::make_unique<HapticSession>(
       std::shared_ptr<const CollisionScene>(std::move(loaded.scene)), session);
+    m_session->setDynamics(std::move(bodies));
+  }
+
+  // Where each body's object is now: a list of {object, translation, rotation (3 x 3)}, a point
+  // p of the object as placed being at rotation @ p + translation.
+  py::list bodies() const
+  {
+    py::list list;
+    const TickDynamics* dynamics = m_session->dynamics();
+    if (dynamics == nullptr)
+    {
+      return list;
+    }
+    BodyPoses poses;
+    dynamics->poses(poses);
+    for (int b = 0; b < poses.count; ++b)
+    {
+      const RigidTransform& pose = poses.poses[b];
+      py::array_t<double> rotation({3, 3});
+      double* out = rotation.mutable_data();
+      for (int r = 0; r < 3; ++r)
+      {
+        out[3 * r] = pose.row[r].x;
+        out[3 * r + 1] = pose.row[r].y;
+        out[3 * r + 2] = pose.row[r].z;
+      }
+      py::dict body;
+      body["object"] = poses.objects[b];
+      body["translation"] = vector(pose.translation);
+      body["rotation"] = rotation;
+      list.append(body);
+    }
+    return list;
   }
 
   py::dict step(const py::object& finger) { return stateDict(m_session->step(point(finger))); }
@@ -107,7 +141,10 @@ void addSessionBindings(py::module_& module)
     .def("place", &PythonSession::place, py::arg("finger"),
          "Places the proxy for a finger there (outside a closed object that holds it) and "
          "restarts the clock; returns where it went.")
-    .def_property_readonly("proxy", &PythonSession::proxy, "The proxy's centre (metres).");
+    .def_property_readonly("proxy", &PythonSession::proxy, "The proxy's centre (metres).")
+    .def_property_readonly("bodies", &PythonSession::bodies,
+                           "Where the scene's bodies are now (paper section 6): a list of "
+                           "{object, translation, rotation}, empty for a scene without bodies.");
 }
 
 } // namespace proxima::python

@@ -134,6 +134,17 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
 #endif
 }
 
+std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
+                                            const LoadedScene& loaded)
+{
+#ifdef PROXIMA_WITH_DYNAMICS
+  return std::shared_ptr<TickDynamics>(sceneBodies(settings, loaded));
+#else
+  static_cast<void>(sceneBodies(settings, loaded)); // refuses a scene with bodies
+  return nullptr;
+#endif
+}
+
 std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                             const std::function<void(const HapticState&)>& onTick,
                             const ScriptedRunReportContext& context, double maxTicks)

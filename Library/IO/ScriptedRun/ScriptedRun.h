@@ -13,9 +13,11 @@
 #include "Runtime/HapticState.h"
 #include "Runtime/RunSummary.h"
 #include "Runtime/TickBudget.h"
+#include "Runtime/TickDynamics.h"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,6 +84,9 @@ std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies);
 /// none. Throws InputError as buildSceneBodies does, or when this build has no Dynamics layer.
 std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
                                           const LoadedScene& loaded);
+/// The same, as the runners see it (for HapticSession::setDynamics and the like), or null.
+std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
+                                            const LoadedScene& loaded);
 
 /// What the summary names beside the settings and the outcome.
 struct ScriptedRunReportContext

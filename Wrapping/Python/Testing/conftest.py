@@ -7,6 +7,7 @@ import numpy
 import pytest
 
 BUILD = os.environ.get("PROXIMA_BUILD_DIR", "")
+SOURCE = os.environ.get("PROXIMA_SOURCE_DIR", "")
 SHARED = os.environ.get("PROXIMA_SHARED_DATA", "")
 MESHES = os.path.join(SHARED, "meshes")
 PATHS = os.path.join(SHARED, "paths")

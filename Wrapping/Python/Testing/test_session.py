@@ -1,8 +1,10 @@
 """proxima.Session: stepped by hand, it gives the ticks of a whole run."""
+import os
+
 import numpy
 
 import proxima
-from conftest import needs_shared_data, shared_case
+from conftest import SOURCE, needs_shared_data, proxima_cli, read_cli_trace, shared_case
 
 
 @needs_shared_data()
@@ -34,3 +36,40 @@ def test_session_run_and_force_clamp():
     force = numpy.sqrt(trace["force_x"] ** 2 + trace["force_y"] ** 2 + trace["force_z"] ** 2)
     assert force.max() <= 0.5 * (1 + 1e-12)
     assert summary["clamped_force_ticks"] > 0  # the clamp was reached, not only respected
+
+
+def test_a_session_moves_the_scenes_bodies_as_the_command_line_does(tmp_path):
+    """The crank (an MJCF mechanism of two bodies): a session's run gives `proxima run`'s trace,
+    stepping by hand gives the same ticks, and the bodies end where the command line's
+    --bodies-out leaves them."""
+    scene = os.path.join(SOURCE, "Data", "Scenes", "crank.json")
+    path = os.path.join(SOURCE, "Data", "Paths", "Bodies", "crank-turn.csv")
+    trace_file = str(tmp_path / "trace.csv")
+    poses_file = str(tmp_path / "poses.csv")
+    proxima_cli("run", "--scene", scene, "--path", path, "--out", trace_file,
+                "--bodies-out", poses_file)
+    reference = read_cli_trace(trace_file)
+    session = proxima.Session(scene=scene)
+    assert len(session.bodies) == 2
+    assert numpy.array_equal(session.bodies[0]["rotation"], numpy.eye(3))
+    trace = session.run(path)
+    for column in ("proxy_x", "proxy_z", "force_x", "force_z", "contacts", "flags"):
+        assert numpy.array_equal(trace[column], reference[column]), column
+    assert reference["contacts"].max() > 0
+    # The handle went round about y: its last pose is the one the command line wrote.
+    last = numpy.genfromtxt(poses_file, delimiter=",", names=True)[-2:]
+    for body, row in zip(session.bodies, last):
+        assert body["object"] == int(row["object"])
+        assert numpy.array_equal(body["translation"], [row["x"], row["y"], row["z"]])
+        w, x, y, z = row["qw"], row["qx"], row["qy"], row["qz"]
+        rotation = numpy.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                                [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                                [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+        assert numpy.allclose(body["rotation"], rotation, atol=1e-12)
+    # By hand, on a fresh session, at the fingers the run's device gave: the same ticks.
+    fingers = numpy.column_stack([reference["finger_x"], reference["finger_y"],
+                                  reference["finger_z"]])[:1500]
+    by_hand = proxima.Session(scene=scene)
+    stepped = [by_hand.step(finger) for finger in fingers]
+    assert numpy.array_equal([tick["proxy"][0] for tick in stepped], trace["proxy_x"][:1500])
+    assert numpy.array_equal([tick["force"][2] for tick in stepped], trace["force_z"][:1500])
