@@ -3,7 +3,8 @@
 with their scripted paths in Data/Paths/Bodies and plots what the bodies did beside the closed
 forms: the lever's spring moment k q against the moment of the finger's push (they meet when it
 settles: k q = F L), and the pendulum's and the test mass's swings after release against the
-periods 2 pi sqrt(I / m g d) and 2 pi / (sqrt(k / m) sqrt(1 - zeta^2)).
+periods 2 pi sqrt(I / m g d) and 2 pi / (sqrt(k / m) sqrt(1 - zeta^2)); and the crank (an MJCF
+mechanism) turned a whole turn, the moment of the push against c q' + m g d sin q.
 
 Usage: Tools/dynamics.py [--proxima build/bin/proxima] [--out Documentation/Figures/dynamics.png]
 """
@@ -50,7 +51,7 @@ def main():
     parser.add_argument("--out", default="Documentation/Figures/dynamics.png")
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="dynamics-")
-    fig, (lever_axes, swing_axes) = plt.subplots(2, 1, figsize=(9, 7))
+    fig, (lever_axes, swing_axes, crank_axes) = plt.subplots(3, 1, figsize=(9, 10))
 
     # The lever: hinge along x at y = -0.1 m, torsional spring 2 N m/rad.
     trace, bodies = run(args.proxima, work, "lever", "lever-press-hold")
@@ -100,6 +101,36 @@ def main():
     swing_axes.set_xlabel("time (s)")
     swing_axes.set_title("Pushed, then released: they swing at their closed-form periods")
     swing_axes.legend(loc="upper right", fontsize=8)
+
+    # The crank (Data/Scenes/crank.xml): aluminium arm and handle hanging from a hinge about y,
+    # damped 0.03 N m s/rad; the push's moment about the hinge against what turning it asks.
+    aluminium = 2700.0
+    arm_mass = aluminium * 0.02 * 0.008 * 0.12
+    handle_mass = aluminium * 0.016 * 0.03 * 0.016
+    weight_moment = 9.81 * (arm_mass * 0.05 + handle_mass * 0.1)
+    crank_damping = 0.03
+    trace, bodies = run(args.proxima, work, "crank", "crank-turn")
+    arm = [body for body in bodies if body["object"] == 0]
+    times, push, asked = [], [], []
+    for k in range(1, len(trace) - 1):
+        row = trace[k]
+        magnitude = math.hypot(row["force_x"], row["force_z"])
+        if not (0.2 <= row["t"] <= 2.45) or magnitude == 0.0:
+            continue
+        contact_x = row["proxy_x"] - 0.001 * row["force_x"] / magnitude
+        contact_z = row["proxy_z"] - 0.001 * row["force_z"] / magnitude
+        # (r x F)_y with F the force on the crank, -force.
+        times.append(row["t"])
+        push.append(-(contact_z * row["force_x"] - contact_x * row["force_z"]))
+        rate = (arm[k + 1]["q"] - arm[k - 1]["q"]) / 0.002
+        asked.append(crank_damping * rate + weight_moment * math.sin(arm[k]["q"]))
+    crank_axes.plot(times, push, lw=1.2, label="moment of the finger's push (r x F)")
+    crank_axes.plot(times, asked, lw=1.0, ls="--", label="c q' + m g d sin q (closed form)")
+    crank_axes.set_xlabel("time (s)")
+    crank_axes.set_ylabel("N m")
+    crank_axes.set_title("Crank (MJCF: arm and handle) turned at pi rad/s against its weight and "
+                         "damping")
+    crank_axes.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
     fig.savefig(args.out, dpi=110)
     print("wrote", args.out)
