@@ -2,16 +2,16 @@
 
 #include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
+#include "Net/Private/ServerChannel.h"
 #include "Net/Private/TickColumns.h"
+#include "Net/Private/TokenCheck.h"
 
 #include "proxima_remote.grpc.pb.h"
 
 #include <grpcpp/grpcpp.h>
 
-#include <chrono>
 #include <fstream>
 #include <iterator>
-#include <limits>
 
 namespace proxima
 {
@@ -76,33 +76,12 @@ std::string runRemotely(const std::string& server, const std::string& token,
   }
   message.set_trace_name(request.traceName);
 
-  grpc::ChannelArguments arguments;
-  arguments.SetMaxSendMessageSize(std::numeric_limits<int>::max());
-  const auto channel =
-    grpc::CreateCustomChannel(server, grpc::InsecureChannelCredentials(), arguments);
-  // A refused connection (nothing listens there) is known at once: gRPC's channel goes to
-  // TRANSIENT_FAILURE and would retry with backoff until the deadline, so the client stops at the
-  // first failure rather than waiting out the 10 s left for a slow network to connect.
-  const auto deadline = std::chrono::system_clock::now() + std::chrono::seconds(10);
-  for (grpc_connectivity_state state = channel->GetState(true); state != GRPC_CHANNEL_READY;
-       state = channel->GetState(true))
-  {
-    if (state == GRPC_CHANNEL_TRANSIENT_FAILURE || state == GRPC_CHANNEL_SHUTDOWN)
-    {
-      throw InputError("--server", "no Proxima server answers at " + server +
-                                     " (the connection failed: is `proxima serve` running there?)");
-    }
-    if (!channel->WaitForStateChange(state, deadline))
-    {
-      throw InputError("--server", "no Proxima server answers at " + server +
-                                     " within 10 s (is `proxima serve` running there?)");
-    }
-  }
+  const auto channel = detail::connectToServer(server);
   const auto stub = net::RemoteRuns::NewStub(channel);
   grpc::ClientContext context;
   if (!token.empty())
   {
-    context.AddMetadata("proxima-token", token);
+    context.AddMetadata(detail::kTokenMetadata, token);
   }
   std::string summary;
   const auto reader = stub->Run(&context, message);

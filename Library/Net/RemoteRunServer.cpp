@@ -1,12 +1,15 @@
 #include "Net/RemoteRuns.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "Net/Private/LiveHapticService.h"
 #include "Net/Private/RunRequestPlay.h"
+#include "Net/Private/TokenCheck.h"
 
 #include "proxima_remote.grpc.pb.h"
 
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <utility>
 
 namespace proxima
@@ -36,7 +39,7 @@ public:
   grpc::Status Run(grpc::ServerContext* context, const net::RunRequest* request,
                    grpc::ServerWriter<net::RunReply>* writer) override
   {
-    if (!tokenAccepted(*context))
+    if (!detail::tokenAccepted(*context, m_token))
     {
       return {grpc::StatusCode::UNAUTHENTICATED, "the server refused the token (missing or wrong)"};
     }
@@ -46,28 +49,6 @@ public:
   }
 
 private:
-  bool tokenAccepted(const grpc::ServerContext& context) const
-  {
-    if (m_token.empty())
-    {
-      return true;
-    }
-    const auto& metadata = context.client_metadata();
-    const auto found = metadata.find("proxima-token");
-    if (found == metadata.end() || found->second.size() != m_token.size())
-    {
-      return false;
-    }
-    // Every character compared, whatever differs first: no timing hint of a partial match.
-    unsigned difference = 0;
-    for (std::size_t i = 0; i < m_token.size(); ++i)
-    {
-      difference |= static_cast<unsigned char>(found->second.data()[i]) ^
-                    static_cast<unsigned char>(m_token[i]);
-    }
-    return difference == 0;
-  }
-
   std::string m_token;
   RunLimits m_limits;
 };
@@ -76,6 +57,7 @@ private:
 struct RemoteRunServer::Impl
 {
   std::unique_ptr<RemoteRunsService> service;
+  std::unique_ptr<detail::LiveHapticService> live;
   std::unique_ptr<grpc::Server> server;
   int port = 0;
 };
@@ -95,6 +77,15 @@ RemoteRunServer::RemoteRunServer(const RemoteServerSettings& settings)
   builder.AddListeningPort(settings.listen, grpc::InsecureServerCredentials(), &m_impl->port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(settings.maxRequestBytes));
   builder.RegisterService(m_impl->service.get());
+  if (settings.runtime != nullptr)
+  {
+    detail::ModelLimits limits;
+    limits.maxTriangles = settings.maxModelTriangles;
+    limits.maxPoints = settings.maxModelTriangles;
+    m_impl->live = std::make_unique<detail::LiveHapticService>(
+      *settings.runtime, settings.liveProxy, settings.token, limits);
+    builder.RegisterService(m_impl->live.get());
+  }
   m_impl->server = builder.BuildAndStart();
   if (!m_impl->server || m_impl->port == 0)
   {
@@ -115,9 +106,15 @@ int RemoteRunServer::port() const
 
 void RemoteRunServer::shutdown()
 {
+  if (m_impl->live)
+  {
+    m_impl->live->stop();
+  }
   if (m_impl->server)
   {
-    m_impl->server->Shutdown();
+    // The state streams see the stop within a sample; a call still running after 2 s is
+    // cancelled.
+    m_impl->server->Shutdown(std::chrono::system_clock::now() + std::chrono::seconds(2));
   }
 }
 

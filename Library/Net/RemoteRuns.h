@@ -5,15 +5,19 @@
 #pragma once
 
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Proxy/ProxyParameters.h"
 #include "Runtime/HapticState.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 
 namespace proxima
 {
+
+class ThreadedRuntime;
 
 struct RemoteServerSettings
 {
@@ -25,6 +29,14 @@ struct RemoteServerSettings
   std::size_t maxRequestBytes = std::size_t{512} << 20;
   /// The most ticks one run may ask for (a client's --max-ticks above it is refused).
   double maxTicks = 1e7;
+  /// The live haptic service (proxima_haptic.proto, Net/HapticClient.h) on the same port: with
+  /// a runtime (the server's device and threads, which must outlive the server), clients upload
+  /// models into it and follow its state. Null serves remote runs only.
+  ThreadedRuntime* runtime = nullptr;
+  /// The proxy of the uploaded models (radius, skin, iteration cap).
+  ProxyParameters liveProxy;
+  /// The most triangles (and points) of one uploaded model.
+  std::uint64_t maxModelTriangles = 20'000'000;
 };
 
 /// True for 127.0.0.1, localhost and ::1 (with or without brackets), with any port.
@@ -42,7 +54,8 @@ public:
 
   /// The port bound.
   int port() const;
-  /// Stops taking runs and ends those in progress (they end with an error).
+  /// Stops taking runs and ends those in progress (they end with an error) and the state
+  /// streams.
   void shutdown();
   /// Blocks until shutdown.
   void wait();

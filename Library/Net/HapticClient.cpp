@@ -1,0 +1,402 @@
+#include "Net/HapticClient.h"
+
+#include "IO/InputChecks/InputError.h"
+#include "IO/Mesh/MeshReader.h"
+#include "Net/Private/ServerChannel.h"
+#include "Net/Private/TokenCheck.h"
+
+#include "proxima_haptic.grpc.pb.h"
+
+#include <grpcpp/grpcpp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace proxima
+{
+
+namespace
+{
+// A's motion after B's: p -> A(B(p)).
+RigidTransform compose(const RigidTransform& a, const RigidTransform& b)
+{
+  RigidTransform out;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.row[r][c] =
+        a.row[r].x * b.row[0][c] + a.row[r].y * b.row[1][c] + a.row[r].z * b.row[2][c];
+    }
+  }
+  out.translation = a.apply(b.translation);
+  return out;
+}
+
+// At most this many points or triangles in one message (a few megabytes): a model of any size
+// goes as a stream of bounded messages.
+constexpr std::size_t kPartItems = 65536;
+
+Vec3 fromMessage(const net::Vector3& v)
+{
+  return Vec3{v.x(), v.y(), v.z()};
+}
+
+struct PendingShape
+{
+  std::string name;
+  ShapeMaterialSpec material;
+  TriangleSoup soup;
+};
+
+void throwForStatus(const grpc::Status& status, const std::string& server)
+{
+  switch (status.error_code())
+  {
+    case grpc::StatusCode::OK: return;
+    case grpc::StatusCode::INVALID_ARGUMENT: throw std::invalid_argument(status.error_message());
+    case grpc::StatusCode::UNAUTHENTICATED:
+      throw InputError("--token-file", status.error_message());
+    case grpc::StatusCode::UNIMPLEMENTED:
+      throw InputError("--server", "the server at " + server +
+                                     " owns no device (start it with proxima serve --device)");
+    case grpc::StatusCode::UNAVAILABLE:
+      throw InputError("--server",
+                       "the server at " + server + " went away (" + status.error_message() + ")");
+    default:
+      throw std::runtime_error("the server at " + server + " failed: " + status.error_message());
+  }
+}
+} // namespace
+
+struct HapticClient::Impl
+{
+  std::string server;
+  std::string token;
+  std::shared_ptr<grpc::Channel> channel;
+  std::unique_ptr<net::HapticServer::Stub> stub;
+
+  std::vector<RigidTransform> stack{RigidTransform{}};
+  ShapeMaterialSpec material;
+  std::vector<PendingShape> shapes;
+  bool inShape = false;
+  bool haveNormal = false;
+  bool haveTexCoord = false;
+  Vec3 currentNormal;
+  TexCoord currentTexCoord;
+
+  std::thread streamThread;
+  std::unique_ptr<grpc::ClientContext> streamContext;
+  std::mutex streamMutex;
+  std::string streamEnd;
+  bool stopAsked = false;
+
+  void addToken(grpc::ClientContext& context) const
+  {
+    if (!token.empty())
+    {
+      context.AddMetadata(detail::kTokenMetadata, token);
+    }
+  }
+  RigidTransform& top() { return stack.back(); }
+  PendingShape& shape()
+  {
+    if (!inShape)
+    {
+      throw std::logic_error("HapticClient: vertices, normals and triangles go between "
+                             "beginShape and endShape");
+    }
+    return shapes.back();
+  }
+};
+
+HapticClient::HapticClient(const std::string& server, const std::string& token)
+  : m_impl(std::make_unique<Impl>())
+{
+  m_impl->server = server;
+  m_impl->token = token;
+  m_impl->channel = detail::connectToServer(server);
+  m_impl->stub = net::HapticServer::NewStub(m_impl->channel);
+}
+
+HapticClient::~HapticClient()
+{
+  stopStateStream();
+}
+
+void HapticClient::loadIdentity()
+{
+  m_impl->top() = RigidTransform{};
+}
+
+void HapticClient::pushMatrix()
+{
+  m_impl->stack.push_back(m_impl->top());
+}
+
+void HapticClient::popMatrix()
+{
+  if (m_impl->stack.size() == 1)
+  {
+    throw std::logic_error("HapticClient::popMatrix: more pops than pushes");
+  }
+  m_impl->stack.pop_back();
+}
+
+void HapticClient::multMatrix(const RigidTransform& transform)
+{
+  m_impl->top() = compose(m_impl->top(), transform);
+}
+
+void HapticClient::translate(const Vec3& offset)
+{
+  RigidTransform move;
+  move.translation = offset;
+  multMatrix(move);
+}
+
+void HapticClient::rotate(double degrees, const Vec3& axis)
+{
+  const double length = norm(axis);
+  if (!(length > 0.0))
+  {
+    throw std::invalid_argument("HapticClient::rotate: the axis is zero");
+  }
+  const double half = degrees * M_PI / 360.0;
+  const Vec3 a = axis * (std::sin(half) / length);
+  multMatrix(RigidTransform::fromQuaternion(std::cos(half), a.x, a.y, a.z, Vec3{}));
+}
+
+void HapticClient::material(const ShapeMaterialSpec& material)
+{
+  m_impl->material = material;
+}
+
+void HapticClient::beginShape(const std::string& name)
+{
+  if (m_impl->inShape)
+  {
+    throw std::logic_error("HapticClient::beginShape: the last shape was not ended");
+  }
+  m_impl->shapes.push_back(PendingShape{name, m_impl->material, {}});
+  m_impl->inShape = true;
+  m_impl->haveNormal = false;
+  m_impl->haveTexCoord = false;
+}
+
+void HapticClient::normal(const Vec3& normal)
+{
+  m_impl->shape();
+  m_impl->currentNormal = m_impl->top().rotate(normal);
+  m_impl->haveNormal = true;
+}
+
+void HapticClient::texCoord(double u, double v)
+{
+  m_impl->shape();
+  m_impl->currentTexCoord = TexCoord{u, v};
+  m_impl->haveTexCoord = true;
+}
+
+void HapticClient::vertex(const Vec3& position)
+{
+  TriangleSoup& soup = m_impl->shape().soup;
+  soup.points.push_back(m_impl->top().apply(position));
+  if (m_impl->haveNormal)
+  {
+    soup.pointNormals.push_back(m_impl->currentNormal);
+  }
+  if (m_impl->haveTexCoord)
+  {
+    soup.texCoords.push_back(m_impl->currentTexCoord);
+  }
+}
+
+void HapticClient::triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c)
+{
+  m_impl->shape().soup.triangles.push_back({a, b, c});
+}
+
+void HapticClient::endShape()
+{
+  m_impl->shape();
+  m_impl->inShape = false;
+}
+
+void HapticClient::mesh(const std::string& file, double scale, const std::string& name)
+{
+  if (m_impl->inShape)
+  {
+    throw std::logic_error("HapticClient::mesh: inside a shape");
+  }
+  TriangleSoup soup = readMeshFile(file, scale);
+  for (Vec3& point : soup.points)
+  {
+    point = m_impl->top().apply(point);
+  }
+  for (Vec3& normal : soup.pointNormals)
+  {
+    normal = m_impl->top().rotate(normal);
+  }
+  m_impl->shapes.push_back(
+    PendingShape{name.empty() ? file : name, m_impl->material, std::move(soup)});
+}
+
+std::size_t HapticClient::pendingShapes() const
+{
+  return m_impl->shapes.size();
+}
+
+ModelReceiptInfo HapticClient::commit()
+{
+  if (m_impl->inShape)
+  {
+    throw std::logic_error("HapticClient::commit: the last shape was not ended");
+  }
+  grpc::ClientContext context;
+  m_impl->addToken(context);
+  net::ModelReceipt receipt;
+  const auto writer = m_impl->stub->UploadModel(&context, &receipt);
+  bool open = true;
+  for (std::size_t index = 0; open && index < m_impl->shapes.size(); ++index)
+  {
+    const PendingShape& shape = m_impl->shapes[index];
+    const TriangleSoup& soup = shape.soup;
+    const std::size_t parts = std::max<std::size_t>(
+      1, (std::max(soup.points.size(), soup.triangles.size()) + kPartItems - 1) / kPartItems);
+    for (std::size_t p = 0; open && p < parts; ++p)
+    {
+      net::ModelUpload upload;
+      net::ShapePart& part = *upload.mutable_shape();
+      part.set_shape(static_cast<std::uint32_t>(index));
+      if (p == 0)
+      {
+        part.set_name(shape.name);
+        net::ShapeMaterial& material = *part.mutable_material();
+        material.set_stiffness(shape.material.stiffness);
+        material.set_static_friction(shape.material.staticFriction);
+        material.set_dynamic_friction(shape.material.dynamicFriction);
+        material.set_viscosity(shape.material.viscosity);
+      }
+      const std::size_t begin = p * kPartItems;
+      for (std::size_t i = begin; i < std::min(soup.points.size(), begin + kPartItems); ++i)
+      {
+        part.add_points(soup.points[i].x);
+        part.add_points(soup.points[i].y);
+        part.add_points(soup.points[i].z);
+        if (!soup.pointNormals.empty())
+        {
+          part.add_normals(soup.pointNormals[i].x);
+          part.add_normals(soup.pointNormals[i].y);
+          part.add_normals(soup.pointNormals[i].z);
+        }
+        if (!soup.texCoords.empty())
+        {
+          part.add_texture_coordinates(soup.texCoords[i].u);
+          part.add_texture_coordinates(soup.texCoords[i].v);
+        }
+      }
+      for (std::size_t i = begin; i < std::min(soup.triangles.size(), begin + kPartItems); ++i)
+      {
+        for (const std::uint32_t corner : soup.triangles[i])
+        {
+          part.add_triangles(corner);
+        }
+      }
+      open = writer->Write(upload);
+    }
+  }
+  if (open)
+  {
+    net::ModelUpload commit;
+    commit.set_commit(true);
+    writer->Write(commit);
+  }
+  writer->WritesDone();
+  throwForStatus(writer->Finish(), m_impl->server);
+  m_impl->shapes.clear();
+  ModelReceiptInfo info;
+  info.version = receipt.version();
+  info.shapes = receipt.shapes();
+  info.triangles = receipt.triangles();
+  info.buildMilliseconds = receipt.build_ms();
+  info.liveMilliseconds = receipt.live_ms();
+  return info;
+}
+
+void HapticClient::startStateStream(double rateHz, std::function<void(const LiveSample&)> onSample,
+                                    std::function<void(const TouchChange&)> onTouch)
+{
+  stopStateStream();
+  Impl& impl = *m_impl;
+  impl.streamContext = std::make_unique<grpc::ClientContext>();
+  impl.addToken(*impl.streamContext);
+  impl.stopAsked = false;
+  impl.streamEnd.clear();
+  impl.streamThread =
+    std::thread([&impl, rateHz, onSample = std::move(onSample), onTouch = std::move(onTouch)] {
+      net::StateRequest request;
+      request.set_rate_hz(rateHz);
+      const auto reader = impl.stub->StreamState(impl.streamContext.get(), request);
+      net::StateSample message;
+      while (reader->Read(&message))
+      {
+        LiveSample sample;
+        sample.tick = message.tick();
+        sample.time = message.t();
+        sample.finger = fromMessage(message.finger());
+        sample.proxy = fromMessage(message.proxy());
+        sample.force = fromMessage(message.force());
+        sample.contacts = message.contacts();
+        sample.shape = message.shape();
+        sample.flags = message.flags();
+        sample.modelVersion = message.model_version();
+        sample.droppedSamples = message.dropped_samples();
+        if (onTouch)
+        {
+          for (const net::TouchEvent& event : message.events())
+          {
+            onTouch(TouchChange{event.shape(), event.touched(), sample.time});
+          }
+        }
+        if (onSample)
+        {
+          onSample(sample);
+        }
+      }
+      const grpc::Status status = reader->Finish();
+      const std::lock_guard<std::mutex> lock(impl.streamMutex);
+      if (!impl.stopAsked)
+      {
+        impl.streamEnd = status.ok() ? "the server ended the stream"
+                                     : "the stream failed: " + status.error_message();
+      }
+    });
+}
+
+std::string HapticClient::stateStreamEnd() const
+{
+  const std::lock_guard<std::mutex> lock(m_impl->streamMutex);
+  return m_impl->streamEnd;
+}
+
+std::string HapticClient::stopStateStream()
+{
+  Impl& impl = *m_impl;
+  if (!impl.streamThread.joinable())
+  {
+    return impl.streamEnd;
+  }
+  {
+    const std::lock_guard<std::mutex> lock(impl.streamMutex);
+    impl.stopAsked = impl.streamEnd.empty();
+  }
+  impl.streamContext->TryCancel();
+  impl.streamThread.join();
+  return impl.streamEnd;
+}
+
+} // namespace proxima

@@ -1,0 +1,136 @@
+// The application's side of the live haptic server (paper section 7's "HL", a GL-like network
+// library; Documentation/Server.md): shapes made of vertices and triangles under a stack of
+// transforms, with materials, or read from mesh files, sent to `proxima serve --device` as a
+// model that is swapped in only when it is committed and built there; and the proxy, finger,
+// force and touch events streamed back at the rate asked for. gRPC stays in HapticClient.cpp.
+//
+//   HapticClient client("127.0.0.1:50051");
+//   client.translate({0.0, 0.0, -0.05});
+//   client.beginShape("floor");
+//   client.vertex({-1, -1, 0}); client.vertex({1, -1, 0}); client.vertex({0, 1, 0});
+//   client.triangle(0, 1, 2);
+//   client.endShape();
+//   client.commit();                       // live on the server when this returns
+//   client.startStateStream(100.0, [](const LiveSample& s) { draw(s.proxy); },
+//                           [](const TouchChange& t) { if (t.touched) beep(); });
+#pragma once
+
+#include "Core/RigidTransform.h"
+#include "Core/Vec3.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// What a shape's surface feels like: the factor on the servo's stiffness, friction and
+/// viscosity (N s/m), as a scene file's material.
+struct ShapeMaterialSpec
+{
+  double stiffness = 1.0;
+  double staticFriction = 0.0;
+  double dynamicFriction = 0.0;
+  double viscosity = 0.0;
+};
+
+/// The server's answer to a commit.
+struct ModelReceiptInfo
+{
+  /// The model's scene version in the server's runtime (samples carry it).
+  std::uint64_t version = 0;
+  std::uint32_t shapes = 0;
+  std::uint64_t triangles = 0;
+  /// Building the sphere trees there, and from then until the proxy loop used the model (-1 if
+  /// it did not within 5 s, e.g. a runtime that has stopped).
+  double buildMilliseconds = 0.0;
+  double liveMilliseconds = 0.0;
+};
+
+/// One sample of the server's state.
+struct LiveSample
+{
+  std::uint64_t tick = 0;
+  double time = 0.0;
+  Vec3 finger;
+  Vec3 proxy;
+  Vec3 force;
+  int contacts = 0;
+  /// The shape of the first contact, -1 for none.
+  int shape = -1;
+  std::uint32_t flags = 0;
+  std::uint64_t modelVersion = 0;
+  /// Samples the server could not send on time because this client read too slowly, so far.
+  std::uint64_t droppedSamples = 0;
+};
+
+/// A shape's touch began or ended (seen between two samples).
+struct TouchChange
+{
+  int shape = 0;
+  bool touched = false;
+  double time = 0.0;
+};
+
+class HapticClient
+{
+public:
+  /// Connects to `server` (HOST:PORT). Throws InputError naming --server when nothing answers.
+  explicit HapticClient(const std::string& server, const std::string& token = {});
+  ~HapticClient();
+  HapticClient(const HapticClient&) = delete;
+  HapticClient& operator=(const HapticClient&) = delete;
+
+  // The transform stack (rigid motions), applied to the vertices and normals given after.
+  void loadIdentity();
+  void pushMatrix();
+  /// Throws std::logic_error on an empty stack.
+  void popMatrix();
+  void multMatrix(const RigidTransform& transform);
+  void translate(const Vec3& offset);
+  /// Right-handed about `axis` (any length but zero).
+  void rotate(double degrees, const Vec3& axis);
+
+  /// The material of the shapes begun after.
+  void material(const ShapeMaterialSpec& material);
+  /// A shape: its vertices (indices 0, 1, ... in order), the normal and texture coordinate that
+  /// go with each vertex given after them (all or none of a shape's vertices have them), and its
+  /// triangles by vertex index. Throws std::logic_error when the calls are out of order.
+  void beginShape(const std::string& name = {});
+  void normal(const Vec3& normal);
+  void texCoord(double u, double v);
+  void vertex(const Vec3& position);
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  void endShape();
+  /// A shape read from a mesh file here (IO/Mesh/MeshReader.h: its errors), scaled, then
+  /// transformed, with the current material.
+  void mesh(const std::string& file, double scale = 1.0, const std::string& name = {});
+  std::size_t pendingShapes() const;
+
+  /// Sends the shapes made since the last commit as the server's new model and returns once the
+  /// server has it live; they are then forgotten here. Throws std::invalid_argument with the
+  /// server's words for a model it refuses (the old model stays), InputError naming --server or
+  /// --token-file, std::runtime_error otherwise.
+  ModelReceiptInfo commit();
+
+  /// Streams the server's state at `rateHz` (1 to 1000) on a thread of this client's, handing
+  /// each sample and each touch change to the callbacks there, until stopStateStream (or the
+  /// client's end). One stream at a time.
+  void startStateStream(double rateHz, std::function<void(const LiveSample&)> onSample,
+                        std::function<void(const TouchChange&)> onTouch = {});
+  /// Why the stream ended by itself (the server went away, refused the rate...), empty while it
+  /// runs or after stopStateStream asked it to end. Any thread.
+  std::string stateStreamEnd() const;
+  /// Ends the stream and waits for its thread. Returns why it ended if not asked to (the server
+  /// went away, refused the rate...), empty otherwise.
+  std::string stopStateStream();
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace proxima

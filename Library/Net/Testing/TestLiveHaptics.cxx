@@ -1,0 +1,305 @@
+// The live haptic server (Documentation/Server.md; paper section 7) on loopback: a threaded
+// runtime reads a simulated finger that comes down and presses where the client's sphere will be;
+// a client builds the sphere with GL-like calls and commits it while the loops run, and follows
+// the proxy. Checked against geometry, not against the code under test: the proxy never comes
+// inside the sphere (its distance from the centre against the polyhedron's inscribed radius),
+// touch and untouch events come for the right shape, and an upload that dies or is malformed
+// leaves the old model live while the state goes on.
+#include "Geometry/ProceduralMeshes.h"
+#include "Net/HapticClient.h"
+#include "Net/RemoteRuns.h"
+#include "Runtime/SimulatedDevice.h"
+#include "Runtime/ThreadedRuntime.h"
+
+#include "proxima_haptic.grpc.pb.h"
+
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace proxima
+{
+namespace
+{
+using namespace std::chrono_literals;
+
+constexpr double kSphereRadius = 0.05;
+constexpr double kProxyRadius = 0.001;
+
+// Above the sphere-to-be for 0.5 s, then down 5 mm into it by 1 s, held there.
+FingerPath pressingFinger()
+{
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 0.08});
+  path.append(0.5, {0.0, 0.0, 0.08});
+  path.append(1.0, {0.0, 0.0, 0.045});
+  path.append(600.0, {0.0, 0.0, 0.045});
+  return path;
+}
+
+// The nearest a point on the icosphere's surface comes to its centre: its faces' planes.
+double inscribedRadius(const TriangleSoup& soup)
+{
+  double nearest = kSphereRadius;
+  for (const auto& t : soup.triangles)
+  {
+    const Vec3& a = soup.points[t[0]];
+    const Vec3 n = normalizedOrZero(cross(soup.points[t[1]] - a, soup.points[t[2]] - a));
+    nearest = std::min(nearest, std::abs(dot(n, a)));
+  }
+  return nearest;
+}
+
+class LiveServer : public ::testing::Test
+{
+protected:
+  LiveServer()
+    : m_device(pressingFinger())
+  {}
+
+  void SetUp() override
+  {
+    RuntimeSettings settings;
+    settings.servoRate = 1000.0;
+    settings.realtimeScheduling = false;
+    m_runtime = std::make_unique<ThreadedRuntime>(m_device, ServoParameters{}, settings);
+    ProxyParameters proxy;
+    proxy.radius = kProxyRadius;
+    // Nothing to touch until a client uploads.
+    m_runtime->publishScene(std::make_shared<CollisionScene>(), proxy, {0.0, 0.0, 0.08});
+    std::string message;
+    ASSERT_TRUE(m_runtime->start(message)) << message;
+    RemoteServerSettings server;
+    server.listen = "127.0.0.1:0";
+    server.runtime = m_runtime.get();
+    server.liveProxy = proxy;
+    m_server = std::make_unique<RemoteRunServer>(server);
+    m_address = "127.0.0.1:" + std::to_string(m_server->port());
+  }
+
+  void TearDown() override
+  {
+    m_server->shutdown();
+    m_runtime->stop();
+  }
+
+  // Sphere `subdivisions` at `center` as a client shape.
+  static void sphereShape(HapticClient& client, std::uint32_t subdivisions, const Vec3& center)
+  {
+    const TriangleSoup soup = makeIcosphere(subdivisions, kSphereRadius);
+    client.pushMatrix();
+    client.translate(center);
+    client.beginShape("sphere");
+    for (std::size_t i = 0; i < soup.points.size(); ++i)
+    {
+      client.normal(soup.pointNormals.empty() ? soup.points[i] : soup.pointNormals[i]);
+      client.vertex(soup.points[i]);
+    }
+    for (const auto& t : soup.triangles)
+    {
+      client.triangle(t[0], t[1], t[2]);
+    }
+    client.endShape();
+    client.popMatrix();
+  }
+
+  SimulatedDevice m_device;
+  std::unique_ptr<ThreadedRuntime> m_runtime;
+  std::unique_ptr<RemoteRunServer> m_server;
+  std::string m_address;
+};
+
+// What a client's stream gave, shared with its thread.
+struct Collected
+{
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<LiveSample> samples;
+  std::vector<TouchChange> touches;
+
+  template <typename Predicate>
+  bool waitFor(Predicate predicate, std::chrono::seconds limit = 60s)
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    return changed.wait_for(lock, limit, [&] { return predicate(*this); });
+  }
+};
+
+void follow(HapticClient& client, Collected& collected, double rate)
+{
+  client.startStateStream(
+    rate,
+    [&collected](const LiveSample& sample) {
+      const std::lock_guard<std::mutex> lock(collected.mutex);
+      collected.samples.push_back(sample);
+      collected.changed.notify_all();
+    },
+    [&collected](const TouchChange& touch) {
+      const std::lock_guard<std::mutex> lock(collected.mutex);
+      collected.touches.push_back(touch);
+    });
+}
+
+TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
+{
+  HapticClient client(m_address);
+  Collected collected;
+  follow(client, collected, 200.0);
+  sphereShape(client, 3, {});
+  const ModelReceiptInfo receipt = client.commit();
+  EXPECT_EQ(receipt.version, 2u); // the server's empty scene was 1
+  EXPECT_EQ(receipt.shapes, 1u);
+  EXPECT_EQ(receipt.triangles, 1280u);
+  EXPECT_GE(receipt.liveMilliseconds, 0.0);
+  std::printf("[ measured ] 1,280 triangles: built in %.2f ms, live %.2f ms later\n",
+              receipt.buildMilliseconds, receipt.liveMilliseconds);
+  // The finger presses 5 mm into the sphere: wait for half a second of it held there.
+  ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
+    int held = 0;
+    for (const LiveSample& s : c.samples)
+    {
+      held += s.modelVersion == receipt.version && s.contacts > 0 && s.time > 1.05 ? 1 : 0;
+    }
+    return held >= 100;
+  }));
+  EXPECT_EQ(client.stopStateStream(), "");
+  const double inscribed = inscribedRadius(makeIcosphere(3, kSphereRadius));
+  double deepest = 0.0;
+  int pressed = 0;
+  for (const LiveSample& s : collected.samples)
+  {
+    if (s.modelVersion < receipt.version)
+    {
+      EXPECT_EQ(s.contacts, 0); // nothing to touch before
+      continue;
+    }
+    deepest = std::max(deepest, inscribed + kProxyRadius - norm(s.proxy));
+    if (s.contacts > 0)
+    {
+      ++pressed;
+      EXPECT_EQ(s.shape, 0);
+      EXPECT_GT(s.force.z, 0.0); // out of the sphere
+      if (s.time > 1.05)
+      {
+        // Held 5 mm below the top: the spring kp (h + r - z_finger), with the surface's height h
+        // above the finger between the inscribed radius and the sphere's.
+        EXPECT_GE(s.force.z, 1000.0 * (inscribed + kProxyRadius - 0.045) - 1e-6);
+        EXPECT_LE(s.force.z, 1000.0 * (kSphereRadius + kProxyRadius - 0.045) + 1e-6);
+      }
+    }
+  }
+  std::printf("[ measured ] %zu samples, %d pressing; deepest the proxy came inside: %.3g m\n",
+              collected.samples.size(), pressed, deepest);
+  EXPECT_LE(deepest, 1e-9);
+  ASSERT_FALSE(collected.touches.empty());
+  EXPECT_EQ(collected.touches.front().shape, 0);
+  EXPECT_TRUE(collected.touches.front().touched);
+}
+
+TEST_F(LiveServer, ANewModelReplacesTheOldAndItsTouchEnds)
+{
+  HapticClient client(m_address);
+  Collected collected;
+  follow(client, collected, 500.0);
+  sphereShape(client, 2, {});
+  const std::uint64_t first = client.commit().version;
+  ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
+    return !c.samples.empty() && c.samples.back().modelVersion == first &&
+           c.samples.back().contacts > 0;
+  }));
+  // The same sphere 20 cm away: the finger touches nothing now.
+  sphereShape(client, 2, {0.2, 0.0, 0.0});
+  const ModelReceiptInfo second = client.commit();
+  EXPECT_EQ(second.version, first + 1);
+  ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
+    return c.samples.back().modelVersion == second.version && c.samples.back().contacts == 0 &&
+           c.touches.size() >= 2;
+  }));
+  client.stopStateStream();
+  EXPECT_TRUE(collected.touches[0].touched);
+  EXPECT_EQ(collected.touches[1].shape, 0);
+  EXPECT_FALSE(collected.touches[1].touched);
+  // Ticks kept coming, in order, through both swaps.
+  for (std::size_t i = 1; i < collected.samples.size(); ++i)
+  {
+    EXPECT_GE(collected.samples[i].tick, collected.samples[i - 1].tick);
+  }
+}
+
+TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
+{
+  HapticClient client(m_address);
+  sphereShape(client, 2, {});
+  const std::uint64_t live = client.commit().version;
+  const std::uint64_t tickBefore = m_runtime->latestState().tick;
+
+  // A client that dies in the middle of an upload: part of a 81,920-triangle sphere, then gone.
+  {
+    auto channel = grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials());
+    auto stub = net::HapticServer::NewStub(channel);
+    grpc::ClientContext context;
+    net::ModelReceipt receipt;
+    auto writer = stub->UploadModel(&context, &receipt);
+    const TriangleSoup big = makeIcosphere(6, kSphereRadius);
+    net::ModelUpload upload;
+    net::ShapePart& part = *upload.mutable_shape();
+    for (std::size_t i = 0; i < 10000; ++i)
+    {
+      part.add_points(big.points[i].x);
+      part.add_points(big.points[i].y);
+      part.add_points(big.points[i].z);
+    }
+    ASSERT_TRUE(writer->Write(upload));
+    context.TryCancel();
+    EXPECT_FALSE(writer->Finish().ok());
+  }
+  // A malformed model: a triangle beyond its points. Refused by name; nothing swapped.
+  client.beginShape("broken");
+  client.vertex({0.0, 0.0, 0.0});
+  client.vertex({0.1, 0.0, 0.0});
+  client.vertex({0.0, 0.1, 0.0});
+  client.triangle(0, 1, 7);
+  client.endShape();
+  try
+  {
+    client.commit();
+    ADD_FAILURE() << "a triangle index beyond the points was accepted";
+  }
+  catch (const std::invalid_argument& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("shape 0 ('broken')"), std::string::npos)
+      << error.what();
+  }
+  EXPECT_EQ(m_runtime->liveSceneVersion(), live);
+  // The haptic loops went on all along.
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (m_runtime->latestState().tick <= tickBefore && std::chrono::steady_clock::now() < deadline)
+  {
+    std::this_thread::sleep_for(1ms);
+  }
+  EXPECT_GT(m_runtime->latestState().tick, tickBefore);
+  EXPECT_EQ(m_runtime->latestState().sceneVersion, live);
+}
+
+TEST_F(LiveServer, BadRequestsAreRefusedInWords)
+{
+  HapticClient client(m_address);
+  client.startStateStream(5000.0, {});
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (client.stateStreamEnd().empty() && std::chrono::steady_clock::now() < deadline)
+  {
+    std::this_thread::sleep_for(1ms);
+  }
+  const std::string end = client.stopStateStream();
+  EXPECT_NE(end.find("rate_hz: must be from 1 to 1000"), std::string::npos) << end;
+  EXPECT_THROW(client.popMatrix(), std::logic_error);
+  EXPECT_THROW(client.vertex({0.0, 0.0, 0.0}), std::logic_error);
+  EXPECT_THROW(HapticClient("127.0.0.1:1"), std::exception);
+}
+
+} // namespace
+} // namespace proxima
