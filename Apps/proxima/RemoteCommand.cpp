@@ -2,6 +2,9 @@
 // `proxima serve` elsewhere (Documentation/Server.md). The mesh, path and texture files are sent
 // whole; the server plays the path in lockstep and streams the ticks back, which are written here
 // as a local run writes them: the same trace, bit for bit but for solve_ns.
+// `proxima remote --server HOST:PORT upload --mesh FILE ...`: the live server's client from the
+// shell (Net/HapticClient.h): the meshes become the model of a `proxima serve --device`, and
+// with --follow its state is streamed back for a while and written as CSV.
 #include "Command.h"
 #include "SceneOptions.h"
 #include "TokenFile.h"
@@ -11,9 +14,17 @@
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/TraceWriter.h"
+#include "Net/HapticClient.h"
 #include "Net/RemoteRuns.h"
 
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
 #include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
 
 namespace proxima::cli
 {
@@ -27,7 +38,87 @@ struct RemoteOptions
   std::string out;
   std::string summary;
   double maxTicks = kDefaultMaxTicks;
+  // upload
+  std::vector<std::string> meshes;
+  double scale = 1.0;
+  double follow = 0.0;
+  double sampleRate = 100.0;
+  std::string stateOut;
 };
+
+// One row of the state CSV.
+std::string stateRow(const LiveSample& s)
+{
+  char row[512];
+  std::snprintf(
+    row, sizeof row,
+    "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%u,%llu,%llu\n",
+    static_cast<unsigned long long>(s.tick), s.time, s.finger.x, s.finger.y, s.finger.z, s.proxy.x,
+    s.proxy.y, s.proxy.z, s.force.x, s.force.y, s.force.z, s.contacts, s.shape, s.flags,
+    static_cast<unsigned long long>(s.modelVersion),
+    static_cast<unsigned long long>(s.droppedSamples));
+  return row;
+}
+
+int upload(const RemoteOptions& options)
+{
+  if (!options.stateOut.empty() && !(options.follow > 0.0))
+  {
+    throw InputError("--state-out",
+                     "needs --follow SECONDS: the state is streamed while following");
+  }
+  const std::string token = options.tokenFile.empty() ? "" : readTokenFile(options.tokenFile);
+  HapticClient client(options.server, token);
+  for (const std::string& mesh : options.meshes)
+  {
+    client.mesh(mesh, options.scale);
+  }
+  std::mutex mutex;
+  std::ostringstream rows;
+  rows << "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
+          "contacts,shape,flags,model_version,dropped_samples\n";
+  std::size_t samples = 0;
+  nlohmann::ordered_json touches = nlohmann::ordered_json::array();
+  std::uint64_t dropped = 0;
+  const ModelReceiptInfo receipt = client.commit();
+  if (options.follow > 0.0)
+  {
+    client.startStateStream(
+      options.sampleRate,
+      [&](const LiveSample& sample) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        rows << stateRow(sample);
+        ++samples;
+        dropped = sample.droppedSamples;
+      },
+      [&](const TouchChange& touch) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        touches.push_back({{"t", touch.time}, {"shape", touch.shape}, {"touched", touch.touched}});
+      });
+    std::this_thread::sleep_for(std::chrono::duration<double>(options.follow));
+    const std::string ended = client.stopStateStream();
+    if (!ended.empty())
+    {
+      throw InputError("--server", ended);
+    }
+  }
+  if (!options.stateOut.empty())
+  {
+    writeFileAtomically(options.stateOut, rows.str());
+  }
+  nlohmann::ordered_json summary;
+  summary["server"] = options.server;
+  summary["model_version"] = receipt.version;
+  summary["shapes"] = receipt.shapes;
+  summary["triangles"] = receipt.triangles;
+  summary["build_ms"] = receipt.buildMilliseconds;
+  summary["live_ms"] = receipt.liveMilliseconds;
+  summary["samples"] = samples;
+  summary["dropped_samples"] = dropped;
+  summary["touches"] = touches;
+  writeStandardOutput(summary.dump(2) + "\n");
+  return kExitOk;
+}
 
 int runRemote(const RemoteOptions& options)
 {
@@ -76,7 +167,23 @@ Command addRemoteCommand(CLI::App& parent)
   addTickBudgetOption(*run, options->scene,
                       "Default: none, so that the trace is reproducible bit for bit");
   run->callback([options, run] { checkSceneOptions(options->scene, *run); });
-  return Command{app, [options] { return runRemote(*options); }};
+  CLI::App* uploadApp = app->add_subcommand(
+    "upload", "Make meshes the model of a proxima serve --device, and follow its state");
+  uploadApp->add_option("--mesh", options->meshes, "Mesh file, read here (repeat for more shapes)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  uploadApp->add_option("--scale", options->scale, "File units to metres (default 1)")
+    ->check(numberIn(kMeshScaleRange));
+  uploadApp
+    ->add_option("--follow", options->follow,
+                 "Seconds to stream the server's state after the model is live")
+    ->check(numberIn(ParameterRange{0.0, false, 86400.0, " s"}));
+  uploadApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
+    ->check(numberIn(ParameterRange{1.0, false, 1000.0, " Hz"}));
+  uploadApp->add_option("--state-out", options->stateOut, "The streamed state as CSV");
+  return Command{app, [options, uploadApp] {
+                   return uploadApp->parsed() ? upload(*options) : runRemote(*options);
+                 }};
 }
 
 } // namespace proxima::cli

@@ -1,13 +1,19 @@
-// `proxima serve`: the haptic server's side of remote runs (Documentation/Server.md). Listens on
-// --listen (loopback by default; any other address needs --token-file), plays each client's path
-// in lockstep and streams its ticks back, until SIGINT or SIGTERM.
+// `proxima serve`: the haptic server (Documentation/Server.md; paper section 7). Listens on
+// --listen (loopback by default; any other address needs --token-file), plays clients' paths in
+// lockstep and streams their ticks back; with --device it also owns the device and the threaded
+// runtime, and clients upload models into it and follow the proxy (Net/HapticClient.h). Until
+// SIGINT or SIGTERM.
 #include "Command.h"
+#include "DeviceChoice.h"
 #include "TokenFile.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/InputChecks/ParameterRanges.h"
+#include "IO/PathAndTrace/FingerPathFile.h"
 #include "Net/RemoteRuns.h"
+#include "Runtime/ServoRate.h"
+#include "Runtime/ThreadedRuntime.h"
 
 #include <csignal>
 #include <cstdio>
@@ -23,7 +29,62 @@ struct ServeOptions
   std::string listen = "127.0.0.1:50051";
   std::string tokenFile;
   double maxTicks = kDefaultMaxTicks;
+  // The live server: its device, and the servo and proxy its clients' models are felt with.
+  DeviceChoiceOptions device;
+  std::string path;
+  double rate = 1000.0;
+  double radius = 0.001;
+  double stiffness = 1000.0;
+  double maxForce = 10.0;
 };
+
+// The device and its threads, running on an empty scene until a client uploads a model.
+struct LiveRuntime
+{
+  std::unique_ptr<RunDevice> device;
+  std::unique_ptr<ThreadedRuntime> runtime;
+};
+
+std::unique_ptr<LiveRuntime> startLiveRuntime(const ServeOptions& options, ProxyParameters& proxy)
+{
+  if (!isServoRate(options.rate))
+  {
+    throw InputError("--rate", servoRateError(options.rate));
+  }
+  FingerPath path;
+  if (!options.path.empty())
+  {
+    path = readFingerPathFile(options.path);
+  }
+  else if (options.device.device == "sim")
+  {
+    throw InputError("--path", "--device sim plays a finger path: give --path");
+  }
+  else
+  {
+    path.append(0.0, Vec3{}); // the workspace centred on the origin
+  }
+  auto live = std::make_unique<LiveRuntime>();
+  live->device = std::make_unique<RunDevice>(options.device, path, 0);
+  ServoParameters servo;
+  servo.stiffness = options.stiffness;
+  servo.maxForce = options.maxForce;
+  RuntimeSettings settings;
+  settings.servoRate = options.rate;
+  live->runtime = std::make_unique<ThreadedRuntime>(live->device->device(), servo, settings);
+  proxy.radius = options.radius;
+  live->runtime->publishScene(std::make_shared<CollisionScene>(), proxy, path.positions.front());
+  std::string message;
+  if (!live->runtime->start(message))
+  {
+    throw std::runtime_error(message);
+  }
+  if (message.find("refused") != std::string::npos)
+  {
+    std::fprintf(stderr, "proxima serve: %s\n", message.c_str());
+  }
+  return live;
+}
 
 int serve(const ServeOptions& options)
 {
@@ -42,6 +103,12 @@ int serve(const ServeOptions& options)
   {
     settings.token = readTokenFile(options.tokenFile);
   }
+  std::unique_ptr<LiveRuntime> live;
+  if (!options.device.device.empty())
+  {
+    live = startLiveRuntime(options, settings.liveProxy);
+    settings.runtime = live->runtime.get();
+  }
   RemoteRunServer server(settings);
   // The port a script asked for with :0 is on standard output, one line, at once.
   const std::string host = options.listen.substr(0, options.listen.rfind(':'));
@@ -50,6 +117,10 @@ int serve(const ServeOptions& options)
   int signal = 0;
   sigwait(&stopSignals, &signal);
   server.shutdown();
+  if (live)
+  {
+    live->runtime->stop();
+  }
   return kExitOk;
 }
 } // namespace
@@ -68,6 +139,23 @@ Command addServeCommand(CLI::App& parent)
     ->add_option("--max-ticks", options->maxTicks,
                  "The most ticks one client's run may take (a run asking for more is refused)")
     ->check(tickCount())
+    ->capture_default_str();
+  // The live server (Documentation/Server.md, "The live server").
+  addDeviceOptions(*app, options->device);
+  options->device.device.clear(); // no device unless asked: remote runs only
+  app->add_option("--path", options->path,
+                  "With --device sim: the finger path it plays in real time (and holds at its "
+                  "end); with another device: where its workspace centre goes (its first row)");
+  app->add_option("--rate", options->rate, "With --device: the servo rate in Hz")
+    ->capture_default_str();
+  app->add_option("--radius", options->radius, "With --device: the proxy's radius in metres")
+    ->check(numberIn(kProxyRadiusRange))
+    ->capture_default_str();
+  app->add_option("--stiffness", options->stiffness, "With --device: the servo's kp in N/m")
+    ->check(numberIn(kStiffnessRange))
+    ->capture_default_str();
+  app->add_option("--max-force", options->maxForce, "With --device: the force clamp in N")
+    ->check(numberIn(kMaxForceRange))
     ->capture_default_str();
   return Command{app, [options] { return serve(*options); }};
 }

@@ -271,6 +271,7 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
   }
   catch (const std::invalid_argument& error)
   {
+    std::printf("[ refused  ] %s\n", error.what());
     EXPECT_NE(std::string(error.what()).find("shape 0 ('broken')"), std::string::npos)
       << error.what();
   }
@@ -283,6 +284,40 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
   }
   EXPECT_GT(m_runtime->latestState().tick, tickBefore);
   EXPECT_EQ(m_runtime->latestState().sceneVersion, live);
+}
+
+TEST_F(LiveServer, AClientThatStopsReadingLosesSamplesNotTheServersTime)
+{
+  auto channel = grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials());
+  auto stub = net::HapticServer::NewStub(channel);
+  grpc::ClientContext context;
+  net::StateRequest request;
+  request.set_rate_hz(1000.0);
+  auto reader = stub->StreamState(&context, request);
+  net::StateSample first;
+  ASSERT_TRUE(reader->Read(&first));
+  // Three seconds without reading: gRPC's flow control fills, the server's writes block.
+  std::this_thread::sleep_for(3s);
+  net::StateSample sample;
+  std::uint64_t dropped = 0;
+  std::uint64_t newest = first.tick();
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (dropped == 0 && std::chrono::steady_clock::now() < deadline && reader->Read(&sample))
+  {
+    dropped = sample.dropped_samples();
+    newest = sample.tick();
+  }
+  context.TryCancel();
+  reader->Finish();
+  std::printf("[ measured ] a reader 3 s late at 1 kHz: %llu samples dropped, samples from tick "
+              "%llu to %llu\n",
+              static_cast<unsigned long long>(dropped),
+              static_cast<unsigned long long>(first.tick()),
+              static_cast<unsigned long long>(newest));
+  EXPECT_GT(dropped, 0u);
+  // The haptic loops did not wait: the ticks went on at the servo's rate meanwhile (1 kHz: at
+  // least two thousand in three seconds, however slow the machine's scheduling).
+  EXPECT_GT(m_runtime->latestState().tick, first.tick() + 2000);
 }
 
 TEST_F(LiveServer, BadRequestsAreRefusedInWords)

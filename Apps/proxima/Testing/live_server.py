@@ -1,0 +1,124 @@
+#!/usr/bin/python3
+"""proxima.live-server: `proxima serve --device sim` owning the threaded runtime, and
+`proxima remote ... upload` making a mesh its live model and following the state.
+
+- The finger (a scripted path, played in real time) presses 5 mm into where the uploaded sphere
+  is: every state sample on the new model keeps the proxy outside the sphere (its distance from
+  the centre against the polyhedron's inscribed radius, computed here from the OBJ), and the held
+  force is kp times the spring's stretch.
+- A touch event for shape 0 comes; the model's version is the one the receipt gave.
+- A mesh the server must refuse leaves the model as it was; a server without a device says so.
+- SIGINT stops the server with status 0.
+Usage: live_server.py BUILD_DIR SOURCE_DIR
+"""
+import csv
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+
+build, source = sys.argv[1], sys.argv[2]
+proxima = os.path.join(build, "bin", "proxima")
+sphere = os.path.join(source, "Data", "Meshes", "icosphere-4.obj")
+work = tempfile.mkdtemp(prefix="proxima-live-test-")
+KP, RADIUS, HELD_Z = 1000.0, 0.001, 0.045
+
+
+def fail(message):
+    sys.exit(f"live-server: {message}")
+
+
+def start_server(*extra):
+    server = subprocess.Popen([proxima, "serve", "--listen", "127.0.0.1:0", *extra],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = server.stdout.readline()
+    if "listening on" not in line:
+        fail(f"the server did not start: {line!r} {server.stderr.read()}")
+    return server, line.strip().rsplit(" ", 1)[1]
+
+
+def stop(server):
+    server.send_signal(signal.SIGINT)
+    if server.wait(timeout=30) != 0:
+        fail(f"the server ended with {server.returncode}: {server.stderr.read()}")
+
+
+def inscribed_radius(obj):
+    points, nearest = [], math.inf
+    with open(obj) as stream:
+        for line in stream:
+            fields = line.split()
+            if fields and fields[0] == "v":
+                points.append(tuple(float(v) for v in fields[1:4]))
+            elif fields and fields[0] == "f":
+                a, b, c = (points[int(f.split("/")[0]) - 1] for f in fields[1:4])
+                u = [b[i] - a[i] for i in range(3)]
+                v = [c[i] - a[i] for i in range(3)]
+                n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+                length = math.sqrt(sum(x * x for x in n))
+                nearest = min(nearest, abs(sum(n[i] * a[i] for i in range(3))) / length)
+    return nearest
+
+
+path = os.path.join(work, "press.csv")
+with open(path, "w") as stream:
+    stream.write("t,x,y,z\n0,0,0,0.08\n0.5,0,0,0.08\n1.0,0,0,0.045\n600,0,0,0.045\n")
+server, address = start_server("--device", "sim", "--path", path)
+try:
+    state = os.path.join(work, "state.csv")
+    done = subprocess.run([proxima, "remote", "--server", address, "upload", "--mesh", sphere,
+                           "--follow", "2", "--rate", "200", "--state-out", state],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        fail(f"upload failed: {done.stderr}")
+    receipt = json.loads(done.stdout)
+    if receipt["model_version"] != 2 or receipt["triangles"] != 5120 or receipt["live_ms"] < 0:
+        fail(f"unexpected receipt {receipt}")
+    if not any(t["shape"] == 0 and t["touched"] for t in receipt["touches"]):
+        fail(f"no touch of shape 0: {receipt['touches']}")
+    inscribed = inscribed_radius(sphere)
+    with open(state) as stream:
+        rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(stream)]
+    on_model = [r for r in rows if r["model_version"] == 2]
+    held = [r for r in on_model if r["t"] > 1.05]
+    if len(held) < 50:
+        fail(f"only {len(held)} samples of the held finger on the model")
+    deepest = max(inscribed + RADIUS - math.sqrt(r["proxy_x"] ** 2 + r["proxy_y"] ** 2 +
+                                                 r["proxy_z"] ** 2) for r in on_model)
+    if deepest > 1e-9:
+        fail(f"the proxy came {deepest} m inside the sphere")
+    for r in held:
+        low, high = KP * (inscribed + RADIUS - HELD_Z), KP * (0.05 + RADIUS - HELD_Z)
+        if r["contacts"] < 1 or r["shape"] != 0 or not low - 1e-6 <= r["force_z"] <= high + 1e-6:
+            fail(f"held sample off: {r}")
+
+    # A bad mesh is refused by name, here, before anything is sent (the server's own checks of
+    # what it receives are LiveHapticTests'), and the next upload follows.
+    bad = os.path.join(work, "nan.obj")
+    with open(bad, "w") as stream:
+        stream.write("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n")
+    refused = subprocess.run([proxima, "remote", "--server", address, "upload", "--mesh", bad],
+                             capture_output=True, text=True)
+    if refused.returncode != 2 or "nan.obj" not in refused.stderr:
+        fail(f"a bad mesh was not refused by name: {refused.returncode} {refused.stderr}")
+    again = subprocess.run([proxima, "remote", "--server", address, "upload", "--mesh", sphere],
+                           capture_output=True, text=True)
+    if again.returncode != 0 or json.loads(again.stdout)["model_version"] != 3:
+        fail(f"the next upload did not follow: {again.stdout} {again.stderr}")
+finally:
+    stop(server)
+
+# A server that owns no device serves remote runs only, and says so to an upload.
+plain, address = start_server()
+try:
+    refused = subprocess.run([proxima, "remote", "--server", address, "upload", "--mesh", sphere],
+                             capture_output=True, text=True)
+    if refused.returncode != 2 or "owns no device" not in refused.stderr:
+        fail(f"an upload to a server without a device: {refused.returncode} {refused.stderr}")
+finally:
+    stop(plain)
+print(f"live server: {len(rows)} samples, {len(held)} held; deepest {deepest:.3g} m; "
+      f"model live {receipt['live_ms']:.2f} ms after a {receipt['build_ms']:.2f} ms build")
