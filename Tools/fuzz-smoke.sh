@@ -28,12 +28,12 @@ declare -A inputs=(
   [FuzzMeshReader-obj]=250000 [FuzzMeshReader-ply]=250000 [FuzzSceneFile]=200000
   [FuzzFingerPathFile]=400000 [FuzzProxySolver]=10000 [FuzzMeshReader-stl]=70000
   [FuzzMeshReader-off]=250000 [FuzzMeshReader-gltf]=300000 [FuzzMeshReader-glb]=400000
-  [FuzzMeshReader-vtp]=20000 [FuzzRunRequest]=5000)
+  [FuzzMeshReader-vtp]=20000 [FuzzRunRequest]=5000 [FuzzModelUpload]=500000)
 # VTP is back since IO/Mesh/Private/VtpChecks.cpp bounds the declared sizes and compression
 # headers by the file's bytes (its out-of-memory finding is replayed below).
 targets=(FuzzMeshReader-obj FuzzMeshReader-ply FuzzSceneFile FuzzFingerPathFile FuzzProxySolver
          FuzzMeshReader-stl FuzzMeshReader-off FuzzMeshReader-gltf FuzzMeshReader-glb
-         FuzzMeshReader-vtp FuzzRunRequest)
+         FuzzMeshReader-vtp FuzzRunRequest FuzzModelUpload)
 if [ -n "${FUZZ_TARGETS:-}" ]; then
   read -r -a targets <<<"$FUZZ_TARGETS"
 fi
