@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -78,6 +79,7 @@ int upload(const RemoteOptions& options)
   rows << "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
           "contacts,shape,flags,model_version,dropped_samples\n";
   std::size_t samples = 0;
+  std::vector<double> latencies;
   nlohmann::ordered_json touches = nlohmann::ordered_json::array();
   std::uint64_t dropped = 0;
   const ModelReceiptInfo receipt = client.commit();
@@ -89,6 +91,8 @@ int upload(const RemoteOptions& options)
         const std::lock_guard<std::mutex> lock(mutex);
         rows << stateRow(sample);
         ++samples;
+        latencies.push_back(
+          static_cast<double>(sample.receivedNanoseconds - sample.sentNanoseconds) / 1e6);
         dropped = sample.droppedSamples;
       },
       [&](const TouchChange& touch) {
@@ -115,6 +119,15 @@ int upload(const RemoteOptions& options)
   summary["live_ms"] = receipt.liveMilliseconds;
   summary["samples"] = samples;
   summary["dropped_samples"] = dropped;
+  // Server's write to this client's read (the two wall clocks: meaningful on one machine).
+  if (!latencies.empty())
+  {
+    std::sort(latencies.begin(), latencies.end());
+    const auto at = [&latencies](double q) {
+      return latencies[static_cast<std::size_t>(q * static_cast<double>(latencies.size() - 1))];
+    };
+    summary["latency_ms"] = {{"median", at(0.5)}, {"p99", at(0.99)}, {"max", latencies.back()}};
+  }
   summary["touches"] = touches;
   writeStandardOutput(summary.dump(2) + "\n");
   return kExitOk;

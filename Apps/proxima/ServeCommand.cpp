@@ -5,11 +5,13 @@
 // SIGINT or SIGTERM.
 #include "Command.h"
 #include "DeviceChoice.h"
+#include "LoopReport.h"
 #include "TokenFile.h"
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/InputChecks/ParameterRanges.h"
+#include "IO/Output/AtomicOutputFile.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Net/RemoteRuns.h"
 #include "Runtime/ServoRate.h"
@@ -36,6 +38,7 @@ struct ServeOptions
   double radius = 0.001;
   double stiffness = 1000.0;
   double maxForce = 10.0;
+  std::string summary;
 };
 
 // The device and its threads, running on an empty scene until a client uploads a model.
@@ -120,6 +123,21 @@ int serve(const ServeOptions& options)
   if (live)
   {
     live->runtime->stop();
+    // How the loops kept their deadlines while clients came and went (Documentation/Server.md).
+    const LoopStatistics servo = live->runtime->servoStatistics();
+    std::fprintf(stderr, "proxima serve: servo %s\n", deadlineLine(servo).c_str());
+    if (!options.summary.empty())
+    {
+      nlohmann::ordered_json summary;
+      summary["device"] = options.device.device;
+      summary["rate_hz"] = options.rate;
+      summary["model_version"] = live->runtime->liveSceneVersion();
+      summary["longest_model_install_us"] =
+        static_cast<double>(live->runtime->longestSceneInstallNanoseconds()) / 1e3;
+      summary["servo"] = loopJson(servo, live->runtime->servoScheduling());
+      summary["proxy"] = loopJson(live->runtime->proxyStatistics());
+      writeFileAtomically(options.summary, summary.dump(2) + "\n");
+    }
   }
   return kExitOk;
 }
@@ -157,6 +175,9 @@ Command addServeCommand(CLI::App& parent)
   app->add_option("--max-force", options->maxForce, "With --device: the force clamp in N")
     ->check(numberIn(kMaxForceRange))
     ->capture_default_str();
+  app->add_option("--summary", options->summary,
+                  "With --device: when stopped, write the servo's and the proxy loop's "
+                  "statistics to this JSON file");
   return Command{app, [options] { return serve(*options); }};
 }
 

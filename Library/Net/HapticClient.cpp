@@ -10,6 +10,7 @@
 #include <grpcpp/grpcpp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -345,6 +346,10 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
       while (reader->Read(&message))
       {
         LiveSample sample;
+        sample.receivedNanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                       std::chrono::system_clock::now().time_since_epoch())
+                                       .count();
+        sample.sentNanoseconds = message.sent_ns();
         sample.tick = message.tick();
         sample.time = message.t();
         sample.finger = fromMessage(message.finger());

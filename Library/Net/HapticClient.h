@@ -65,6 +65,11 @@ struct LiveSample
   std::uint64_t modelVersion = 0;
   /// Samples the server could not send on time because this client read too slowly, so far.
   std::uint64_t droppedSamples = 0;
+  /// The server's wall clock when it wrote the sample and this client's when it read it (ns
+  /// since 1970): their difference is the stream's latency where the clocks agree (one machine,
+  /// or synchronised ones).
+  std::int64_t sentNanoseconds = 0;
+  std::int64_t receivedNanoseconds = 0;
 };
 
 /// A shape's touch began or ended (seen between two samples).

@@ -146,6 +146,9 @@ grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
     }
     touched = now;
     sample.set_dropped_samples(dropped);
+    sample.set_sent_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                         std::chrono::system_clock::now().time_since_epoch())
+                         .count());
     if (!writer->Write(sample))
     {
       break; // the client went away
