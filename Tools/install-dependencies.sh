@@ -33,8 +33,10 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the format check of CI (Tools/check-format.sh, .clang-format)
   clang-format-14
-  # remote runs (Library/Net): gRPC, protobuf and their compilers
-  libgrpc++-dev libprotobuf-dev protobuf-compiler protobuf-compiler-grpc
+  # the haptic server (Library/Net): gRPC, protobuf and their compilers; the Python client's
+  # runtime (proxima.haptic_client, generated from the same .proto)
+  libgrpc++-dev libprotobuf-dev protobuf-compiler protobuf-compiler-grpc python3-grpcio
+  python3-protobuf
   # rigid bodies and mechanisms (Library/Dynamics)
   libmujoco-dev
   # the Python module (pybind11), the vtkHaptic* classes in VTK's Python, its tests (pytest)

@@ -5,8 +5,7 @@
 namespace proxima::cli
 {
 
-nlohmann::ordered_json loopJson(const LoopStatistics& statistics,
-                                const std::string& scheduling)
+nlohmann::ordered_json loopJson(const LoopStatistics& statistics, const std::string& scheduling)
 {
   nlohmann::ordered_json json;
   if (!scheduling.empty())

@@ -1,0 +1,88 @@
+"""proxima.haptic_client against `proxima serve --device sim`: the Python client of the live
+server, generated from the C++ client's .proto, uploads a sphere under a scripted finger that
+presses 5 mm into it, and follows the proxy: never inside the sphere (its distance from the
+centre against the polyhedron's inscribed radius), the held force within kp times the spring's
+stretch, a touch event for the shape; a malformed model is refused in the server's words."""
+import math
+import os
+import signal
+import subprocess
+
+import numpy
+import pytest
+
+from conftest import BUILD, SOURCE
+
+grpc = pytest.importorskip("grpc")
+from proxima.haptic_client import HapticClient  # noqa: E402 (after the skip)
+
+KP, RADIUS, HELD_Z = 1000.0, 0.001, 0.045
+
+
+def read_obj(file):
+    points, triangles = [], []
+    with open(file) as stream:
+        for line in stream:
+            fields = line.split()
+            if fields and fields[0] == "v":
+                points.append([float(v) for v in fields[1:4]])
+            elif fields and fields[0] == "f":
+                triangles.append([int(f.split("/")[0]) - 1 for f in fields[1:4]])
+    return numpy.array(points), numpy.array(triangles)
+
+
+@pytest.fixture
+def server(tmp_path):
+    path = tmp_path / "press.csv"
+    path.write_text("t,x,y,z\n0,0,0,0.08\n0.5,0,0,0.08\n1.0,0,0,0.045\n600,0,0,0.045\n")
+    process = subprocess.Popen([os.path.join(BUILD, "bin", "proxima"), "serve", "--listen",
+                                "127.0.0.1:0", "--device", "sim", "--path", str(path)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = process.stdout.readline()
+    assert "listening on" in line, process.stderr.read()
+    yield line.strip().rsplit(" ", 1)[1]
+    process.send_signal(signal.SIGINT)
+    assert process.wait(timeout=30) == 0
+
+
+def test_the_python_client_uploads_and_follows(server):
+    points, triangles = read_obj(os.path.join(SOURCE, "Data", "Meshes", "icosphere-4.obj"))
+    a, b, c = (points[triangles[:, i]] for i in range(3))
+    normals = numpy.cross(b - a, c - a)
+    inscribed = numpy.min(numpy.abs(numpy.sum(normals * a, axis=1)) /
+                          numpy.linalg.norm(normals, axis=1))
+    client = HapticClient(server)
+    client.push_matrix()
+    client.rotate(90.0, (0, 0, 1))  # a sphere about its centre: the same sphere, turned
+    client.shape(points, triangles, name="sphere")
+    client.pop_matrix()
+    receipt = client.commit()
+    assert receipt["version"] == 2 and receipt["triangles"] == 5120 and receipt["live_ms"] >= 0
+    held, events = [], []
+    for sample in client.stream(200.0):
+        events += sample["events"]
+        assert sample["latency_ms"] < 1000.0
+        if sample["model_version"] == receipt["version"]:
+            distance = numpy.linalg.norm(sample["proxy"])
+            assert distance >= inscribed + RADIUS - 1e-9
+            if sample["t"] > 1.05:
+                held.append(sample)
+        if len(held) >= 50:
+            break
+    assert (0, True) in events
+    for sample in held:
+        assert sample["contacts"] >= 1 and sample["shape"] == 0
+        assert KP * (inscribed + RADIUS - HELD_Z) - 1e-6 <= sample["force"][2]
+        assert sample["force"][2] <= KP * (0.05 + RADIUS - HELD_Z) + 1e-6
+    # A triangle beyond its points: refused by name, the sphere stays.
+    client.shape([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 7]], name="broken")
+    with pytest.raises(ValueError, match=r"shape 0 \('broken'\)"):
+        client.commit()
+    sample = next(client.stream(10.0))
+    assert sample["model_version"] == receipt["version"]
+    client.close()
+
+
+def test_no_server_is_a_connection_error():
+    with pytest.raises(ConnectionError, match="no Proxima server answers"):
+        HapticClient("127.0.0.1:1", timeout=2.0)
