@@ -288,7 +288,14 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
 
 TEST_F(LiveServer, AClientThatStopsReadingLosesSamplesNotTheServersTime)
 {
-  auto channel = grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials());
+  // A small receive window, not grown by bandwidth probing: the server's writes to a reader that
+  // stops block within a few hundred samples, whatever the machine's socket buffers (with the
+  // defaults, a loopback connection absorbs many seconds of samples before they do).
+  grpc::ChannelArguments arguments;
+  arguments.SetInt(GRPC_ARG_HTTP2_BDP_PROBE, 0);
+  arguments.SetInt(GRPC_ARG_HTTP2_STREAM_LOOKAHEAD_BYTES, 16384);
+  auto channel =
+    grpc::CreateCustomChannel(m_address, grpc::InsecureChannelCredentials(), arguments);
   auto stub = net::HapticServer::NewStub(channel);
   grpc::ClientContext context;
   net::StateRequest request;
