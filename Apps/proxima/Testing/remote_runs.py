@@ -21,6 +21,8 @@ import sys
 import time
 import tempfile
 
+import serve_process
+
 build, shared = sys.argv[1], sys.argv[2]
 proxima = os.path.join(build, "bin", "proxima")
 meshes, paths = os.path.join(shared, "meshes"), os.path.join(shared, "paths")
@@ -33,12 +35,7 @@ def fail(message):
 
 
 def start_server(*extra):
-    server = subprocess.Popen([proxima, "serve", "--listen", "127.0.0.1:0", *extra],
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    line = server.stdout.readline()
-    if "listening on" not in line:
-        fail(f"the server did not start: {line!r} {server.stderr.read()}")
-    return server, line.strip().rsplit(" ", 1)[1]
+    return serve_process.start_server(proxima, fail, *extra)
 
 
 def run(*arguments):
