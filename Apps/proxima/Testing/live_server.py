@@ -80,7 +80,9 @@ try:
     with open(state) as stream:
         rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(stream)]
     on_model = [r for r in rows if r["model_version"] == 2]
-    held = [r for r in on_model if r["t"] > 1.05]
+    # Held: the finger at rest (after 1 s), past the servo's 0.1 s ramp after the model's swap.
+    live = on_model[0]["t"] if on_model else 0.0
+    held = [r for r in on_model if r["t"] > max(1.05, live + 0.2)]
     if len(held) < 50:
         fail(f"only {len(held)} samples of the held finger on the model")
     deepest = max(inscribed + RADIUS - math.sqrt(r["proxy_x"] ** 2 + r["proxy_y"] ** 2 +
