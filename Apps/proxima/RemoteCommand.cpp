@@ -99,11 +99,18 @@ int upload(const RemoteOptions& options)
         const std::lock_guard<std::mutex> lock(mutex);
         touches.push_back({{"t", touch.time}, {"shape", touch.shape}, {"touched", touch.touched}});
       });
-    std::this_thread::sleep_for(std::chrono::duration<double>(options.follow));
+    // Until the time is up, or at once when the stream fails (a server that went away is an
+    // error now, not after the rest of --follow).
+    const auto end =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(options.follow);
+    while (std::chrono::steady_clock::now() < end && client.stateStreamEnd().empty())
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     const std::string ended = client.stopStateStream();
     if (!ended.empty())
     {
-      throw InputError("--server", ended);
+      throw InputError("--server", "the server at " + options.server + ": " + ended);
     }
   }
   if (!options.stateOut.empty())

@@ -8,6 +8,7 @@
   force is kp times the spring's stretch.
 - A touch event for shape 0 comes; the model's version is the one the receipt gave.
 - A mesh the server must refuse leaves the model as it was; a server without a device says so.
+- A follower of a server that is killed ends at once with an error naming --server.
 - SIGINT stops the server with status 0.
 Usage: live_server.py BUILD_DIR SOURCE_DIR
 """
@@ -19,6 +20,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 import serve_process
 
@@ -107,8 +109,27 @@ try:
                            capture_output=True, text=True)
     if again.returncode != 0 or json.loads(again.stdout)["model_version"] != 3:
         fail(f"the next upload did not follow: {again.stdout} {again.stderr}")
+
+    # The server killed while a client follows it: a clear error naming --server at once, not a
+    # wait until the end of --follow.
+    follower = subprocess.Popen([proxima, "remote", "--server", address, "upload", "--mesh", sphere,
+                                 "--follow", "60"], stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True)
+    time.sleep(1.5)
+    server.kill()
+    server.wait(timeout=30)
+    killed_at = time.monotonic()
+    try:
+        _, error = follower.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        follower.kill()
+        fail("a follower of a killed server did not end within 30 s")
+    waited = time.monotonic() - killed_at
+    if follower.returncode != 2 or "--server" not in error:
+        fail(f"a follower of a killed server: status {follower.returncode}, {error!r}")
 finally:
-    stop(server)
+    if server.poll() is None:
+        stop(server)
 
 # A server that owns no device serves remote runs only, and says so to an upload.
 plain, address = start_server()
@@ -120,4 +141,5 @@ try:
 finally:
     stop(plain)
 print(f"live server: {len(rows)} samples, {len(held)} held; deepest {deepest:.3g} m; "
-      f"model live {receipt['live_ms']:.2f} ms after a {receipt['build_ms']:.2f} ms build")
+      f"model live {receipt['live_ms']:.2f} ms after a {receipt['build_ms']:.2f} ms build; "
+      f"a follower of the killed server ended {waited:.2f} s later: {error.strip()}")
