@@ -1,5 +1,7 @@
 #include "Dynamics/BodyCoupling.h"
 
+#include "Dynamics/SymmetricEigenvalues.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -37,32 +39,6 @@ std::array<Vec3, 3> inertiaRows(const SolidMassProperties& mass)
 {
   const double* i = mass.inertia;
   return {Vec3{i[0], i[3], i[4]}, Vec3{i[3], i[1], i[5]}, Vec3{i[4], i[5], i[2]}};
-}
-
-// The least eigenvalue of a symmetric 3 x 3 matrix (the trigonometric closed form).
-double leastEigenvalue(const std::array<Vec3, 3>& a)
-{
-  const double offDiagonal = a[0].y * a[0].y + a[0].z * a[0].z + a[1].z * a[1].z;
-  if (offDiagonal == 0.0)
-  {
-    return std::min({a[0].x, a[1].y, a[2].z});
-  }
-  const double mean = (a[0].x + a[1].y + a[2].z) / 3.0;
-  const double spread =
-    std::sqrt(((a[0].x - mean) * (a[0].x - mean) + (a[1].y - mean) * (a[1].y - mean) +
-               (a[2].z - mean) * (a[2].z - mean) + 2.0 * offDiagonal) /
-              6.0);
-  std::array<Vec3, 3> b = a;
-  for (int k = 0; k < 3; ++k)
-  {
-    b[k][k] -= mean;
-    b[k] = b[k] / spread;
-  }
-  const double determinant = dot(b[0], cross(b[1], b[2]));
-  const double half = std::clamp(determinant / 2.0, -1.0, 1.0);
-  const double angle = std::acos(half) / 3.0;
-  // The three roots are mean + 2 spread cos(angle + 2 pi k / 3); k = 1 gives the least.
-  return mean + 2.0 * spread * std::cos(angle + 2.0 * M_PI / 3.0);
 }
 
 std::string figure(double value)
@@ -122,7 +98,7 @@ std::string couplingStabilityDefect(const BodyDescription& body, const TriangleM
     {
       farthest = std::max(farthest, squaredNorm(point - centre));
     }
-    const double least = leastEigenvalue(inertia);
+    const double least = symmetricEigenvalues(inertia)[0];
     const double inverse =
       (joint.type == JointType::Free ? 1.0 / mass.mass : 0.0) + farthest / std::max(least, 1e-300);
     effectiveMass = 1.0 / inverse;

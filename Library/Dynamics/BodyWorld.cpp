@@ -1,8 +1,11 @@
 #include "Dynamics/BodyWorld.h"
 
+#include "Dynamics/SymmetricEigenvalues.h"
+
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <cstdio>
@@ -445,34 +448,6 @@ BodyEnergy BodyWorld::bodyEnergy(std::size_t body)
   return energy;
 }
 
-namespace
-{
-// The largest eigenvalue of a symmetric positive semi-definite 3 x 3 matrix (row-major), by the
-// trigonometric closed form.
-double largestEigenvalue(const double a[9])
-{
-  const double offDiagonal = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
-  if (offDiagonal == 0.0)
-  {
-    return std::max({a[0], a[4], a[8]});
-  }
-  const double mean = (a[0] + a[4] + a[8]) / 3.0;
-  const double spread = std::sqrt(((a[0] - mean) * (a[0] - mean) + (a[4] - mean) * (a[4] - mean) +
-                                   (a[8] - mean) * (a[8] - mean) + 2.0 * offDiagonal) /
-                                  6.0);
-  double b[9];
-  for (int k = 0; k < 9; ++k)
-  {
-    b[k] = (a[k] - (k % 4 == 0 ? mean : 0.0)) / spread;
-  }
-  const double determinant = b[0] * (b[4] * b[8] - b[5] * b[7]) -
-                             b[1] * (b[3] * b[8] - b[5] * b[6]) +
-                             b[2] * (b[3] * b[7] - b[4] * b[6]);
-  const double angle = std::acos(std::clamp(determinant / 2.0, -1.0, 1.0)) / 3.0;
-  return mean + 2.0 * spread * std::cos(angle);
-}
-} // namespace
-
 double BodyWorld::leastEffectiveMass(std::size_t body, const std::vector<Vec3>& points)
 {
   const mjModel* model = m_model->model;
@@ -489,15 +464,17 @@ double BodyWorld::leastEffectiveMass(std::size_t body, const std::vector<Vec3>& 
     mj_jac(model, data, jacobian.data(), nullptr, at, m_ids[body]);
     // M^-1 J^T, a row per direction.
     mj_solveM(model, data, solved.data(), jacobian.data(), 3);
-    double mobility[9];
-    for (std::size_t r = 0; r < 3; ++r)
+    std::array<Vec3, 3> mobility;
+    for (int r = 0; r < 3; ++r)
     {
-      for (std::size_t c = 0; c < 3; ++c)
+      for (int c = 0; c < 3; ++c)
       {
-        mobility[3 * r + c] = mju_dot(jacobian.data() + r * nv, solved.data() + c * nv, model->nv);
+        mobility[static_cast<std::size_t>(r)][c] =
+          mju_dot(jacobian.data() + static_cast<std::size_t>(r) * nv,
+                  solved.data() + static_cast<std::size_t>(c) * nv, model->nv);
       }
     }
-    const double largest = largestEigenvalue(mobility);
+    const double largest = symmetricEigenvalues(mobility)[2];
     if (largest > 0.0)
     {
       least = std::min(least, 1.0 / largest);

@@ -1,9 +1,9 @@
 #include "IO/Scene/SceneBodies.h"
 
+#include "Core/Aabb.h"
 #include "IO/InputChecks/InputError.h"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 namespace proxima
@@ -97,38 +97,21 @@ std::unique_ptr<BodyCoupling> buildMechanism(const LoadedScene& loaded, const st
 // side; each body is watched by the centre of its object's box.
 void watchSceneBounds(const LoadedScene& loaded, BodyCoupling& bodies)
 {
-  const double huge = std::numeric_limits<double>::max();
-  Vec3 lower{huge, huge, huge};
-  Vec3 upper{-huge, -huge, -huge};
-  std::vector<Vec3> centres;
+  Aabb scene;
   for (const auto& object : loaded.scene->objects)
   {
-    Vec3 objectLower{huge, huge, huge};
-    Vec3 objectUpper{-huge, -huge, -huge};
-    for (const Vec3& point : object.mesh.points())
-    {
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        objectLower[axis] = std::min(objectLower[axis], point[axis]);
-        objectUpper[axis] = std::max(objectUpper[axis], point[axis]);
-      }
-    }
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      lower[axis] = std::min(lower[axis], objectLower[axis]);
-      upper[axis] = std::max(upper[axis], objectUpper[axis]);
-    }
-    centres.push_back((objectLower + objectUpper) * 0.5);
+    scene.expand(object.mesh.bounds().lower);
+    scene.expand(object.mesh.bounds().upper);
   }
-  const Vec3 size = upper - lower;
+  const Vec3 size = scene.extent();
   const double margin = std::max({size.x, size.y, size.z});
   std::vector<Vec3> references;
   for (std::size_t body = 0; body < bodies.numBodies(); ++body)
   {
-    references.push_back(centres[bodies.object(body)]);
+    references.push_back(loaded.scene->objects[bodies.object(body)].mesh.bounds().center());
   }
-  bodies.watchBounds(lower - Vec3{margin, margin, margin}, upper + Vec3{margin, margin, margin},
-                     references);
+  bodies.watchBounds(scene.lower - Vec3{margin, margin, margin},
+                     scene.upper + Vec3{margin, margin, margin}, references);
 }
 
 std::unique_ptr<BodyCoupling> buildSceneBodiesUnwatched(const LoadedScene& loaded, double kp,

@@ -1,5 +1,7 @@
 #include "Net/Private/ModelAssembly.h"
 
+#include "IO/InputChecks/ParameterRanges.h"
+
 #include <cmath>
 
 namespace proxima::detail
@@ -41,10 +43,11 @@ bool ModelAssembly::add(const net::ShapePart& part, std::string& error)
     Shape shape;
     shape.name = part.name();
     const net::ShapeMaterial& material = part.material();
+    // Friction and viscosity in a scene file's ranges; the stiffness factor 0 (unset, 1) to 100.
     if (!inRange(material.stiffness(), 0.0, 100.0) ||
-        !inRange(material.static_friction(), 0.0, 10.0) ||
-        !inRange(material.dynamic_friction(), 0.0, 10.0) ||
-        !inRange(material.viscosity(), 0.0, 1e4))
+        !kFrictionRange.contains(material.static_friction()) ||
+        !kFrictionRange.contains(material.dynamic_friction()) ||
+        !kViscosityRange.contains(material.viscosity()))
     {
       error = "shape " + std::to_string(index) +
               ": material out of range (stiffness 0 to 100, friction 0 to 10, viscosity 0 to "
