@@ -37,8 +37,8 @@ def start_server(proxima, work, name):
     return server, line.strip().rsplit(" ", 1)[1], summary
 
 
-def client(proxima, address, *arguments):
-    return subprocess.Popen([proxima, "remote", "--server", address, "upload", *arguments],
+def client(proxima, address, command, *arguments):
+    return subprocess.Popen([proxima, "remote", "--server", address, command, *arguments],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -56,12 +56,14 @@ def run(proxima, work, name, follow, upload, mesh):
     tiny = os.path.join(ROOT, "Data", "Meshes", "box.obj")
     time.sleep(0.5)
     if follow:
-        # A small model to follow the proxy on, then the stream at 1 kHz.
-        follower = client(proxima, address, "--mesh", tiny, "--follow", str(FOLLOW_SECONDS),
+        # A small model to follow the proxy on (its client owns the model while it uploads),
+        # then an observer's stream at 1 kHz.
+        finish(client(proxima, address, "upload", "--mesh", tiny))
+        follower = client(proxima, address, "follow", "--follow", str(FOLLOW_SECONDS),
                           "--rate", "1000")
     if upload:
         time.sleep(1.0)
-        uploader = client(proxima, address, "--mesh", mesh, "--scale", "0.001")
+        uploader = client(proxima, address, "upload", "--mesh", mesh, "--scale", "0.001")
     followed = finish(follower) if follower else None
     uploaded = finish(uploader) if uploader else None
     time.sleep(max(0.0, RUN_SECONDS - (time.monotonic() - start)))

@@ -7,6 +7,7 @@
 // with --follow its state is streamed back for a while and written as CSV.
 #include "Command.h"
 #include "SceneOptions.h"
+#include "PemFile.h"
 #include "TokenFile.h"
 #include "Validators.h"
 
@@ -35,12 +36,14 @@ struct RemoteOptions
 {
   std::string server;
   std::string tokenFile;
+  std::string tlsRoots;
   SceneOptions scene;
   std::string out;
   std::string summary;
   double maxTicks = kDefaultMaxTicks;
   // upload
   std::vector<std::string> meshes;
+  std::string uploadScene;
   double scale = 1.0;
   double follow = 0.0;
   double sampleRate = 100.0;
@@ -61,19 +64,22 @@ std::string stateRow(const LiveSample& s)
   return row;
 }
 
-int upload(const RemoteOptions& options)
+ServerConnection connection(const RemoteOptions& options)
 {
-  if (!options.stateOut.empty() && !(options.follow > 0.0))
-  {
-    throw InputError("--state-out",
-                     "needs --follow SECONDS: the state is streamed while following");
-  }
-  const std::string token = options.tokenFile.empty() ? "" : readTokenFile(options.tokenFile);
-  HapticClient client(options.server, token);
-  for (const std::string& mesh : options.meshes)
-  {
-    client.mesh(mesh, options.scale);
-  }
+  ServerConnection out;
+  out.server = options.server;
+  out.token = options.tokenFile.empty() ? "" : readTokenFile(options.tokenFile);
+  out.tlsRootCertificates =
+    options.tlsRoots.empty() ? "" : readPemFile(options.tlsRoots, "certificate");
+  return out;
+}
+
+// Streams the server's state for --follow seconds into `summary` (samples, dropped, latency,
+// touches) and, with --state-out, the CSV. A server that goes away is an error at once, not after
+// the rest of --follow.
+void followState(HapticClient& client, const RemoteOptions& options,
+                 nlohmann::ordered_json& summary)
+{
   std::mutex mutex;
   std::ostringstream rows;
   rows << "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
@@ -82,7 +88,6 @@ int upload(const RemoteOptions& options)
   std::vector<double> latencies;
   nlohmann::ordered_json touches = nlohmann::ordered_json::array();
   std::uint64_t dropped = 0;
-  const ModelReceiptInfo receipt = client.commit();
   if (options.follow > 0.0)
   {
     client.startStateStream(
@@ -99,8 +104,6 @@ int upload(const RemoteOptions& options)
         const std::lock_guard<std::mutex> lock(mutex);
         touches.push_back({{"t", touch.time}, {"shape", touch.shape}, {"touched", touch.touched}});
       });
-    // Until the time is up, or at once when the stream fails (a server that went away is an
-    // error now, not after the rest of --follow).
     const auto end =
       std::chrono::steady_clock::now() + std::chrono::duration<double>(options.follow);
     while (std::chrono::steady_clock::now() < end && client.stateStreamEnd().empty())
@@ -117,13 +120,6 @@ int upload(const RemoteOptions& options)
   {
     writeFileAtomically(options.stateOut, rows.str());
   }
-  nlohmann::ordered_json summary;
-  summary["server"] = options.server;
-  summary["model_version"] = receipt.version;
-  summary["shapes"] = receipt.shapes;
-  summary["triangles"] = receipt.triangles;
-  summary["build_ms"] = receipt.buildMilliseconds;
-  summary["live_ms"] = receipt.liveMilliseconds;
   summary["samples"] = samples;
   summary["dropped_samples"] = dropped;
   // Server's write to this client's read (the two wall clocks: meaningful on one machine).
@@ -136,6 +132,54 @@ int upload(const RemoteOptions& options)
     summary["latency_ms"] = {{"median", at(0.5)}, {"p99", at(0.99)}, {"max", latencies.back()}};
   }
   summary["touches"] = touches;
+}
+
+void requireFollowForStateOut(const RemoteOptions& options)
+{
+  if (!options.stateOut.empty() && !(options.follow > 0.0))
+  {
+    throw InputError("--state-out",
+                     "needs --follow SECONDS: the state is streamed while following");
+  }
+}
+
+int upload(const RemoteOptions& options)
+{
+  requireFollowForStateOut(options);
+  if (options.meshes.empty() && options.uploadScene.empty())
+  {
+    throw InputError("--mesh", "upload needs the model: give --mesh FILE or --scene FILE");
+  }
+  HapticClient client(connection(options));
+  if (!options.uploadScene.empty())
+  {
+    client.scene(options.uploadScene);
+  }
+  for (const std::string& mesh : options.meshes)
+  {
+    client.mesh(mesh, options.scale);
+  }
+  const ModelReceiptInfo receipt = client.commit();
+  nlohmann::ordered_json summary;
+  summary["server"] = options.server;
+  summary["model_version"] = receipt.version;
+  summary["shapes"] = receipt.shapes;
+  summary["triangles"] = receipt.triangles;
+  summary["build_ms"] = receipt.buildMilliseconds;
+  summary["live_ms"] = receipt.liveMilliseconds;
+  followState(client, options, summary);
+  writeStandardOutput(summary.dump(2) + "\n");
+  return kExitOk;
+}
+
+// An observer: follows the state while another client (or none) owns the model.
+int follow(const RemoteOptions& options)
+{
+  requireFollowForStateOut(options);
+  HapticClient client(connection(options), HapticClientRole::Observer);
+  nlohmann::ordered_json summary;
+  summary["server"] = options.server;
+  followState(client, options, summary);
   writeStandardOutput(summary.dump(2) + "\n");
   return kExitOk;
 }
@@ -146,6 +190,7 @@ int runRemote(const RemoteOptions& options)
   // Before anything is sent or written: a run never replaces what it reads.
   refuseOverlappingFiles({{options.out, "--out"}, {options.summary, "--summary"}},
                          {{settings.mesh, "--mesh"},
+                          {settings.scene, "--scene"},
                           {settings.path, "--path"},
                           {settings.texture, "--texture"},
                           {options.tokenFile, "--token-file"}});
@@ -153,10 +198,10 @@ int runRemote(const RemoteOptions& options)
   request.settings = settings;
   request.maxTicks = options.maxTicks;
   request.traceName = options.out;
-  const std::string token = options.tokenFile.empty() ? "" : readTokenFile(options.tokenFile);
+  const ServerConnection server = connection(options);
   TraceWriter trace(options.out);
-  const std::string summary = runRemotely(
-    options.server, token, request, [&trace](const HapticState& state) { trace.write(state); });
+  const std::string summary =
+    runRemotely(server, request, [&trace](const HapticState& state) { trace.write(state); });
   trace.finish();
   if (!options.summary.empty())
   {
@@ -175,9 +220,12 @@ Command addRemoteCommand(CLI::App& parent)
   app->add_option("--server", options->server, "HOST:PORT of a proxima serve")->required();
   app->add_option("--token-file", options->tokenFile,
                   "File whose first line is the server's token");
+  app->add_option("--tls-ca", options->tlsRoots,
+                  "PEM certificates that sign the server's (proxima serve --tls-cert): connect "
+                  "over TLS");
   app->require_subcommand(1);
   CLI::App* run = app->add_subcommand(
-    "run", "Play a finger path through a mesh on the server, as proxima run does here");
+    "run", "Play a finger path through a mesh or a scene on the server, as proxima run does here");
   addSceneOptionsThroughPath(*run, options->scene);
   run->add_option("--out", options->out, "Trace CSV to write here (trace v2)")->required();
   run->add_option("--summary", options->summary, "Also write the summary JSON to this file");
@@ -188,12 +236,20 @@ Command addRemoteCommand(CLI::App& parent)
                       "Default: none, so that the trace is reproducible bit for bit");
   run->callback([options, run] { checkSceneOptions(options->scene, *run); });
   CLI::App* uploadApp = app->add_subcommand(
-    "upload", "Make meshes the model of a proxima serve --device, and follow its state");
-  uploadApp->add_option("--mesh", options->meshes, "Mesh file, read here (repeat for more shapes)")
-    ->required()
-    ->check(CLI::ExistingFile);
+    "upload",
+    "Make meshes or a scene file the model of a proxima serve --device, and follow its state");
+  CLI::Option* meshOption =
+    uploadApp
+      ->add_option("--mesh", options->meshes, "Mesh file, read here (repeat for more shapes)")
+      ->check(CLI::ExistingFile);
+  CLI::Option* sceneOption =
+    uploadApp
+      ->add_option("--scene", options->uploadScene,
+                   "Scene file (with its meshes, textures and bodies), read here")
+      ->excludes(meshOption);
   uploadApp->add_option("--scale", options->scale, "File units to metres (default 1)")
-    ->check(numberIn(kMeshScaleRange));
+    ->check(numberIn(kMeshScaleRange))
+    ->excludes(sceneOption);
   uploadApp
     ->add_option("--follow", options->follow,
                  "Seconds to stream the server's state after the model is live")
@@ -201,8 +257,21 @@ Command addRemoteCommand(CLI::App& parent)
   uploadApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
     ->check(numberIn(ParameterRange{1.0, false, 1000.0, " Hz"}));
   uploadApp->add_option("--state-out", options->stateOut, "The streamed state as CSV");
-  return Command{app, [options, uploadApp] {
-                   return uploadApp->parsed() ? upload(*options) : runRemote(*options);
+  CLI::App* followApp = app->add_subcommand(
+    "follow", "Follow the state of a proxima serve --device as an observer (another client may "
+              "own its model)");
+  followApp->add_option("--follow", options->follow, "Seconds to stream the server's state")
+    ->required()
+    ->check(numberIn(ParameterRange{0.0, true, 86400.0, " s"}));
+  followApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
+    ->check(numberIn(ParameterRange{1.0, false, 1000.0, " Hz"}));
+  followApp->add_option("--state-out", options->stateOut, "The streamed state as CSV");
+  return Command{app, [options, uploadApp, followApp] {
+                   if (uploadApp->parsed())
+                   {
+                     return upload(*options);
+                   }
+                   return followApp->parsed() ? follow(*options) : runRemote(*options);
                  }};
 }
 

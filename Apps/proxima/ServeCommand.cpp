@@ -6,6 +6,7 @@
 #include "Command.h"
 #include "DeviceChoice.h"
 #include "LoopReport.h"
+#include "PemFile.h"
 #include "TokenFile.h"
 #include "Validators.h"
 
@@ -30,6 +31,8 @@ struct ServeOptions
 {
   std::string listen = "127.0.0.1:50051";
   std::string tokenFile;
+  std::string tlsCertificate;
+  std::string tlsKey;
   double maxTicks = kDefaultMaxTicks;
   // The live server: its device, and the servo and proxy its clients' models are felt with.
   DeviceChoiceOptions device;
@@ -106,11 +109,18 @@ int serve(const ServeOptions& options)
   {
     settings.token = readTokenFile(options.tokenFile);
   }
+  if (!options.tlsCertificate.empty())
+  {
+    settings.tlsCertificateChain = readPemFile(options.tlsCertificate, "certificate");
+    settings.tlsPrivateKey = readPemFile(options.tlsKey, "private key");
+  }
   std::unique_ptr<LiveRuntime> live;
   if (!options.device.device.empty())
   {
     live = startLiveRuntime(options, settings.liveProxy);
     settings.runtime = live->runtime.get();
+    settings.liveStiffness = options.stiffness;
+    settings.liveRate = options.rate;
   }
   RemoteRunServer server(settings);
   // The port a script asked for with :0 is on standard output, one line, at once.
@@ -153,6 +163,12 @@ Command addServeCommand(CLI::App& parent)
                   "--token-file");
   app->add_option("--token-file", options->tokenFile,
                   "File whose first line is the token every client must send");
+  CLI::Option* certificate =
+    app->add_option("--tls-cert", options->tlsCertificate,
+                    "PEM certificate (chain) of this server: clients connect over TLS");
+  CLI::Option* key = app->add_option("--tls-key", options->tlsKey, "PEM private key of --tls-cert");
+  certificate->needs(key);
+  key->needs(certificate);
   app
     ->add_option("--max-ticks", options->maxTicks,
                  "The most ticks one client's run may take (a run asking for more is refused)")

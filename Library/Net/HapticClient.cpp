@@ -2,6 +2,7 @@
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/Mesh/MeshReader.h"
+#include "Net/Private/SceneBundlePacking.h"
 #include "Net/Private/ServerChannel.h"
 #include "Net/Private/TokenCheck.h"
 
@@ -61,6 +62,8 @@ void throwForStatus(const grpc::Status& status, const std::string& server)
     case grpc::StatusCode::INVALID_ARGUMENT: throw std::invalid_argument(status.error_message());
     case grpc::StatusCode::UNAUTHENTICATED:
       throw InputError("--token-file", status.error_message());
+    case grpc::StatusCode::FAILED_PRECONDITION:
+      throw InputError("--server", "the server at " + server + ": " + status.error_message());
     case grpc::StatusCode::UNIMPLEMENTED:
       throw InputError("--server", "the server at " + server +
                                      " owns no device (start it with proxima serve --device)");
@@ -77,12 +80,20 @@ struct HapticClient::Impl
 {
   std::string server;
   std::string token;
+  HapticClientRole role = HapticClientRole::Owner;
   std::shared_ptr<grpc::Channel> channel;
   std::unique_ptr<net::HapticServer::Stub> stub;
+  // The ownership call, held open for the client's life (proxima_haptic.proto's HoldOwnership).
+  std::unique_ptr<grpc::ClientContext> ownershipContext;
+  std::unique_ptr<grpc::ClientReaderWriter<net::OwnershipRequest, net::OwnershipGrant>>
+    ownershipCall;
+  std::string ownerKey;
 
   std::vector<RigidTransform> stack{RigidTransform{}};
   ShapeMaterialSpec material;
   std::vector<PendingShape> shapes;
+  /// A scene file to send as the whole model instead of shapes.
+  std::unique_ptr<net::SceneBundle> scene;
   bool inShape = false;
   bool haveNormal = false;
   bool haveTexCoord = false;
@@ -102,7 +113,49 @@ struct HapticClient::Impl
       context.AddMetadata(detail::kTokenMetadata, token);
     }
   }
+  void holdOwnership()
+  {
+    ownershipContext = std::make_unique<grpc::ClientContext>();
+    addToken(*ownershipContext);
+    ownershipCall = stub->HoldOwnership(ownershipContext.get());
+    net::OwnershipGrant grant;
+    if (ownershipCall->Read(&grant))
+    {
+      ownerKey = grant.key();
+      return;
+    }
+    const grpc::Status status = ownershipCall->Finish();
+    ownershipCall.reset();
+    if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION)
+    {
+      throw InputError("--server", "the server at " + server +
+                                     " refused to make this client the "
+                                     "owner: " +
+                                     status.error_message());
+    }
+    throwForStatus(status, server);
+    throw std::runtime_error("the server at " + server + " ended the ownership call at once");
+  }
+  void releaseOwnership()
+  {
+    if (ownershipCall)
+    {
+      // Ends this side; the call ends when the server has let go, so that another client may own
+      // the model as soon as this returns (or at once, when the server has gone).
+      ownershipCall->WritesDone();
+      ownershipCall->Finish();
+      ownershipCall.reset();
+    }
+  }
   RigidTransform& top() { return stack.back(); }
+  void refuseBesideScene(const char* call) const
+  {
+    if (scene)
+    {
+      throw std::logic_error(std::string("HapticClient::") + call +
+                             ": a scene file is the whole model until it is committed");
+    }
+  }
   PendingShape& shape()
   {
     if (!inShape)
@@ -115,17 +168,32 @@ struct HapticClient::Impl
 };
 
 HapticClient::HapticClient(const std::string& server, const std::string& token)
+  : HapticClient(ServerConnection{server, token, {}})
+{}
+
+HapticClient::HapticClient(const ServerConnection& connection, HapticClientRole role)
   : m_impl(std::make_unique<Impl>())
 {
-  m_impl->server = server;
-  m_impl->token = token;
-  m_impl->channel = detail::connectToServer(server);
+  m_impl->server = connection.server;
+  m_impl->token = connection.token;
+  m_impl->role = role;
+  m_impl->channel = detail::connectToServer(connection);
   m_impl->stub = net::HapticServer::NewStub(m_impl->channel);
+  if (role == HapticClientRole::Owner)
+  {
+    m_impl->holdOwnership();
+  }
 }
 
 HapticClient::~HapticClient()
 {
   stopStateStream();
+  m_impl->releaseOwnership();
+}
+
+HapticClientRole HapticClient::role() const
+{
+  return m_impl->role;
 }
 
 void HapticClient::loadIdentity()
@@ -182,6 +250,7 @@ void HapticClient::beginShape(const std::string& name)
   {
     throw std::logic_error("HapticClient::beginShape: the last shape was not ended");
   }
+  m_impl->refuseBesideScene("beginShape");
   m_impl->shapes.push_back(PendingShape{name, m_impl->material, {}});
   m_impl->inShape = true;
   m_impl->haveNormal = false;
@@ -233,6 +302,7 @@ void HapticClient::mesh(const std::string& file, double scale, const std::string
   {
     throw std::logic_error("HapticClient::mesh: inside a shape");
   }
+  m_impl->refuseBesideScene("mesh");
   TriangleSoup soup = readMeshFile(file, scale);
   for (Vec3& point : soup.points)
   {
@@ -246,6 +316,16 @@ void HapticClient::mesh(const std::string& file, double scale, const std::string
     PendingShape{name.empty() ? file : name, m_impl->material, std::move(soup)});
 }
 
+void HapticClient::scene(const std::string& file)
+{
+  if (m_impl->inShape || !m_impl->shapes.empty())
+  {
+    throw std::logic_error("HapticClient::scene: a scene file is the whole model, and shapes "
+                           "are pending");
+  }
+  m_impl->scene = std::make_unique<net::SceneBundle>(detail::packSceneFile(file));
+}
+
 std::size_t HapticClient::pendingShapes() const
 {
   return m_impl->shapes.size();
@@ -257,11 +337,23 @@ ModelReceiptInfo HapticClient::commit()
   {
     throw std::logic_error("HapticClient::commit: the last shape was not ended");
   }
+  if (m_impl->role == HapticClientRole::Observer)
+  {
+    throw std::logic_error("HapticClient::commit: this client observes; only the owner changes "
+                           "the model");
+  }
   grpc::ClientContext context;
   m_impl->addToken(context);
+  context.AddMetadata(detail::kOwnerMetadata, m_impl->ownerKey);
   net::ModelReceipt receipt;
   const auto writer = m_impl->stub->UploadModel(&context, &receipt);
   bool open = true;
+  if (m_impl->scene)
+  {
+    net::ModelUpload upload;
+    *upload.mutable_scene() = *m_impl->scene;
+    open = writer->Write(upload);
+  }
   for (std::size_t index = 0; open && index < m_impl->shapes.size(); ++index)
   {
     const PendingShape& shape = m_impl->shapes[index];
@@ -319,6 +411,7 @@ ModelReceiptInfo HapticClient::commit()
   writer->WritesDone();
   throwForStatus(writer->Finish(), m_impl->server);
   m_impl->shapes.clear();
+  m_impl->scene.reset();
   ModelReceiptInfo info;
   info.version = receipt.version();
   info.shapes = receipt.shapes();

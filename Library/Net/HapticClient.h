@@ -17,6 +17,7 @@
 
 #include "Core/RigidTransform.h"
 #include "Core/Vec3.h"
+#include "Net/ServerConnection.h"
 
 #include <cstdint>
 #include <functional>
@@ -80,11 +81,25 @@ struct TouchChange
   double time = 0.0;
 };
 
+/// One client at a time owns the server's model and may change it; any number observe it
+/// (follow its state).
+enum class HapticClientRole
+{
+  Owner,
+  Observer
+};
+
 class HapticClient
 {
 public:
-  /// Connects to `server` (HOST:PORT). Throws InputError naming --server when nothing answers.
+  /// Connects to `server` (HOST:PORT) as the owner. Throws InputError naming --server when
+  /// nothing answers, or when another client owns the model.
   explicit HapticClient(const std::string& server, const std::string& token = {});
+  /// Connects as `role`, with the connection's token and TLS roots. An owner holds the model
+  /// until it is destroyed (or its process ends, or its connection drops); then another client
+  /// may own it. Throws as above.
+  explicit HapticClient(const ServerConnection& connection,
+                        HapticClientRole role = HapticClientRole::Owner);
   ~HapticClient();
   HapticClient(const HapticClient&) = delete;
   HapticClient& operator=(const HapticClient&) = delete;
@@ -113,12 +128,19 @@ public:
   /// A shape read from a mesh file here (IO/Mesh/MeshReader.h: its errors), scaled, then
   /// transformed, with the current material.
   void mesh(const std::string& file, double scale = 1.0, const std::string& name = {});
+  /// A scene file as the whole model (Documentation/SceneFiles.md: its objects, poses,
+  /// materials, textures and bodies), checked and read here with every file it names, and read
+  /// there as `proxima run --scene` reads it; the transform stack does not apply. Throws
+  /// InputError as a local run would, std::logic_error when shapes are pending (and shape calls
+  /// throw while a scene is).
+  void scene(const std::string& file);
   std::size_t pendingShapes() const;
+  HapticClientRole role() const;
 
   /// Sends the shapes made since the last commit as the server's new model and returns once the
   /// server has it live; they are then forgotten here. Throws std::invalid_argument with the
   /// server's words for a model it refuses (the old model stays), InputError naming --server or
-  /// --token-file, std::runtime_error otherwise.
+  /// --token-file, std::logic_error for an observer, std::runtime_error otherwise.
   ModelReceiptInfo commit();
 
   /// Streams the server's state at `rateHz` (1 to 1000) on a thread of this client's, handing

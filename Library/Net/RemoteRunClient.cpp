@@ -2,6 +2,7 @@
 
 #include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
+#include "Net/Private/SceneBundlePacking.h"
 #include "Net/Private/ServerChannel.h"
 #include "Net/Private/TickColumns.h"
 #include "Net/Private/TokenCheck.h"
@@ -54,21 +55,23 @@ net::RunSettings settingsMessage(const ScriptedRunSettings& s, double maxTicks)
 }
 } // namespace
 
-std::string runRemotely(const std::string& server, const std::string& token,
-                        const RemoteRunRequest& request,
+std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
                         const std::function<void(const HapticState&)>& onTick)
 {
+  const std::string& server = connection.server;
   const ScriptedRunSettings& settings = request.settings;
-  if (!settings.scene.empty())
-  {
-    throw InputError("--scene", "a remote run takes --mesh: a scene file's many files are not "
-                                "sent to the server");
-  }
   // The settings are checked here first: a typo costs no upload.
   checkScriptedRunSettings(settings);
   net::RunRequest message;
   *message.mutable_settings() = settingsMessage(settings, request.maxTicks);
-  readFile(settings.mesh, "mesh file", *message.mutable_mesh());
+  if (settings.scene.empty())
+  {
+    readFile(settings.mesh, "mesh file", *message.mutable_mesh());
+  }
+  else
+  {
+    *message.mutable_scene() = detail::packSceneFile(settings.scene);
+  }
   readFile(settings.path, "finger path file", *message.mutable_path());
   if (!settings.texture.empty())
   {
@@ -76,12 +79,12 @@ std::string runRemotely(const std::string& server, const std::string& token,
   }
   message.set_trace_name(request.traceName);
 
-  const auto channel = detail::connectToServer(server);
+  const auto channel = detail::connectToServer(connection);
   const auto stub = net::RemoteRuns::NewStub(channel);
   grpc::ClientContext context;
-  if (!token.empty())
+  if (!connection.token.empty())
   {
-    context.AddMetadata(detail::kTokenMetadata, token);
+    context.AddMetadata(detail::kTokenMetadata, connection.token);
   }
   std::string summary;
   const auto reader = stub->Run(&context, message);

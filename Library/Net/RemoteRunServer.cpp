@@ -73,8 +73,16 @@ RemoteRunServer::RemoteRunServer(const RemoteServerSettings& settings)
   }
   m_impl->service =
     std::make_unique<RemoteRunsService>(settings.token, RunLimits{settings.maxTicks});
+  const bool tls = !settings.tlsCertificateChain.empty();
+  std::shared_ptr<grpc::ServerCredentials> credentials = grpc::InsecureServerCredentials();
+  if (tls)
+  {
+    grpc::SslServerCredentialsOptions options;
+    options.pem_key_cert_pairs.push_back({settings.tlsPrivateKey, settings.tlsCertificateChain});
+    credentials = grpc::SslServerCredentials(options);
+  }
   grpc::ServerBuilder builder;
-  builder.AddListeningPort(settings.listen, grpc::InsecureServerCredentials(), &m_impl->port);
+  builder.AddListeningPort(settings.listen, credentials, &m_impl->port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(settings.maxRequestBytes));
   builder.RegisterService(m_impl->service.get());
   if (settings.runtime != nullptr)
@@ -83,14 +91,18 @@ RemoteRunServer::RemoteRunServer(const RemoteServerSettings& settings)
     limits.maxTriangles = settings.maxModelTriangles;
     limits.maxPoints = settings.maxModelTriangles;
     m_impl->live = std::make_unique<detail::LiveHapticService>(
-      *settings.runtime, settings.liveProxy, settings.token, limits);
+      *settings.runtime, settings.liveProxy, settings.liveStiffness, settings.liveRate,
+      settings.token, limits);
     builder.RegisterService(m_impl->live.get());
   }
   m_impl->server = builder.BuildAndStart();
   if (!m_impl->server || m_impl->port == 0)
   {
     throw InputError("--listen", "cannot listen on " + settings.listen +
-                                   " (a HOST:PORT that is free and this machine's)");
+                                   (tls ? " with the TLS certificate and key given (a HOST:PORT "
+                                          "that is free and this machine's, and a key that "
+                                          "matches the certificate)"
+                                        : " (a HOST:PORT that is free and this machine's)"));
   }
 }
 

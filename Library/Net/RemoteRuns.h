@@ -5,6 +5,7 @@
 #pragma once
 
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
+#include "Net/ServerConnection.h"
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/HapticState.h"
 
@@ -25,6 +26,10 @@ struct RemoteServerSettings
   std::string listen = "127.0.0.1:50051";
   /// The token clients must send; empty for none, which only a loopback address may have.
   std::string token;
+  /// TLS (`proxima serve --tls-cert --tls-key`): the server's PEM certificate chain and private
+  /// key. Empty: a plain channel.
+  std::string tlsCertificateChain;
+  std::string tlsPrivateKey;
   /// The largest request taken (its mesh, path and texture files together).
   std::size_t maxRequestBytes = std::size_t{512} << 20;
   /// The most ticks one run may ask for (a client's --max-ticks above it is refused).
@@ -35,6 +40,9 @@ struct RemoteServerSettings
   ThreadedRuntime* runtime = nullptr;
   /// The proxy of the uploaded models (radius, skin, iteration cap).
   ProxyParameters liveProxy;
+  /// The servo's kp (N/m) and rate (Hz): an uploaded scene's bodies are coupled at them.
+  double liveStiffness = 1000.0;
+  double liveRate = 1000.0;
   /// The most triangles (and points) of one uploaded model.
   std::uint64_t maxModelTriangles = 20'000'000;
 };
@@ -67,20 +75,19 @@ private:
 
 struct RemoteRunRequest
 {
-  /// As a local run's: `mesh`, `path` and `texture` name the client's files, which are sent whole.
-  /// A scene file is not sent (its files are many): remote runs take a mesh.
+  /// As a local run's: `mesh` or `scene`, `path` and `texture` name the client's files, which are
+  /// sent whole (a scene with every file it names).
   ScriptedRunSettings settings;
   double maxTicks = 1e7;
   /// The trace file the client writes, for the summary's "trace".
   std::string traceName;
 };
 
-/// Sends `request` to the server at `server` (HOST:PORT) with `token`, hands each tick to `onTick`
-/// as it arrives and returns the summary. Throws InputError: the server's refusal of the run (the
-/// option or the client's file named, as a local run would), "--server" when no server answers,
-/// "--token-file" when the token is refused.
-std::string runRemotely(const std::string& server, const std::string& token,
-                        const RemoteRunRequest& request,
+/// Sends `request` to the server of `connection`, hands each tick to `onTick` as it arrives and
+/// returns the summary. Throws InputError: the server's refusal of the run (the option or the
+/// client's file named, as a local run would), "--server" when no server answers, "--token-file"
+/// when the token is refused.
+std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
                         const std::function<void(const HapticState&)>& onTick);
 
 } // namespace proxima

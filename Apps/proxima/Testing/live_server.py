@@ -9,6 +9,10 @@
 - A touch event for shape 0 comes; the model's version is the one the receipt gave.
 - A mesh the server must refuse leaves the model as it was; a server without a device says so.
 - A follower of a server that is killed ends at once with an error naming --server.
+- Over TLS (`serve --tls-cert --tls-key`, a certificate made here by openssl): a client with the
+  certificate as --tls-ca uploads, follows and runs; a plain client, and one trusting another
+  certificate, are refused naming --server; a file that is not PEM is named.
+- One client owns the model: an observer (`remote follow`) follows while another uploads.
 - SIGINT stops the server with status 0.
 Usage: live_server.py BUILD_DIR SOURCE_DIR
 """
@@ -84,7 +88,8 @@ try:
     on_model = [r for r in rows if r["model_version"] == 2]
     # Held: the finger at rest (after 1 s), past the servo's 0.1 s ramp after the model's swap.
     live = on_model[0]["t"] if on_model else 0.0
-    held = [r for r in on_model if r["t"] > max(1.05, live + 0.2)]
+    # Held, and not fading (flag 8: the runtime fades the force while its proxy loop is starved).
+    held = [r for r in on_model if r["t"] > max(1.05, live + 0.2) and not int(r["flags"]) & 8]
     if len(held) < 50:
         fail(f"only {len(held)} samples of the held finger on the model")
     deepest = max(inscribed + RADIUS - math.sqrt(r["proxy_x"] ** 2 + r["proxy_y"] ** 2 +
@@ -140,6 +145,63 @@ try:
         fail(f"an upload to a server without a device: {refused.returncode} {refused.stderr}")
 finally:
     stop(plain)
+
+# TLS: a self-signed certificate for localhost and 127.0.0.1, made here.
+def make_certificate(stem):
+    made = subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "2",
+                           "-subj", "/CN=localhost", "-addext",
+                           "subjectAltName=DNS:localhost,IP:127.0.0.1",
+                           "-keyout", stem + ".key", "-out", stem + ".pem"],
+                          capture_output=True, text=True)
+    if made.returncode != 0:
+        fail(f"openssl could not make a test certificate: {made.stderr}")
+    return stem + ".pem", stem + ".key"
+
+
+certificate, key = make_certificate(os.path.join(work, "server"))
+stranger, _ = make_certificate(os.path.join(work, "stranger"))
+secure, address = start_server("--device", "sim", "--path", path, "--tls-cert", certificate,
+                               "--tls-key", key)
+try:
+    uploaded = subprocess.run([proxima, "remote", "--server", address, "--tls-ca", certificate,
+                               "upload", "--mesh", sphere], capture_output=True, text=True)
+    if uploaded.returncode != 0 or json.loads(uploaded.stdout)["triangles"] != 5120:
+        fail(f"an upload over TLS: {uploaded.returncode} {uploaded.stderr}")
+    # An observer follows over TLS while another client (owning the model) uploads.
+    follower = subprocess.Popen([proxima, "remote", "--server", address, "--tls-ca", certificate,
+                                 "follow", "--follow", "2", "--rate", "100"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(0.5)
+    second = subprocess.run([proxima, "remote", "--server", address, "--tls-ca", certificate,
+                             "upload", "--mesh", sphere, "--scale", "0.5"],
+                            capture_output=True, text=True)
+    followed, error = follower.communicate(timeout=60)
+    if second.returncode != 0 or follower.returncode != 0:
+        fail(f"an observer beside an owner: {second.stderr} {error}")
+    observed = json.loads(followed)
+    if observed["samples"] < 100 or "triangles" in observed:
+        fail(f"the observer's summary: {observed}")
+    remote_run = subprocess.run(
+        [proxima, "remote", "--server", address, "--tls-ca", certificate, "run", "--mesh",
+         sphere, "--path", os.path.join(source, "Data", "Paths", "icosphere-4-press-stroke.csv"),
+         "--out", os.path.join(work, "tls-run.csv")], capture_output=True, text=True)
+    if remote_run.returncode != 0:
+        fail(f"a remote run over TLS: {remote_run.stderr}")
+    for name, extra in (("a plain client", []), ("a client trusting another certificate",
+                                                 ["--tls-ca", stranger])):
+        refused = subprocess.run([proxima, "remote", "--server", address, *extra, "upload",
+                                  "--mesh", sphere], capture_output=True, text=True, timeout=60)
+        if refused.returncode != 2 or "--server: no Proxima server answers" not in refused.stderr:
+            fail(f"{name} of a TLS server: {refused.returncode} {refused.stderr}")
+    not_pem = subprocess.run([proxima, "remote", "--server", address, "--tls-ca", sphere,
+                              "upload", "--mesh", sphere], capture_output=True, text=True)
+    if not_pem.returncode != 2 or f"{sphere}: not a PEM certificate" not in not_pem.stderr:
+        fail(f"a --tls-ca that is not PEM: {not_pem.returncode} {not_pem.stderr}")
+finally:
+    stop(secure)
+
 print(f"live server: {len(rows)} samples, {len(held)} held; deepest {deepest:.3g} m; "
       f"model live {receipt['live_ms']:.2f} ms after a {receipt['build_ms']:.2f} ms build; "
-      f"a follower of the killed server ended {waited:.2f} s later: {error.strip()}")
+      f"a follower of the killed server ended {waited:.2f} s later; over TLS an owner uploaded "
+      f"and ran, an observer followed ({observed['samples']} samples), plain and untrusting "
+      f"clients were refused")

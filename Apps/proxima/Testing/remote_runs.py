@@ -8,8 +8,11 @@
 - With --token-file, a wrong token is refused (--token-file) and the right one runs.
 - A path longer than the server's --max-ticks is refused, whatever the client's own limit.
 - A server that is not there, or that stops, is a clear error naming --server.
+- Scene files go with their files (meshes, an MJCF file): the crank's mechanism and the lever's
+  hinged plate turn on the server as they do locally, bit for bit, and the spheres on the table
+  (three objects) too; a scene that names a missing mesh is refused naming it.
 - The server leaves none of the runs' files behind.
-Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR
+Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR SOURCE_DIR
 """
 import csv
 import glob
@@ -23,11 +26,11 @@ import tempfile
 
 import serve_process
 
-build, shared = sys.argv[1], sys.argv[2]
+build, shared, source = sys.argv[1], sys.argv[2], sys.argv[3]
 proxima = os.path.join(build, "bin", "proxima")
 meshes, paths = os.path.join(shared, "meshes"), os.path.join(shared, "paths")
 work = tempfile.mkdtemp(prefix="proxima-remote-test-")
-TIMED = ("solve_ns", "read_ms", "tree_build_ms", "run_ms")
+TIMED = ("solve_ns", "read_ms", "tree_build_ms", "run_ms", "dynamics_ns")
 
 
 def fail(message):
@@ -80,6 +83,35 @@ for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"
     if contact < 1000:
         fail(f"{name}: only {contact} contact ticks: the comparison says little")
     print(f"{name}: {len(remote_rows) - 1} ticks ({contact} in contact), the same as proxima run")
+
+# Scene files, sent with the files they name; bodies move on the server as they do here.
+scenes, body_paths = os.path.join(source, "Data", "Scenes"), os.path.join(source, "Data", "Paths")
+for name, scene, path in (("crank", "crank.json", "Bodies/crank-turn.csv"),
+                          ("lever", "lever.json", "Bodies/lever-press-hold.csv"),
+                          ("spheres", "spheres-on-table.json", "spheres-on-table-press-stroke.csv")):
+    options = ["--scene", os.path.join(scenes, scene), "--path", os.path.join(body_paths, path)]
+    local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"))
+    remote = run("remote", "--server", address, "run", *options,
+                 "--out", os.path.join(work, f"{name}-remote.csv"))
+    if local.returncode != 0 or remote.returncode != 0:
+        fail(f"{name}: local {local.returncode} {local.stderr} remote {remote.returncode} "
+             f"{remote.stderr}")
+    if rows(os.path.join(work, f"{name}-local.csv")) != rows(os.path.join(work, f"{name}-remote.csv")):
+        fail(f"{name}: the remote trace of the scene differs from the local one")
+    local_summary, remote_summary = json.loads(local.stdout), json.loads(remote.stdout)
+    if untimed(local_summary) != untimed(remote_summary):
+        fail(f"{name}: the remote summary differs: {untimed(local_summary)} "
+             f"{untimed(remote_summary)}")
+    bodies = len(remote_summary.get("bodies", []))
+    print(f"{name} scene: {remote_summary['ticks']} ticks, {bodies} bodies, the same as proxima run")
+missing_scene = os.path.join(work, "missing-mesh.json")
+with open(missing_scene, "w") as out:
+    out.write('{"version": 1, "objects": [{"mesh": "no-such-mesh.obj"}]}')
+refused = run("remote", "--server", address, "run", "--scene", missing_scene, "--path",
+              os.path.join(body_paths, "spheres-on-table-press-stroke.csv"), "--out",
+              os.path.join(work, "missing.csv"))
+if refused.returncode != 2 or "no-such-mesh.obj" not in refused.stderr:
+    fail(f"a scene naming a missing mesh: status {refused.returncode}, {refused.stderr!r}")
 
 # Bad input: the client's file named, as locally; no trace written.
 bad_path = os.path.join(work, "bad-path.csv")

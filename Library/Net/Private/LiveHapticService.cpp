@@ -1,5 +1,8 @@
 #include "Net/Private/LiveHapticService.h"
 
+#include "IO/Scene/SceneBuilder.h"
+#include "IO/ScriptedRun/ScriptedRun.h"
+#include "Net/Private/RunFolder.h"
 #include "Net/Private/TokenCheck.h"
 
 #include <grpcpp/grpcpp.h>
@@ -49,18 +52,39 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
   {
     return {grpc::StatusCode::UNAUTHENTICATED, "the server refused the token (missing or wrong)"};
   }
-  ModelAssembly model(m_limits);
+  if (!m_ownership.mayChange(*context))
+  {
+    return {grpc::StatusCode::FAILED_PRECONDITION,
+            "another client owns the model: only it may change it (this client may observe)"};
+  }
+  ModelAssembly shapes(m_limits);
+  net::SceneBundle sceneBundle;
+  bool hasScene = false;
   net::ModelUpload upload;
   bool committed = false;
   std::string error;
+  const char* const mixed = "an upload is shapes or one scene file, not both (nor two scenes)";
   while (!committed && reader->Read(&upload))
   {
     if (upload.has_shape())
     {
-      if (!model.add(upload.shape(), error))
+      if (hasScene)
+      {
+        return {grpc::StatusCode::INVALID_ARGUMENT, mixed};
+      }
+      if (!shapes.add(upload.shape(), error))
       {
         return {grpc::StatusCode::INVALID_ARGUMENT, error};
       }
+    }
+    else if (upload.has_scene())
+    {
+      if (hasScene || shapes.numShapes() > 0)
+      {
+        return {grpc::StatusCode::INVALID_ARGUMENT, mixed};
+      }
+      sceneBundle = std::move(*upload.mutable_scene());
+      hasScene = true;
     }
     else if (upload.commit())
     {
@@ -73,17 +97,31 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
     return {grpc::StatusCode::ABORTED, "the upload ended without a commit; the model is unchanged"};
   }
   const auto buildStart = Clock::now();
-  auto scene = std::make_shared<CollisionScene>();
-  if (!model.build(*scene, error))
+  BuiltModel model;
+  if (hasScene)
   {
-    return {grpc::StatusCode::INVALID_ARGUMENT, error};
+    if (!buildScene(sceneBundle, model, error))
+    {
+      return {grpc::StatusCode::INVALID_ARGUMENT, error};
+    }
+  }
+  else
+  {
+    model.scene = std::make_shared<CollisionScene>();
+    if (!shapes.build(*model.scene, error))
+    {
+      return {grpc::StatusCode::INVALID_ARGUMENT, error};
+    }
+    model.shapes = static_cast<std::uint32_t>(shapes.numShapes());
+    model.triangles = shapes.numTriangles();
   }
   const double buildMilliseconds = millisecondsSince(buildStart);
   const auto publishStart = Clock::now();
   std::uint64_t version = 0;
   {
     const std::lock_guard<std::mutex> lock(m_publishing);
-    version = m_runtime.publishScene(std::move(scene), m_proxy, m_runtime.latestState().proxy);
+    version = m_runtime.publishScene(std::move(model.scene), m_proxy, m_runtime.latestState().proxy,
+                                     nullptr, std::move(model.dynamics));
   }
   // Live once the proxy loop has installed it (it does at its next tick, unless the runtime has
   // stopped).
@@ -93,12 +131,54 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
   receipt->set_version(version);
-  receipt->set_shapes(static_cast<std::uint32_t>(model.numShapes()));
-  receipt->set_triangles(model.numTriangles());
+  receipt->set_shapes(model.shapes);
+  receipt->set_triangles(model.triangles);
   receipt->set_build_ms(buildMilliseconds);
   receipt->set_live_ms(m_runtime.liveSceneVersion() >= version ? millisecondsSince(publishStart)
                                                                : -1.0);
   return grpc::Status::OK;
+}
+
+bool LiveHapticService::buildScene(const net::SceneBundle& bundle, BuiltModel& model,
+                                   std::string& error) const
+{
+  try
+  {
+    RunFolder folder;
+    try
+    {
+      LoadedScene loaded = loadSceneFile(folder.writeScene(bundle));
+      for (const LoadedObject& object : loaded.objects)
+      {
+        model.triangles += object.numTriangles;
+      }
+      if (model.triangles > m_limits.maxTriangles)
+      {
+        error = bundle.scene_name() + ": the scene has " + std::to_string(model.triangles) +
+                " triangles, more than this server takes in one model (" +
+                std::to_string(m_limits.maxTriangles) + ")";
+        return false;
+      }
+      ScriptedRunSettings coupling;
+      coupling.stiffness = m_stiffness;
+      coupling.rate = m_rate;
+      model.dynamics = sceneDynamics(coupling, loaded);
+      model.shapes = static_cast<std::uint32_t>(loaded.objects.size());
+      model.scene = std::shared_ptr<CollisionScene>(std::move(loaded.scene));
+      return true;
+    }
+    catch (const std::exception& refused)
+    {
+      // A local run's words (InputError: "<file>: <defect>"), about the client's files.
+      error = folder.clientWords(refused.what());
+      return false;
+    }
+  }
+  catch (const std::exception& failed)
+  {
+    error = failed.what();
+    return false;
+  }
 }
 
 grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
@@ -167,6 +247,37 @@ grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
     }
     std::this_thread::sleep_until(next);
   }
+  return grpc::Status::OK;
+}
+
+grpc::Status LiveHapticService::HoldOwnership(
+  grpc::ServerContext* context,
+  grpc::ServerReaderWriter<net::OwnershipGrant, net::OwnershipRequest>* stream)
+{
+  if (!tokenAccepted(*context, m_token))
+  {
+    return {grpc::StatusCode::UNAUTHENTICATED, "the server refused the token (missing or wrong)"};
+  }
+  std::string holder;
+  const std::string key = m_ownership.claim(context->peer(), holder);
+  if (key.empty())
+  {
+    return {grpc::StatusCode::FAILED_PRECONDITION,
+            "another client owns the model (" + holder +
+              "): connect as an observer, or once it has gone"};
+  }
+  net::OwnershipGrant grant;
+  grant.set_key(key);
+  if (stream->Write(grant))
+  {
+    // Held until the client ends its side (Read returns false), or goes away (its connection
+    // drops), or the server shuts down (which cancels the call).
+    net::OwnershipRequest ignored;
+    while (stream->Read(&ignored))
+    {}
+  }
+  // Let go before the call ends, so that a client whose call has ended knows it no longer owns.
+  m_ownership.release(key);
   return grpc::Status::OK;
 }
 

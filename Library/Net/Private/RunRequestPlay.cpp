@@ -3,95 +3,24 @@
 #include "IO/InputChecks/InputError.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
+#include "Net/Private/RunFolder.h"
 #include "Net/Private/TickColumns.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace proxima
 {
-namespace fs = std::filesystem;
-
 namespace
 {
 // The client stopped reading (or went away): the run ends there.
 struct ClientGone
 {};
-
-// A folder of its own for one run's files, removed with everything in it however the run ends.
-class RunFolder
-{
-public:
-  RunFolder()
-  {
-    std::string pattern = (fs::temp_directory_path() / "proxima-remote-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr)
-    {
-      throw std::runtime_error("cannot make a folder for the run's files");
-    }
-    m_path = pattern;
-  }
-  ~RunFolder()
-  {
-    std::error_code ignored;
-    fs::remove_all(m_path, ignored);
-  }
-  RunFolder(const RunFolder&) = delete;
-  RunFolder& operator=(const RunFolder&) = delete;
-
-  // Writes `file` as `stem` with the client's extension (the readers go by it) and remembers
-  // which client name the local path stands for.
-  std::string write(const net::FileContent& file, const std::string& stem)
-  {
-    std::string extension = fs::path(file.name()).extension().string();
-    for (char c : extension)
-    {
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.')
-      {
-        extension.clear(); // nothing but letters and digits reaches the server's file system
-        break;
-      }
-    }
-    const std::string local = (m_path / (stem + extension)).string();
-    std::ofstream out(local, std::ios::binary);
-    out.write(file.data().data(), static_cast<std::streamsize>(file.data().size()));
-    out.close();
-    if (!out)
-    {
-      throw std::runtime_error("cannot write the run's files on the server");
-    }
-    m_names.emplace_back(local, file.name());
-    return local;
-  }
-
-  // `text` with the local paths replaced by the client's names.
-  std::string clientWords(std::string text) const
-  {
-    for (const auto& [local, client] : m_names)
-    {
-      for (std::size_t at = text.find(local); at != std::string::npos;
-           at = text.find(local, at + client.size()))
-      {
-        text.replace(at, local.size(), client);
-      }
-    }
-    return text;
-  }
-
-private:
-  fs::path m_path;
-  std::vector<std::pair<std::string, std::string>> m_names;
-};
 
 ScriptedRunSettings settingsOf(const net::RunSettings& in)
 {
@@ -116,10 +45,10 @@ ScriptedRunSettings settingsOf(const net::RunSettings& in)
 }
 
 // The summary a local run would print: the client's file names where the server's stand.
-std::string clientSummary(const std::string& summary, const net::RunRequest& request)
+std::string clientSummary(const std::string& summary, const net::RunRequest& request,
+                          const detail::RunFolder& folder)
 {
-  auto json = nlohmann::ordered_json::parse(summary);
-  json["mesh"] = request.mesh().name();
+  auto json = nlohmann::ordered_json::parse(folder.clientWords(summary));
   json["path"] = request.path().name();
   if (json.contains("texture") && json["texture"].is_object())
   {
@@ -142,24 +71,33 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
   }
   const bool serverLimits = asked > limits.maxTicks;
   const double maxTicks = serverLimits ? limits.maxTicks : asked;
-  if (request.mesh().name().empty() || request.mesh().data().empty())
+  const bool scene = request.has_scene();
+  if (scene == (!request.mesh().name().empty() || !request.mesh().data().empty()))
   {
-    return {grpc::StatusCode::INVALID_ARGUMENT, "a remote run needs a mesh file's contents",
-            "--mesh"};
+    return {grpc::StatusCode::INVALID_ARGUMENT,
+            "a remote run needs a mesh file's contents or a scene bundle, and not both", "--mesh"};
   }
   if (request.path().name().empty())
   {
     return {grpc::StatusCode::INVALID_ARGUMENT, "a remote run needs a finger path", "--path"};
   }
-  RunFolder folder;
+  detail::RunFolder folder;
   try
   {
     ScriptedRunSettings settings = settingsOf(request.settings());
-    settings.mesh = folder.write(request.mesh(), "mesh");
-    settings.path = folder.write(request.path(), "path");
+    if (scene)
+    {
+      settings.scene = folder.writeScene(request.scene());
+    }
+    else
+    {
+      settings.mesh = folder.write(request.mesh().name(), request.mesh().data(), "mesh");
+    }
+    settings.path = folder.write(request.path().name(), request.path().data(), "path");
     if (request.has_texture())
     {
-      settings.texture = folder.write(request.texture(), "texture");
+      settings.texture =
+        folder.write(request.texture().name(), request.texture().data(), "texture");
     }
     const FingerPath path = readFingerPathFile(settings.path);
     ScriptedRunReportContext report;
@@ -188,7 +126,7 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
       report, maxTicks);
     flush();
     net::RunReply last;
-    last.set_summary_json(clientSummary(summary, request));
+    last.set_summary_json(clientSummary(summary, request, folder));
     if (!write(last))
     {
       return {grpc::StatusCode::CANCELLED, "the client went away"};

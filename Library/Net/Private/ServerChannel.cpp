@@ -10,12 +10,21 @@
 namespace proxima::detail
 {
 
-std::shared_ptr<grpc::Channel> connectToServer(const std::string& server)
+std::shared_ptr<grpc::Channel> connectToServer(const ServerConnection& connection)
 {
+  const std::string& server = connection.server;
   grpc::ChannelArguments arguments;
   arguments.SetMaxSendMessageSize(std::numeric_limits<int>::max());
   arguments.SetMaxReceiveMessageSize(std::numeric_limits<int>::max());
-  auto channel = grpc::CreateCustomChannel(server, grpc::InsecureChannelCredentials(), arguments);
+  const bool tls = !connection.tlsRootCertificates.empty();
+  std::shared_ptr<grpc::ChannelCredentials> credentials = grpc::InsecureChannelCredentials();
+  if (tls)
+  {
+    grpc::SslCredentialsOptions options;
+    options.pem_root_certs = connection.tlsRootCertificates;
+    credentials = grpc::SslCredentials(options);
+  }
+  auto channel = grpc::CreateCustomChannel(server, credentials, arguments);
   // A refused connection (nothing listens there) is known at once: gRPC's channel goes to
   // TRANSIENT_FAILURE and would retry with backoff until the deadline, so the client stops at the
   // first failure rather than waiting out the 10 s left for a slow network to connect.
@@ -25,8 +34,12 @@ std::shared_ptr<grpc::Channel> connectToServer(const std::string& server)
   {
     if (state == GRPC_CHANNEL_TRANSIENT_FAILURE || state == GRPC_CHANNEL_SHUTDOWN)
     {
-      throw InputError("--server", "no Proxima server answers at " + server +
-                                     " (the connection failed: is `proxima serve` running there?)");
+      throw InputError("--server",
+                       "no Proxima server answers at " + server +
+                         (tls ? " over TLS (the connection or the handshake failed: is `proxima "
+                                "serve --tls-cert` running there, with a certificate for that "
+                                "name signed by --tls-ca?)"
+                              : " (the connection failed: is `proxima serve` running there?)"));
     }
     if (!channel->WaitForStateChange(state, deadline))
     {

@@ -6,6 +6,7 @@
 // touch and untouch events come for the right shape, and an upload that dies or is malformed
 // leaves the old model live while the state goes on.
 #include "Geometry/ProceduralMeshes.h"
+#include "IO/InputChecks/InputError.h"
 #include "Net/HapticClient.h"
 #include "Net/RemoteRuns.h"
 #include "Runtime/SimulatedDevice.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <fstream>
 #include <mutex>
 #include <thread>
 
@@ -167,8 +169,9 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
     {
       live = s.time;
     }
+    // Not fading: the runtime fades the force while its proxy loop is starved (a loaded machine).
     return live >= 0.0 && s.modelVersion == receipt.version && s.contacts > 0 &&
-           s.time > std::max(1.05, live + 0.2);
+           s.time > std::max(1.05, live + 0.2) && (s.flags & kTickForceFading) == 0;
   };
   ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
     live = -1.0;
@@ -247,9 +250,12 @@ TEST_F(LiveServer, ANewModelReplacesTheOldAndItsTouchEnds)
 
 TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
 {
-  HapticClient client(m_address);
-  sphereShape(client, 2, {});
-  const std::uint64_t live = client.commit().version;
+  std::uint64_t live = 0;
+  {
+    HapticClient owner(m_address);
+    sphereShape(owner, 2, {});
+    live = owner.commit().version;
+  } // gone: no client owns the model, so a bare gRPC client may upload
   const std::uint64_t tickBefore = m_runtime->latestState().tick;
 
   // A client that dies in the middle of an upload: part of a 81,920-triangle sphere, then gone.
@@ -272,6 +278,7 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
     context.TryCancel();
     EXPECT_FALSE(writer->Finish().ok());
   }
+  HapticClient client(m_address);
   // A malformed model: a triangle beyond its points. Refused by name; nothing swapped.
   client.beginShape("broken");
   client.vertex({0.0, 0.0, 0.0});
@@ -359,4 +366,145 @@ TEST_F(LiveServer, BadRequestsAreRefusedInWords)
 }
 
 } // namespace
+} // namespace proxima
+
+namespace proxima
+{
+
+TEST_F(LiveServer, OneClientOwnsTheModelAndTheOthersObserve)
+{
+  auto owner = std::make_unique<HapticClient>(m_address);
+  EXPECT_EQ(owner->role(), HapticClientRole::Owner);
+  // A second owner is refused in words; an observer follows but may not commit.
+  try
+  {
+    HapticClient second(m_address);
+    ADD_FAILURE() << "two clients owned the model";
+  }
+  catch (const InputError& error)
+  {
+    std::printf("[ refused  ] %s\n", error.what());
+    EXPECT_NE(std::string(error.what()).find("another client owns the model"), std::string::npos)
+      << error.what();
+  }
+  HapticClient observer(ServerConnection{m_address, {}, {}}, HapticClientRole::Observer);
+  sphereShape(observer, 1, {});
+  EXPECT_THROW(observer.commit(), std::logic_error);
+  // A bare gRPC upload without the owner's key is refused by the server itself.
+  {
+    auto stub = net::HapticServer::NewStub(
+      grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
+    grpc::ClientContext context;
+    net::ModelReceipt receipt;
+    auto writer = stub->UploadModel(&context, &receipt);
+    net::ModelUpload commit;
+    commit.set_commit(true);
+    writer->Write(commit);
+    writer->WritesDone();
+    const grpc::Status status = writer->Finish();
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+    EXPECT_NE(status.error_message().find("only it may change it"), std::string::npos);
+  }
+  Collected seen;
+  follow(observer, seen, 200.0);
+  sphereShape(*owner, 2, {});
+  const std::uint64_t version = owner->commit().version;
+  ASSERT_TRUE(seen.waitFor([&](const Collected& c) {
+    return !c.samples.empty() && c.samples.back().modelVersion == version;
+  }));
+  // The owner goes: another client may own the model as soon as it has (the server lets go
+  // before the owner's call ends), and change it.
+  owner.reset();
+  auto next = std::make_unique<HapticClient>(m_address);
+  sphereShape(*next, 1, {0.2, 0.0, 0.0});
+  const std::uint64_t nextVersion = next->commit().version;
+  EXPECT_EQ(nextVersion, version + 1);
+  ASSERT_TRUE(
+    seen.waitFor([&](const Collected& c) { return c.samples.back().modelVersion == nextVersion; }));
+  EXPECT_EQ(observer.stopStateStream(), "");
+}
+
+// A scene file as the model, sent with its mesh: a plate (box.obj, 10 x 20 x 1 cm) on a slide
+// joint along z with a spring of ks = 1000 N/m, its top at z = 5 cm under the finger that presses
+// to 4.5 cm. Two springs in series, kp and ks: at rest the plate is pushed down by
+// d = kp (h + r - z_finger) / (kp + ks) and the force is ks d (no geometry of the code's own).
+TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
+{
+  std::string folder = ::testing::TempDir();
+  if (!folder.empty() && folder.back() == '/')
+  {
+    folder.pop_back();
+  }
+  const std::string scene = folder + "/spring-plate.json";
+  {
+    std::ofstream out(scene);
+    out << R"({"version": 2, "objects": [{"mesh": ")" << PROXIMA_SOURCE_DATA
+        << R"(/Meshes/box.obj", "pose": {"translation": [0, 0, 0.045]},
+         "material": {"static_friction": 0.2, "dynamic_friction": 0.1},
+         "body": {"joint": {"type": "slide", "axis": [0, 0, 1], "anchor": [0, 0, 0.045],
+                            "stiffness": 1000, "damping": 20},
+                  "density": 1000}}]})";
+  }
+  HapticClient client(m_address);
+  Collected collected;
+  follow(client, collected, 200.0);
+  client.scene(scene);
+  EXPECT_THROW(client.vertex({0.0, 0.0, 0.0}), std::logic_error);
+  const ModelReceiptInfo receipt = client.commit();
+  EXPECT_EQ(receipt.shapes, 1u);
+  EXPECT_EQ(receipt.triangles, 12u);
+  const double kp = 1000.0;
+  const double ks = 1000.0;
+  const double d = kp * (0.05 + kProxyRadius - 0.045) / (kp + ks);
+  // Held: the finger at rest for over a second, the plate settled (damping ratio 0.7).
+  ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
+    int held = 0;
+    for (const LiveSample& s : c.samples)
+    {
+      held +=
+        (s.modelVersion == receipt.version && s.time > 2.5 && (s.flags & kTickForceFading) == 0)
+          ? 1
+          : 0;
+    }
+    return held >= 50;
+  }));
+  client.stopStateStream();
+  int checked = 0;
+  for (const LiveSample& s : collected.samples)
+  {
+    if (s.modelVersion == receipt.version && s.time > 2.5 && (s.flags & kTickForceFading) == 0)
+    {
+      ++checked;
+      EXPECT_EQ(s.shape, 0);
+      EXPECT_NEAR(s.proxy.z, 0.05 + kProxyRadius - d, 2e-5);
+      EXPECT_NEAR(s.force.z, ks * d, 0.02);
+    }
+  }
+  const LiveSample& last = collected.samples.back();
+  std::printf("[ measured ] the plate pushed down: proxy z %.6f m (closed form %.6f), force "
+              "%.4f N (closed form %.4f), %d samples\n",
+              last.proxy.z, 0.05 + kProxyRadius - d, last.force.z, ks * d, checked);
+
+  // A scene whose mesh is broken is refused in the words of a local run, naming the client's
+  // files; the plate stays.
+  const std::string broken = folder + "/broken-scene.json";
+  const std::string brokenMesh = folder + "/broken.obj";
+  {
+    std::ofstream(brokenMesh) << "v 0 0 0\nv 1 0 0\nf 1 2 3\n";
+    std::ofstream(broken) << R"({"version": 1, "objects": [{"mesh": "broken.obj"}]})";
+  }
+  client.scene(broken);
+  try
+  {
+    client.commit();
+    ADD_FAILURE() << "a broken mesh in a scene was accepted";
+  }
+  catch (const std::invalid_argument& error)
+  {
+    std::printf("[ refused  ] %s\n", error.what());
+    EXPECT_NE(std::string(error.what()).find(brokenMesh), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(m_runtime->liveSceneVersion(), receipt.version);
+}
+
 } // namespace proxima

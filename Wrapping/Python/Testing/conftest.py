@@ -1,6 +1,7 @@
 """What the Python tests share: where the build, the sources and the shared meshes are (ctest
 sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_SHARED_DATA), and the cases they run."""
 import os
+import signal
 import subprocess
 
 import numpy
@@ -59,3 +60,32 @@ def read_cli_trace(file):
 
 def without_timing(summary):
     return {k: v for k, v in summary.items() if k not in TIMED_KEYS + ("budget",)}
+
+
+def read_obj(file):
+    """An OBJ file's points and triangles (the first three corners of each face) as arrays."""
+    points, triangles = [], []
+    with open(file) as stream:
+        for line in stream:
+            fields = line.split()
+            if fields and fields[0] == "v":
+                points.append([float(v) for v in fields[1:4]])
+            elif fields and fields[0] == "f":
+                triangles.append([int(f.split("/")[0]) - 1 for f in fields[1:4]])
+    return numpy.array(points), numpy.array(triangles)
+
+
+@pytest.fixture
+def live_server(tmp_path):
+    """`proxima serve --device sim` on a free loopback port, its finger above the origin for
+    0.5 s, then pressing down to z = 4.5 cm by 1 s and held there: "HOST:PORT"."""
+    path = tmp_path / "press.csv"
+    path.write_text("t,x,y,z\n0,0,0,0.08\n0.5,0,0,0.08\n1.0,0,0,0.045\n600,0,0,0.045\n")
+    process = subprocess.Popen([os.path.join(BUILD, "bin", "proxima"), "serve", "--listen",
+                                "127.0.0.1:0", "--device", "sim", "--path", str(path)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = process.stdout.readline()
+    assert "listening on" in line, process.stderr.read()
+    yield line.strip().rsplit(" ", 1)[1]
+    process.send_signal(signal.SIGINT)
+    assert process.wait(timeout=30) == 0

@@ -11,9 +11,14 @@ application beside a `proxima serve --device` elsewhere.
         draw(sample["proxy"], sample["force"])
 
 Shapes are given as arrays (the C++ client's vertex-by-vertex calls would be slow in Python),
-under a stack of rigid transforms and a material, as in the C++ client.
+under a stack of rigid transforms and a material, as in the C++ client; or a whole scene file
+with its meshes, textures and bodies (`scene`). One client at a time owns the model (the
+default role); `role="observer"` follows the state of a model another client owns.
 """
+import json
 import math
+import os
+import threading
 import time
 
 import grpc
@@ -27,11 +32,22 @@ PART_ITEMS = 65536
 
 
 class HapticClient:
-    def __init__(self, server, token=None, timeout=10.0):
-        """Connects to `server` (HOST:PORT); ConnectionError when nothing answers there."""
+    def __init__(self, server, token=None, timeout=10.0, role="owner", tls_ca=None):
+        """Connects to `server` (HOST:PORT) as the model's "owner" or as an "observer", over TLS
+        when `tls_ca` names the PEM file that signs the server's certificate. ConnectionError
+        when nothing answers there, PermissionError when another client owns the model."""
+        if role not in ("owner", "observer"):
+            raise ValueError(f"role: 'owner' or 'observer', not {role!r}")
         self.server = server
-        self._channel = grpc.insecure_channel(server, options=[
-            ("grpc.max_send_message_length", -1), ("grpc.max_receive_message_length", -1)])
+        self.role = role
+        options = [("grpc.max_send_message_length", -1), ("grpc.max_receive_message_length", -1)]
+        if tls_ca is None:
+            self._channel = grpc.insecure_channel(server, options=options)
+        else:
+            with open(tls_ca, "rb") as stream:
+                roots = stream.read()
+            self._channel = grpc.secure_channel(
+                server, grpc.ssl_channel_credentials(root_certificates=roots), options=options)
         try:
             grpc.channel_ready_future(self._channel).result(timeout=timeout)
         except grpc.FutureTimeoutError:
@@ -42,6 +58,29 @@ class HapticClient:
         self._stack = [numpy.eye(4)]
         self._material = _messages.ShapeMaterial(stiffness=1.0)
         self._shapes = []
+        self._scene = None
+        self._ownership = None
+        self._owner_metadata = ()
+        if role == "owner":
+            # Held open for the client's life: the server keeps the model this client's until
+            # the call ends (close(), or the process or its connection goes).
+            self._letting_go = threading.Event()
+            self._ownership = self._stub.HoldOwnership(self._holding(), metadata=self._metadata)
+            try:
+                grant = next(self._ownership)
+            except grpc.RpcError as error:
+                self._letting_go.set()
+                self._ownership = None
+                if error.code() == grpc.StatusCode.FAILED_PRECONDITION:
+                    raise PermissionError(error.details()) from None
+                raise _error(error, server) from None
+            self._owner_metadata = (("proxima-owner", grant.key),)
+
+    def _holding(self):
+        """The owner's side of HoldOwnership: nothing sent, ended when the client lets go."""
+        self._letting_go.wait()
+        return
+        yield  # a generator that sends no message
 
     # The transform stack: rigid motions applied to the shapes given after them.
     def load_identity(self):
@@ -93,10 +132,50 @@ class HapticClient:
                              numpy.asarray(triangles, dtype=numpy.uint32).reshape(-1, 3),
                              normals, texture_coordinates))
 
+    def scene(self, file):
+        """A scene file (Documentation/SceneFiles.md) as the whole model: it is sent with every
+        file it names (meshes, texture images, an MJCF file), and the server reads it as
+        `proxima run --scene` does; its bodies move there. Errors come back from commit()."""
+        if self._shapes:
+            raise RuntimeError("scene: a scene file is the whole model, and shapes are pending")
+        with open(file, "rb") as stream:
+            document = json.loads(stream.read())
+        folder = os.path.dirname(file)
+        bundle = _messages.SceneBundle(scene_name=file)
+        names = {}
+
+        def bundled(path):
+            resolved = path if os.path.isabs(path) else os.path.join(folder, path)
+            if resolved not in names:
+                extension = os.path.splitext(resolved)[1]
+                if not extension[1:].isalnum():
+                    extension = ""
+                names[resolved] = f"file{len(names)}{extension}"
+                with open(resolved, "rb") as data:
+                    bundle.files.add(local_name=names[resolved], client_name=resolved,
+                                     data=data.read())
+            return names[resolved]
+
+        if isinstance(document, dict):
+            if isinstance(document.get("mjcf"), str):
+                document["mjcf"] = bundled(document["mjcf"])
+            for entry in document.get("objects", []) if isinstance(document.get("objects"), list) else []:
+                if isinstance(entry, dict) and isinstance(entry.get("mesh"), str):
+                    entry["mesh"] = bundled(entry["mesh"])
+                material = entry.get("material") if isinstance(entry, dict) else None
+                textures = material.get("textures") if isinstance(material, dict) else None
+                for texture in textures if isinstance(textures, list) else []:
+                    if isinstance(texture, dict) and isinstance(texture.get("image"), str):
+                        texture["image"] = bundled(texture["image"])
+        bundle.scene_json = json.dumps(document).encode()
+        self._scene = bundle
+
     def pending_shapes(self):
         return len(self._shapes)
 
     def _parts(self):
+        if self._scene is not None:
+            yield _messages.ModelUpload(scene=self._scene)
         for index, (name, material, points, triangles, normals, uvs) in enumerate(self._shapes):
             count = max(len(points), len(triangles))
             for start in range(0, max(count, 1), PART_ITEMS):
@@ -118,12 +197,17 @@ class HapticClient:
     def commit(self):
         """Sends the shapes given since the last commit as the server's new model; returns the
         receipt (version, shapes, triangles, build_ms, live_ms) once it is live there. ValueError
-        with the server's words for a model it refuses (the old model stays)."""
+        with the server's words for a model it refuses (the old model stays); PermissionError for
+        an observer."""
+        if self.role != "owner":
+            raise PermissionError("commit: this client observes; only the owner changes the model")
         try:
-            receipt = self._stub.UploadModel(self._parts(), metadata=self._metadata)
+            receipt = self._stub.UploadModel(self._parts(),
+                                             metadata=self._metadata + self._owner_metadata)
         except grpc.RpcError as error:
             raise _error(error, self.server) from None
         self._shapes = []
+        self._scene = None
         return {"version": receipt.version, "shapes": receipt.shapes,
                 "triangles": receipt.triangles, "build_ms": receipt.build_ms,
                 "live_ms": receipt.live_ms}
@@ -155,6 +239,16 @@ class HapticClient:
             call.cancel()
 
     def close(self):
+        """Ends the ownership (another client may own the model then) and the connection."""
+        if self._ownership is not None:
+            # The call ends once the server has let go: another client may own the model then.
+            self._letting_go.set()
+            try:
+                for _ in self._ownership:
+                    pass
+            except grpc.RpcError:
+                pass  # the server has gone: nothing is owned there
+            self._ownership = None
         self._channel.close()
 
 
@@ -169,6 +263,6 @@ def _error(error, server):
     if code == grpc.StatusCode.UNIMPLEMENTED:
         return ConnectionError(f"the server at {server} owns no device "
                                "(start it with proxima serve --device)")
-    if code == grpc.StatusCode.UNAUTHENTICATED:
+    if code in (grpc.StatusCode.UNAUTHENTICATED, grpc.StatusCode.FAILED_PRECONDITION):
         return PermissionError(error.details())
     return ConnectionError(f"the server at {server} failed: {error.details()}")
