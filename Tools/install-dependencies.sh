@@ -37,6 +37,8 @@ packages=(
   # runtime (proxima.haptic_client, generated from the same .proto)
   libgrpc++-dev libprotobuf-dev protobuf-compiler protobuf-compiler-grpc python3-grpcio
   python3-protobuf
+  # the TLS test of the server makes a self-signed certificate
+  openssl
   # rigid bodies and mechanisms (Library/Dynamics)
   libmujoco-dev
   # the Python module (pybind11), the vtkHaptic* classes in VTK's Python, its tests (pytest)

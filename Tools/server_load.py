@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The live server under load (issue 16; Documentation/Server.md): `proxima serve --device sim`
 holding a still finger at 1 kHz for RUN_SECONDS, once with no client (the floor of the same
-server), once with a client following the state at 1 kHz (the stream's latency), and once with
-that client and another uploading the shared 1.5M-triangle skull. Each run's servo statistics
+server), once with a client following the state at 1 kHz (the stream's latency), once with
+that client and another uploading the shared 1.5M-triangle skull, and once with that client and
+another killed (SIGKILL) KILL_SECONDS into its upload of the skull. Each run's servo statistics
 come from the server's --summary; the table goes to Documentation/ServerLoadTable.md (Server.md
 links it).
 
@@ -21,6 +22,9 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RUN_SECONDS = 10.0
 FOLLOW_SECONDS = 8.0
+#: Into `proxima remote upload` of the skull: reading it and streaming it (it commits at about
+#: 0.5 s on this VM).
+KILL_SECONDS = 0.3
 
 
 def start_server(proxima, work, name):
@@ -49,6 +53,22 @@ def finish(process):
     return json.loads(out)
 
 
+def killed_upload(proxima, address, mesh):
+    """Starts an upload of `mesh` and kills it KILL_SECONDS in; what the table says of it."""
+    uploader = client(proxima, address, "upload", "--mesh", mesh, "--scale", "0.001")
+    time.sleep(KILL_SECONDS)
+    ended = uploader.poll()
+    uploader.send_signal(signal.SIGKILL)
+    uploader.communicate()
+    return {"killed": ended is None}
+
+
+def last_model_version(state_csv):
+    with open(state_csv) as stream:
+        rows = stream.read().splitlines()
+    return int(rows[-1].split(",")[14])
+
+
 def run(proxima, work, name, follow, upload, mesh):
     server, address, summary = start_server(proxima, work, name)
     start = time.monotonic()
@@ -59,18 +79,38 @@ def run(proxima, work, name, follow, upload, mesh):
         # A small model to follow the proxy on (its client owns the model while it uploads),
         # then an observer's stream at 1 kHz.
         finish(client(proxima, address, "upload", "--mesh", tiny))
+        state = os.path.join(work, name + "-state.csv")
         follower = client(proxima, address, "follow", "--follow", str(FOLLOW_SECONDS),
-                          "--rate", "1000")
-    if upload:
+                          "--rate", "1000", "--state-out", state)
+    killed = None
+    if upload == "kill":
+        time.sleep(1.0)
+        killed = killed_upload(proxima, address, mesh)
+    elif upload:
         time.sleep(1.0)
         uploader = client(proxima, address, "upload", "--mesh", mesh, "--scale", "0.001")
     followed = finish(follower) if follower else None
     uploaded = finish(uploader) if uploader else None
+    if killed is not None:
+        # The model the follower saw last: the small one, if the killed upload changed nothing.
+        killed["model_version"] = last_model_version(state)
+        uploaded = killed
     time.sleep(max(0.0, RUN_SECONDS - (time.monotonic() - start)))
     server.send_signal(signal.SIGINT)
     server.wait(timeout=60)
     with open(summary) as stream:
         return json.load(stream), followed, uploaded
+
+
+def upload_cell(uploaded):
+    if not uploaded:
+        return ""
+    if "killed" in uploaded:
+        return ("killed %.1f s in%s; the model stayed version %d (the small one)" % (
+            KILL_SECONDS, "" if uploaded["killed"] else " (it had already ended)",
+            uploaded["model_version"]))
+    return "%d triangles: built %.0f ms, live %.0f ms later" % (
+        uploaded["triangles"], uploaded["build_ms"], uploaded["live_ms"])
 
 
 def main():
@@ -81,9 +121,11 @@ def main():
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="server-load-")
     rows = []
-    for name, follow, upload in [("no client", False, False), ("a client following at 1 kHz", True, False),
-                                 ("following, and another uploading the skull", True, True)]:
-        server, followed, uploaded = run(args.proxima, work, name.split()[0], follow, upload,
+    for number, (name, follow, upload) in enumerate([("no client", False, False),
+                                 ("a client following at 1 kHz", True, False),
+                                 ("following, and another uploading the skull", True, True),
+                                 ("following, and another killed mid-upload", True, "kill")]):
+        server, followed, uploaded = run(args.proxima, work, "run%d" % number, follow, upload,
                                          args.mesh)
         servo = server["servo"]
         latency = followed["latency_ms"] if followed else None
@@ -95,9 +137,7 @@ def main():
             "%.3f / %.3f / %.3f" % (latency["median"], latency["p99"], latency["max"])
             if latency else "",
             "%d of %d" % (followed["dropped_samples"], followed["samples"]) if followed else "",
-            "%d triangles: built %.0f ms, live %.0f ms later" % (
-                uploaded["triangles"], uploaded["build_ms"], uploaded["live_ms"])
-            if uploaded else ""))
+            upload_cell(uploaded)))
         print(rows[-1])
         scheduling = servo.get("scheduling", "")
     with open(os.path.join(ROOT, "Documentation", "ServerLoadTable.md"), "w") as out:
