@@ -451,6 +451,16 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         sample.contacts = message.contacts();
         sample.shape = message.shape();
         sample.flags = message.flags();
+        for (const net::BodyPose& body : message.bodies())
+        {
+          LiveBodyPose pose;
+          pose.shape = body.shape();
+          pose.pose.row[0] = fromMessage(body.row_x());
+          pose.pose.row[1] = fromMessage(body.row_y());
+          pose.pose.row[2] = fromMessage(body.row_z());
+          pose.pose.translation = fromMessage(body.translation());
+          sample.bodies.push_back(pose);
+        }
         sample.modelVersion = message.model_version();
         sample.droppedSamples = message.dropped_samples();
         if (onTouch)

@@ -51,6 +51,14 @@ struct ModelReceiptInfo
   double liveMilliseconds = 0.0;
 };
 
+/// Where a moving shape (a body of an uploaded scene) is: a point p of the shape as committed is
+/// now at pose.apply(p).
+struct LiveBodyPose
+{
+  int shape = 0;
+  RigidTransform pose;
+};
+
 /// One sample of the server's state.
 struct LiveSample
 {
@@ -66,6 +74,8 @@ struct LiveSample
   std::uint64_t modelVersion = 0;
   /// Samples the server could not send on time because this client read too slowly, so far.
   std::uint64_t droppedSamples = 0;
+  /// The model's bodies (a scene with bodies) after the server's newest dynamics step.
+  std::vector<LiveBodyPose> bodies;
   /// The server's wall clock when it wrote the sample and this client's when it read it (ns
   /// since 1970): their difference is the stream's latency where the clocks agree (one machine,
   /// or synchronised ones).

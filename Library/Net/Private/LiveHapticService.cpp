@@ -225,6 +225,16 @@ grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
       }
     }
     touched = now;
+    const BodyPoses bodies = m_runtime.latestBodyPoses();
+    for (int b = 0; b < bodies.count; ++b)
+    {
+      net::BodyPose* pose = sample.add_bodies();
+      pose->set_shape(static_cast<std::int32_t>(bodies.objects[b]));
+      setVector(bodies.poses[b].row[0], pose->mutable_row_x());
+      setVector(bodies.poses[b].row[1], pose->mutable_row_y());
+      setVector(bodies.poses[b].row[2], pose->mutable_row_z());
+      setVector(bodies.poses[b].translation, pose->mutable_translation());
+    }
     sample.set_dropped_samples(dropped);
     sample.set_sent_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(
                          std::chrono::system_clock::now().time_since_epoch())

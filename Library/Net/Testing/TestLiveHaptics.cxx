@@ -478,6 +478,11 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
       EXPECT_EQ(s.shape, 0);
       EXPECT_NEAR(s.proxy.z, 0.05 + kProxyRadius - d, 2e-5);
       EXPECT_NEAR(s.force.z, ks * d, 0.02);
+      // The plate's pose, streamed: down its slide by d.
+      ASSERT_EQ(s.bodies.size(), 1u);
+      EXPECT_EQ(s.bodies[0].shape, 0);
+      EXPECT_NEAR(s.bodies[0].pose.translation.z, -d, 2e-5);
+      EXPECT_NEAR(s.bodies[0].pose.translation.x, 0.0, 1e-12);
     }
   }
   const LiveSample& last = collected.samples.back();

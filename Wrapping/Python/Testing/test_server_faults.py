@@ -196,4 +196,11 @@ def test_a_scene_file_goes_up_with_its_files(live_server, tmp_path):
     with pytest.raises(ValueError, match="broken.obj"):
         owner.commit()
     assert next(owner.stream(10.0))["model_version"] == receipt["version"]
+    # A scene with a body (the lever's hinged plate, out of the finger's reach): its pose is
+    # streamed, at rest where the scene put it.
+    owner.scene(os.path.join(SOURCE, "Data", "Scenes", "lever.json"))
+    lever = owner.commit()["version"]
+    sample = next(s for s in owner.stream(100.0, seconds=30) if s["model_version"] == lever)
+    assert [shape for shape, _ in sample["bodies"]] == [0]
+    assert numpy.abs(sample["bodies"][0][1] - numpy.eye(4)).max() < 1e-9
     owner.close()

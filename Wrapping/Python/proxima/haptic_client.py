@@ -215,7 +215,8 @@ class HapticClient:
     def stream(self, rate_hz, seconds=None):
         """The server's state, `rate_hz` samples per second (1 to 1000), as dicts (tick, t,
         finger, proxy, force, contacts, shape, flags, model_version, events, dropped_samples,
-        latency_ms), for `seconds` or until the caller stops iterating."""
+        bodies as (shape, 4x4 pose) pairs, latency_ms), for `seconds` or until the caller stops
+        iterating."""
         call = self._stub.StreamState(_messages.StateRequest(rate_hz=rate_hz),
                                       metadata=self._metadata)
         end = None if seconds is None else time.monotonic() + seconds
@@ -229,6 +230,7 @@ class HapticClient:
                        "model_version": message.model_version,
                        "events": [(e.shape, e.touched) for e in message.events],
                        "dropped_samples": message.dropped_samples,
+                       "bodies": [(b.shape, _pose(b)) for b in message.bodies],
                        "latency_ms": (received - message.sent_ns) / 1e6}
                 if end is not None and time.monotonic() >= end:
                     break
@@ -254,6 +256,14 @@ class HapticClient:
 
 def _vector(v):
     return numpy.array([v.x, v.y, v.z])
+
+
+def _pose(body):
+    """A body's pose as a 4x4 matrix: a point p of the shape as committed is now at M (p, 1)."""
+    matrix = numpy.eye(4)
+    matrix[:3, :3] = [_vector(body.row_x), _vector(body.row_y), _vector(body.row_z)]
+    matrix[:3, 3] = _vector(body.translation)
+    return matrix
 
 
 def _error(error, server):
