@@ -60,12 +60,9 @@ def leftovers():
     return set(glob.glob(os.path.join(tempfile.gettempdir(), "proxima-remote-??????")))
 
 
-before = leftovers()
-server, address = start_server()
-for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"),
-                                  ("liver", "VH_M_Liver.glb", "0.5", "0.002")):
-    options = ["--mesh", os.path.join(meshes, mesh), "--scale", scale, "--radius", radius,
-               "--path", os.path.join(paths, f"{name}-probe.csv")]
+def compare_with_local(name, options):
+    """Runs `options` here and on the server; fails unless the traces are the same (but for
+    solve_ns) and the summaries too (but for the clock). Returns the rows and the summary."""
     local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"))
     remote = run("remote", "--server", address, "run", *options,
                  "--out", os.path.join(work, f"{name}-remote.csv"))
@@ -77,9 +74,21 @@ for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"
     if local_rows != remote_rows:
         first = next(i for i, (a, b) in enumerate(zip(local_rows, remote_rows)) if a != b)
         fail(f"{name}: the remote trace differs from the local one at row {first}")
-    if untimed(json.loads(local.stdout)) != untimed(json.loads(remote.stdout)):
-        fail(f"{name}: the remote summary differs from the local one")
-    contact = json.loads(remote.stdout)["contact_ticks"]
+    local_summary, remote_summary = json.loads(local.stdout), json.loads(remote.stdout)
+    if untimed(local_summary) != untimed(remote_summary):
+        fail(f"{name}: the remote summary differs: {untimed(local_summary)} "
+             f"{untimed(remote_summary)}")
+    return remote_rows, remote_summary
+
+
+before = leftovers()
+server, address = start_server()
+for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"),
+                                  ("liver", "VH_M_Liver.glb", "0.5", "0.002")):
+    remote_rows, summary = compare_with_local(
+        name, ["--mesh", os.path.join(meshes, mesh), "--scale", scale, "--radius", radius,
+               "--path", os.path.join(paths, f"{name}-probe.csv")])
+    contact = summary["contact_ticks"]
     if contact < 1000:
         fail(f"{name}: only {contact} contact ticks: the comparison says little")
     print(f"{name}: {len(remote_rows) - 1} ticks ({contact} in contact), the same as proxima run")
@@ -89,21 +98,10 @@ scenes, body_paths = os.path.join(source, "Data", "Scenes"), os.path.join(source
 for name, scene, path in (("crank", "crank.json", "Bodies/crank-turn.csv"),
                           ("lever", "lever.json", "Bodies/lever-press-hold.csv"),
                           ("spheres", "spheres-on-table.json", "spheres-on-table-press-stroke.csv")):
-    options = ["--scene", os.path.join(scenes, scene), "--path", os.path.join(body_paths, path)]
-    local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"))
-    remote = run("remote", "--server", address, "run", *options,
-                 "--out", os.path.join(work, f"{name}-remote.csv"))
-    if local.returncode != 0 or remote.returncode != 0:
-        fail(f"{name}: local {local.returncode} {local.stderr} remote {remote.returncode} "
-             f"{remote.stderr}")
-    if rows(os.path.join(work, f"{name}-local.csv")) != rows(os.path.join(work, f"{name}-remote.csv")):
-        fail(f"{name}: the remote trace of the scene differs from the local one")
-    local_summary, remote_summary = json.loads(local.stdout), json.loads(remote.stdout)
-    if untimed(local_summary) != untimed(remote_summary):
-        fail(f"{name}: the remote summary differs: {untimed(local_summary)} "
-             f"{untimed(remote_summary)}")
-    bodies = len(remote_summary.get("bodies", []))
-    print(f"{name} scene: {remote_summary['ticks']} ticks, {bodies} bodies, the same as proxima run")
+    _, summary = compare_with_local(name, ["--scene", os.path.join(scenes, scene), "--path",
+                                           os.path.join(body_paths, path)])
+    print(f"{name} scene: {summary['ticks']} ticks, {len(summary.get('bodies', []))} bodies, "
+          "the same as proxima run")
 missing_scene = os.path.join(work, "missing-mesh.json")
 with open(missing_scene, "w") as out:
     out.write('{"version": 1, "objects": [{"mesh": "no-such-mesh.obj"}]}')
