@@ -2,8 +2,8 @@
 // as a sequence of upload messages, as the server receives them, each checked by ModelAssembly
 // in order until one is refused, and built (meshes and sphere trees) when a commit comes, within
 // limits small enough for every input to end quickly. A scene bundle is written into a folder of
-// its own, with the server's checks of the bundled names, and its scene file read and checked
-// (its meshes are the mesh readers' fuzz targets'). Every input must end with a model or a
+// its own, with the server's checks of the bundled names, and its scene file read and checked,
+// down to naming only bundled files (its meshes are the mesh readers' fuzz targets'). Every input must end with a model or a
 // refusal: no crash, hang or leak.
 #include "IO/Scene/SceneFile.h"
 #include "Net/Private/ModelAssembly.h"
@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       try
       {
         proxima::detail::RunFolder folder;
-        static_cast<void>(proxima::readSceneFile(folder.writeScene(part.scene())));
+        folder.requireBundledFiles(proxima::readSceneFile(folder.writeScene(part.scene())));
       }
       catch (const std::exception&)
       {

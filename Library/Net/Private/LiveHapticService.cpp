@@ -1,6 +1,7 @@
 #include "Net/Private/LiveHapticService.h"
 
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/Scene/SceneFile.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "Net/Private/RunFolder.h"
 #include "Net/Private/TokenCheck.h"
@@ -147,7 +148,9 @@ bool LiveHapticService::buildScene(const net::SceneBundle& bundle, BuiltModel& m
     RunFolder folder;
     try
     {
-      LoadedScene loaded = loadSceneFile(folder.writeScene(bundle));
+      const SceneDescription description = readSceneFile(folder.writeScene(bundle));
+      folder.requireBundledFiles(description);
+      LoadedScene loaded = proxima::buildScene(description);
       for (const LoadedObject& object : loaded.objects)
       {
         model.triangles += object.numTriangles;

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace proxima::detail
@@ -84,7 +85,44 @@ std::string RunFolder::writeScene(const net::SceneBundle& bundle)
     }
     writeAs(file.local_name(), file.data(), file.client_name());
   }
+  m_sceneName = bundle.scene_name();
   return writeAs("scene.json", bundle.scene_json(), bundle.scene_name());
+}
+
+void RunFolder::requireBundledFiles(const SceneDescription& description) const
+{
+  const auto require = [this](const std::string& path) {
+    std::error_code ignored;
+    const fs::path file = fs::weakly_canonical(path, ignored);
+    const bool bundled = file.parent_path() == fs::weakly_canonical(m_path, ignored) &&
+                         bundledName(file.filename().string()) && fs::exists(file, ignored);
+    if (!bundled)
+    {
+      throw InputError(m_sceneName, "names '" + path.substr(0, 200) +
+                                      "', which is not a file of the upload: a scene sent to a "
+                                      "server names only the files sent with it");
+    }
+  };
+  for (const SceneObject& object : description.objects)
+  {
+    require(object.mesh);
+    for (const SceneTexture& texture : object.material.textures)
+    {
+      require(texture.image);
+    }
+  }
+  if (!description.mjcf.empty())
+  {
+    require(description.mjcf);
+    std::ifstream in(description.mjcf, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.find("file=") != std::string::npos || text.find("file =") != std::string::npos)
+    {
+      throw InputError(m_sceneName, "its MJCF file names files of its own (file=...), which a "
+                                    "scene sent to a server cannot: its mechanism must be made "
+                                    "of the scene's meshes and MuJoCo's own shapes");
+    }
+  }
 }
 
 std::string RunFolder::writeAs(const std::string& localName, const std::string& data,

@@ -4,6 +4,8 @@
 // file stands for, so that messages name the client's files.
 #pragma once
 
+#include "IO/Scene/SceneDescription.h"
+
 #include "proxima_haptic.pb.h"
 
 #include <filesystem>
@@ -33,6 +35,11 @@ public:
   /// not one a client makes ("file<K>.<ext>"), and std::runtime_error when it cannot write.
   std::string writeScene(const net::SceneBundle& bundle);
 
+  /// Throws InputError naming the scene when `description` (read from writeScene's file) names a
+  /// file that is not one of the bundle's (a path elsewhere on the server), or its MJCF file
+  /// names files of its own (includes, mesh assets: not sent, and they would be the server's).
+  void requireBundledFiles(const SceneDescription& description) const;
+
   /// `text` with the local paths replaced by the client's names.
   std::string clientWords(std::string text) const;
 
@@ -42,6 +49,8 @@ private:
 
   std::filesystem::path m_path;
   std::vector<std::pair<std::string, std::string>> m_names;
+  /// The scene file's client name, once writeScene has written it.
+  std::string m_sceneName;
 };
 
 } // namespace proxima::detail

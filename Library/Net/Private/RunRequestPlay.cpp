@@ -2,6 +2,7 @@
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/Scene/SceneFile.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "Net/Private/RunFolder.h"
 #include "Net/Private/TickColumns.h"
@@ -88,6 +89,7 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
     if (scene)
     {
       settings.scene = folder.writeScene(request.scene());
+      folder.requireBundledFiles(readSceneFile(settings.scene));
     }
     else
     {

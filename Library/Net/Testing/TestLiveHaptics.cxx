@@ -512,4 +512,52 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
   EXPECT_EQ(m_runtime->liveSceneVersion(), receipt.version);
 }
 
+// A bundle whose scene names a file of the server's own, or an MJCF file that names files, sent by
+// a bare gRPC client (no client owns the model): refused, nothing read there, the model kept.
+TEST_F(LiveServer, ABundledSceneNamesOnlyItsOwnFiles)
+{
+  const std::uint64_t live = m_runtime->liveSceneVersion();
+  const auto bareUpload = [this](const std::string& json, const std::string& mjcf) {
+    auto stub = net::HapticServer::NewStub(
+      grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
+    grpc::ClientContext context;
+    net::ModelReceipt receipt;
+    auto writer = stub->UploadModel(&context, &receipt);
+    net::ModelUpload upload;
+    net::SceneBundle& bundle = *upload.mutable_scene();
+    bundle.set_scene_name("client.json");
+    bundle.set_scene_json(json);
+    net::BundledFile* mesh = bundle.add_files();
+    mesh->set_local_name("file0.obj");
+    mesh->set_client_name("plate.obj");
+    mesh->set_data("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    if (!mjcf.empty())
+    {
+      net::BundledFile* mechanism = bundle.add_files();
+      mechanism->set_local_name("file1.xml");
+      mechanism->set_client_name("mechanism.xml");
+      mechanism->set_data(mjcf);
+    }
+    writer->Write(upload);
+    net::ModelUpload commit;
+    commit.set_commit(true);
+    writer->Write(commit);
+    writer->WritesDone();
+    return writer->Finish();
+  };
+  const grpc::Status elsewhere =
+    bareUpload(R"({"version": 1, "objects": [{"mesh": "/etc/hostname"}]})", {});
+  EXPECT_EQ(elsewhere.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(elsewhere.error_message().find("not a file of the upload"), std::string::npos)
+    << elsewhere.error_message();
+  const grpc::Status includes = bareUpload(
+    R"({"version": 2, "mjcf": "file1.xml", "objects": [{"mesh": "file0.obj", "body": {"name": "b"}}]})",
+    R"(<mujoco><include file="/etc/other.xml"/><worldbody><body name="b"><joint type="hinge"/>)"
+    R"(<geom size="0.1"/></body></worldbody></mujoco>)");
+  EXPECT_EQ(includes.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(includes.error_message().find("names files of its own"), std::string::npos)
+    << includes.error_message();
+  EXPECT_EQ(m_runtime->liveSceneVersion(), live);
+}
+
 } // namespace proxima
