@@ -516,7 +516,14 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
 // a bare gRPC client (no client owns the model): refused, nothing read there, the model kept.
 TEST_F(LiveServer, ABundledSceneNamesOnlyItsOwnFiles)
 {
+  // The server's empty scene, once the proxy loop has it (at its first tick).
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (m_runtime->liveSceneVersion() == 0 && std::chrono::steady_clock::now() < deadline)
+  {
+    std::this_thread::sleep_for(1ms);
+  }
   const std::uint64_t live = m_runtime->liveSceneVersion();
+  ASSERT_EQ(live, 1u);
   const auto bareUpload = [this](const std::string& json, const std::string& mjcf) {
     auto stub = net::HapticServer::NewStub(
       grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
