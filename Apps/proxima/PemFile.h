@@ -3,25 +3,19 @@
 // inside gRPC's handshake.
 #pragma once
 
+#include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
 
-#include <fstream>
-#include <iterator>
 #include <string>
 
 namespace proxima::cli
 {
 
-/// The file's text. Throws InputError naming the file when it cannot be read or holds no
-/// "-----BEGIN" line; `what` says what it should hold ("certificate", "private key").
+/// The file's text. Throws InputError naming the file when it cannot be read (readWholeFile) or
+/// holds no "-----BEGIN" line; `what` says what it should hold ("certificate", "private key").
 inline std::string readPemFile(const std::string& path, const std::string& what)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    throw InputError(path, "cannot read the " + what + " file");
-  }
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = detail::readWholeFile(path, what + " file");
   if (text.find("-----BEGIN ") == std::string::npos)
   {
     throw InputError(path, "not a PEM " + what + " (no -----BEGIN line)");

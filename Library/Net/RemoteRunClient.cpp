@@ -11,24 +11,14 @@
 
 #include <grpcpp/grpcpp.h>
 
-#include <fstream>
-#include <iterator>
-
 namespace proxima
 {
 namespace
 {
 void readFile(const std::string& path, const char* kind, net::FileContent& file)
 {
-  detail::requireReadableFile(path, kind);
-  std::ifstream in(path, std::ios::binary);
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof())
-  {
-    throw InputError(path, "cannot read the file");
-  }
   file.set_name(path);
-  file.set_data(std::move(data));
+  file.set_data(detail::readWholeFile(path, kind));
 }
 
 net::RunSettings settingsMessage(const ScriptedRunSettings& s, double maxTicks)

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <system_error>
 
 namespace proxima::detail
@@ -45,6 +46,26 @@ std::uintmax_t requireReadableFile(const std::string& path, const std::string& k
     throw InputError(path, "the file is empty");
   }
   return size;
+}
+
+std::string readWholeFile(const std::string& path, const std::string& kind)
+{
+  requireReadableFile(path, kind);
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream)
+  {
+    throw InputError(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
+  }
+  std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+  if (stream.bad())
+  {
+    throw InputError(path, "cannot read the file");
+  }
+  if (text.empty())
+  {
+    throw InputError(path, "the file is empty");
+  }
+  return text;
 }
 
 std::string readFileHead(const std::string& path, std::size_t count)

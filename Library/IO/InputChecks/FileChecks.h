@@ -13,6 +13,10 @@ namespace proxima::detail
 /// the message about a directory ("is a directory, not a mesh file").
 std::uintmax_t requireReadableFile(const std::string& path, const std::string& kind = "mesh file");
 
+/// The whole file, after requireReadableFile's checks. Throws InputError naming the file when it
+/// cannot be opened or read.
+std::string readWholeFile(const std::string& path, const std::string& kind);
+
 /// Up to `count` bytes from the start of the file (fewer when it is shorter).
 std::string readFileHead(const std::string& path, std::size_t count);
 

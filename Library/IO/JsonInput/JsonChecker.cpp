@@ -2,10 +2,6 @@
 
 #include "IO/InputChecks/FileChecks.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <set>
 
 namespace proxima
@@ -30,26 +26,6 @@ std::string cutShort(std::string text, std::size_t longest)
 namespace
 {
 using Json = CheckedJson;
-
-std::string readWholeFile(const std::string& path, const std::string& kind)
-{
-  detail::requireReadableFile(path, kind);
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream)
-  {
-    throw InputError(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
-  }
-  std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-  if (stream.bad())
-  {
-    throw InputError(path, "cannot read the file");
-  }
-  if (text.empty())
-  {
-    throw InputError(path, "the file is empty");
-  }
-  return text;
-}
 
 // nlohmann keeps the last of two equal keys without a word, which would hide a pasted line that
 // overrides an earlier one; the parser callback sees every key, so repeats are refused there.
@@ -228,7 +204,7 @@ std::size_t JsonChecker::editDistance(std::string_view a, std::string_view b)
 
 CheckedJson readCheckedJsonFile(const std::string& path, const std::string& kind)
 {
-  return parseJson(path, readWholeFile(path, kind));
+  return parseJson(path, detail::readWholeFile(path, kind));
 }
 
 } // namespace proxima

@@ -1,12 +1,12 @@
 #include "Net/Private/RunFolder.h"
 
+#include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 namespace proxima::detail
@@ -114,8 +114,7 @@ void RunFolder::requireBundledFiles(const SceneDescription& description) const
   if (!description.mjcf.empty())
   {
     require(description.mjcf);
-    std::ifstream in(description.mjcf, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = readWholeFile(description.mjcf, "MJCF file");
     if (text.find("file=") != std::string::npos || text.find("file =") != std::string::npos)
     {
       throw InputError(m_sceneName, "its MJCF file names files of its own (file=...), which a "

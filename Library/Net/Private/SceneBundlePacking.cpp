@@ -7,26 +7,12 @@
 
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 
 namespace proxima::detail
 {
 namespace
 {
-std::string readBytes(const std::string& path, const char* kind)
-{
-  requireReadableFile(path, kind);
-  std::ifstream in(path, std::ios::binary);
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof())
-  {
-    throw InputError(path, "cannot read the file");
-  }
-  return data;
-}
-
 // The bundle's files, one per path however often the scene names it.
 class BundleFiles
 {
@@ -57,7 +43,7 @@ public:
     net::BundledFile* file = m_bundle.add_files();
     file->set_local_name(local);
     file->set_client_name(path);
-    file->set_data(readBytes(path, kind));
+    file->set_data(readWholeFile(path, kind));
     m_names.emplace(path, local);
     return local;
   }

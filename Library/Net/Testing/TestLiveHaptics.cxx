@@ -110,6 +110,14 @@ protected:
     client.popMatrix();
   }
 
+  // A bare gRPC client of the server: no owner's key, no token, as any program speaking the
+  // .proto directly.
+  std::unique_ptr<net::HapticServer::Stub> bareStub() const
+  {
+    return net::HapticServer::NewStub(
+      grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
+  }
+
   SimulatedDevice m_device;
   std::unique_ptr<ThreadedRuntime> m_runtime;
   std::unique_ptr<RemoteRunServer> m_server;
@@ -392,8 +400,7 @@ TEST_F(LiveServer, OneClientOwnsTheModelAndTheOthersObserve)
   EXPECT_THROW(observer.commit(), std::logic_error);
   // A bare gRPC upload without the owner's key is refused by the server itself.
   {
-    auto stub = net::HapticServer::NewStub(
-      grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
+    auto stub = bareStub();
     grpc::ClientContext context;
     net::ModelReceipt receipt;
     auto writer = stub->UploadModel(&context, &receipt);
@@ -525,8 +532,7 @@ TEST_F(LiveServer, ABundledSceneNamesOnlyItsOwnFiles)
   const std::uint64_t live = m_runtime->liveSceneVersion();
   ASSERT_EQ(live, 1u);
   const auto bareUpload = [this](const std::string& json, const std::string& mjcf) {
-    auto stub = net::HapticServer::NewStub(
-      grpc::CreateChannel(m_address, grpc::InsecureChannelCredentials()));
+    auto stub = bareStub();
     grpc::ClientContext context;
     net::ModelReceipt receipt;
     auto writer = stub->UploadModel(&context, &receipt);
