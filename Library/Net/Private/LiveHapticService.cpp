@@ -120,6 +120,15 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
   const auto publishStart = Clock::now();
   std::uint64_t version = 0;
   {
+    // The runtime keeps the proxy where its loop left it only once a scene is live; before the
+    // loop's first tick (a commit right after the server started) the start given here would
+    // count, and the latest state's proxy is not yet known. The server published its empty
+    // scene with the device's start before it began to serve: wait until the loop has it.
+    const auto firstTick = Clock::now() + std::chrono::seconds(5);
+    while (m_runtime.liveSceneVersion() == 0 && Clock::now() < firstTick && !m_stopping)
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
     const std::lock_guard<std::mutex> lock(m_publishing);
     version = m_runtime.publishScene(std::move(model.scene), m_proxy, m_runtime.latestState().proxy,
                                      nullptr, std::move(model.dynamics));
