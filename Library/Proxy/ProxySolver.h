@@ -95,12 +95,27 @@ public:
   static constexpr int kCacheTriangles = 96;
 
   ProxySolver() = default;
+  /// A copy is a replica of this solver's whole state (proxy, caches, planes): its next update
+  /// runs exactly the update this one would run next, which is how a tick's work is replayed
+  /// (Runtime/TickReplay.h). It shares the scene and the moving objects: on a scene with moving
+  /// objects the two solvers move the same meshes, so replay only static scenes. Copying costs
+  /// the solver's size (over a hundred kilobytes of fixed buffers) and allocates nothing.
+  ProxySolver(const ProxySolver&) = default;
+  ProxySolver& operator=(const ProxySolver&) = default;
 
   /// Uses `scene` (not owned; must outlive its use here) with `parameters`. The proxy stays where
   /// it was (at the origin for a new solver): place it with resetProxy, or with placeProxyStart
   /// (ProxyStart.h), which moves a start inside a closed object out of it; HapticSession
   /// (Runtime/HapticSession.h) does that at the first finger it is given.
   void setScene(const CollisionScene* scene, const ProxyParameters& parameters);
+  /// Changes only the work budget (ProxyParameters::tickBudget*), keeping the proxy and its
+  /// caches: a replica given no budget ends a budget-limited tick where it would have settled.
+  void setTickBudget(int iterations, double seconds)
+  {
+    m_parameters.tickBudgetIterations = iterations > 0 ? iterations : 0;
+    m_parameters.tickBudgetSeconds = seconds > 0.0 ? seconds : 0.0;
+  }
+  const ProxyParameters& parameters() const { return m_parameters; }
   /// Places the proxy without moving through the scene (start of a run, or a teleport).
   void resetProxy(const Vec3& position)
   {
@@ -268,9 +283,10 @@ private:
 
   const CollisionScene* m_scene = nullptr;
   ProxyParameters m_parameters;
-  /// The moving objects in use (null: a static scene), and the set setMovingObjects made.
+  /// The moving objects in use (null: a static scene), and the set setMovingObjects made (shared
+  /// with copies, so that a copy's m_moving never dangles).
   MovingObjectSet* m_moving = nullptr;
-  std::unique_ptr<MovingObjectSet> m_ownedMoving;
+  std::shared_ptr<MovingObjectSet> m_ownedMoving;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;
