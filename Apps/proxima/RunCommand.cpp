@@ -108,7 +108,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   settings.servoRate = shared.rate;
   settings.recordTicks = numTicks;
   settings.duration = fingerPath.endTime();
-  settings.tickBudget = tickBudget(shared, TickWorkBudget::servoSafe());
+  settings.tickBudget = tickBudget(shared, TickWorkBudget::realtimeDefault());
   // The platform's floor, right before the run in this process: a bare loop with the servo's
   // rate, duration and scheduling and no work, counted by the servo's own clock code.
   DeadlineFloorReport floor;
@@ -251,8 +251,8 @@ int run(const RunOptions& options)
   std::string realtimeJson;
   if (options.realtime)
   {
-    // The threaded runtime defaults to the budget that keeps a 4 kHz servo fed.
-    outcome.budget = tickBudget(shared, TickWorkBudget::servoSafe());
+    // The threaded runtime defaults to the real-time default budget.
+    outcome.budget = tickBudget(shared, TickWorkBudget::realtimeDefault());
     // The skin the runtime's solver takes: the settings', or the scene's when they give 0.
     outcome.skin = resolveSkin(proxyParameters(shared), scene.diagonal(), scene.maxAbsCoordinate());
     const auto runStart = std::chrono::steady_clock::now();
@@ -333,9 +333,10 @@ Command addRunCommand(CLI::App& parent)
                  "longer path is refused before anything is written")
     ->check(tickCount());
   addTickBudgetOption(*app, options->scene,
-                      "Default: none in lockstep, so that lockstep traces stay reproducible bit "
-                      "for bit (an iteration budget keeps them so, a time budget does not); 50us "
-                      "with --realtime, which keeps a 4 kHz servo fed");
+                      "Default: none in lockstep; default with --realtime. Lockstep traces stay "
+                      "reproducible bit for bit with an iteration budget (default is one: "
+                      "`--tick-budget default` limits the ticks the real-time loop limits), not "
+                      "with a time budget");
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return run(*options); }};
 }

@@ -122,8 +122,11 @@ void addTickBudgetOption(CLI::App& app, SceneOptions& options, const std::string
   app
     .add_option("--tick-budget", options.tickBudget,
                 "Work budget of one proxy tick: <N>us of wall time, <N>it move/update "
-                "iterations, both (50us,40it), or none. A tick that reaches it stops with the "
-                "proxy where it is (always feasible) and the next tick goes on from there. " +
+                "iterations, both (50us,40it), default (the real-time default: " +
+                  std::to_string(kDefaultTickBudgetIterations) +
+                  "it, deterministic, with a wall-time safety cap in real time only) or none. A "
+                  "tick that reaches it stops with the "
+                  "proxy where it is (always feasible) and the next tick goes on from there. " +
                   defaults)
     ->check(tickBudgetValue());
 }

@@ -169,7 +169,8 @@ HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& sc
                             shell::ForcePlot& plot, TickDynamics* bodies)
 {
   ProxyParameters parameters = proxyParameters(shared);
-  tickBudget(shared, TickWorkBudget{}).applyTo(parameters);
+  // The real-time default, deterministic: the picture shows the tick the window would show.
+  tickBudget(shared, TickWorkBudget::realtimeDefault()).applyTo(parameters);
   const std::uint64_t ticks = ticksCovering(0.0, at, shared.rate);
   HapticState last;
   vtk::playLockstepStates(
@@ -352,9 +353,10 @@ int view(const ViewOptions& options)
   haptics->SetMaxIterations(shared.maxIterations);
   haptics->SetSkin(shared.skin);
   haptics->SetServoRate(shared.rate);
-  const TickWorkBudget budget = tickBudget(shared, TickWorkBudget::servoSafe());
+  const TickWorkBudget budget = tickBudget(shared, TickWorkBudget::realtimeDefault());
   haptics->SetTickBudgetSeconds(budget.seconds);
   haptics->SetTickBudgetIterations(budget.iterations);
+  haptics->SetTickSafetyCapSeconds(budget.safetyCapSeconds);
 
   const SceneActors surface = makeSceneActors(*scene, bodies.get());
 
@@ -590,8 +592,8 @@ Command addViewCommand(CLI::App& parent)
   addSceneOptionsAfterPath(*app, options->scene);
   addTickBudgetOption(
     *app, options->scene,
-    "Default: 50us, which keeps a 4 kHz servo fed (250 us per period); none for a "
-    "--screenshot of the scripted path, which runs in lockstep");
+    "Default: default, the real-time default budget, also for a --screenshot of the scripted "
+    "path, which runs in lockstep");
   app->callback([options, app] { checkSceneOptions(options->scene, *app); });
   return Command{app, [options] { return view(*options); }};
 }

@@ -297,7 +297,7 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
   ProxyParameters budgeted = parameters;
-  m_impl->settings.tickBudget.applyTo(budgeted);
+  m_impl->settings.tickBudget.applyToRealTime(budgeted);
   // What the new scene must not trap: before any scene is live, the start the caller asks for;
   // after, the proxy where the proxy loop last left it. Not the finger: a finger pressed into an
   // object that the new scene keeps is in contact, not trapped, and its proxy stays put.

@@ -53,10 +53,12 @@ struct RuntimeSettings
   double duration = 0.0;
   /// The proxy loop's work budget per tick; it replaces the budget fields of every scene's
   /// ProxyParameters (publishScene), because how long a proxy tick may take is a property of
-  /// the loops' schedule, not of the scene. Default 50 us (TickWorkBudget::servoSafe): a 4 kHz
-  /// servo then sees a fresh proxy at least every ~50 us plus one iteration. A budget-limited
-  /// tick leaves the proxy feasible where it stopped and the next tick goes on from there.
-  TickWorkBudget tickBudget = TickWorkBudget::servoSafe();
+  /// the loops' schedule, not of the scene. Default: TickWorkBudget::realtimeDefault(), an
+  /// iteration budget (deterministic, so a lockstep run given `--tick-budget default` limits the
+  /// same ticks) with a wall-time safety cap applied only here (applyToRealTime). A
+  /// budget-limited tick leaves the proxy feasible where it stopped and the next tick goes on
+  /// from there.
+  TickWorkBudget tickBudget = TickWorkBudget::realtimeDefault();
 };
 
 class ThreadedRuntime

@@ -12,6 +12,10 @@ std::string TickWorkBudget::text() const
   {
     return "none";
   }
+  if (isRealtimeDefault())
+  {
+    return "default";
+  }
   std::string spelled;
   if (seconds > 0.0)
   {
@@ -39,7 +43,12 @@ std::string parseTickBudget(const std::string& text, TickWorkBudget& budget)
   {
     return {};
   }
-  const std::string usage = " (give <N>us, <N>it, both as <N>us,<N>it, or none)";
+  if (text == "default")
+  {
+    budget = TickWorkBudget::realtimeDefault();
+    return {};
+  }
+  const std::string usage = " (give <N>us, <N>it, both as <N>us,<N>it, default or none)";
   if (text.empty())
   {
     return "empty" + usage;

@@ -9,10 +9,18 @@
 namespace proxima
 {
 
-/// The budget for a proxy loop that shares a 4 kHz servo's machine: a 4 kHz servo has 250 us per
-/// period and runs on its own thread (paper section 8), so a proxy tick that stops after 50 us
-/// (plus the one iteration it is in) publishes a fresh proxy well within each servo period.
-inline constexpr double kServoSafeTickBudgetSeconds = 50e-6;
+/// The real-time default (`--tick-budget default`): deterministic first, so that a lockstep run
+/// given it budgets every tick as the real-time loop does, bit for bit on any machine. Chosen
+/// from the run time against error of the budget sweep (Documentation/Performance.md): on
+/// person-like probing of real meshes the proxy settles within this many move/update iterations
+/// on all but a small share of ticks, and a limited tick recovers within a few ticks.
+inline constexpr int kDefaultTickBudgetIterations = 8;
+
+/// The threaded runtime's safety cap beside the default's iterations: wall time, so it is not
+/// deterministic, and set above what the default's iterations take (a few tens of microseconds)
+/// so that only a tick the platform stalled, or a pathological mesh, meets it. A 4 kHz servo has
+/// 250 us per period and runs on its own thread (paper section 8).
+inline constexpr double kTickSafetyCapSeconds = 200e-6;
 
 struct TickWorkBudget
 {
@@ -21,20 +29,43 @@ struct TickWorkBudget
   double seconds = 0.0;
   /// Move/update iterations (0: no iteration budget). Deterministic.
   int iterations = 0;
+  /// A wall-time cap that only the threaded runtime applies (applyToRealTime), beside a
+  /// deterministic budget; lockstep ignores it (0: none).
+  double safetyCapSeconds = 0.0;
 
   bool none() const { return !(seconds > 0.0) && iterations <= 0; }
 
-  /// The budget of a proxy loop beside a 4 kHz servo (kServoSafeTickBudgetSeconds).
-  static TickWorkBudget servoSafe() { return TickWorkBudget{kServoSafeTickBudgetSeconds, 0}; }
+  /// The real-time default: kDefaultTickBudgetIterations, with kTickSafetyCapSeconds in real time.
+  static TickWorkBudget realtimeDefault()
+  {
+    return TickWorkBudget{0.0, kDefaultTickBudgetIterations, kTickSafetyCapSeconds};
+  }
+  bool isRealtimeDefault() const
+  {
+    const TickWorkBudget byDefault = realtimeDefault();
+    return seconds == byDefault.seconds && iterations == byDefault.iterations &&
+           safetyCapSeconds == byDefault.safetyCapSeconds;
+  }
 
-  /// Sets the solver's budget fields to this budget.
+  /// Sets the solver's budget fields to this budget, as a lockstep run uses it (no safety cap).
   void applyTo(ProxyParameters& parameters) const
   {
     parameters.tickBudgetSeconds = seconds > 0.0 ? seconds : 0.0;
     parameters.tickBudgetIterations = iterations > 0 ? iterations : 0;
   }
 
-  /// The command line's spelling: "none", "50us", "40it" or "50us,40it".
+  /// The same for the threaded runtime on the real clock: the safety cap where no time budget
+  /// is given.
+  void applyToRealTime(ProxyParameters& parameters) const
+  {
+    applyTo(parameters);
+    if (!(seconds > 0.0) && safetyCapSeconds > 0.0)
+    {
+      parameters.tickBudgetSeconds = safetyCapSeconds;
+    }
+  }
+
+  /// The command line's spelling: "none", "default", "50us", "40it" or "50us,40it".
   std::string text() const;
 };
 
@@ -43,7 +74,8 @@ struct TickWorkBudget
 inline constexpr double kMaxTickBudgetMicroseconds = 1e6;
 inline constexpr long kMaxTickBudgetIterations = 1000000;
 
-/// Parses a --tick-budget value: `none`, or one or two comma-separated terms `<N>us` (microseconds
+/// Parses a --tick-budget value: `none`, `default` (TickWorkBudget::realtimeDefault), or one or
+/// two comma-separated terms `<N>us` (microseconds
 /// of wall time, N > 0, fractions allowed) and `<N>it` (move/update iterations, a whole N > 0),
 /// each at most once: `50us`, `40it`, `50us,40it`. Returns why `text` is refused, empty when it
 /// is taken (and `budget` holds it).

@@ -167,8 +167,8 @@ bool vtkHapticRenderer::Start()
   settings.realtimeScheduling = this->RealtimeScheduling != 0;
   settings.duration = this->Duration;
   settings.streamCapacity = static_cast<std::size_t>(this->StateStreamCapacity);
-  settings.tickBudget =
-    proxima::TickWorkBudget{this->TickBudgetSeconds, this->TickBudgetIterations};
+  settings.tickBudget = proxima::TickWorkBudget{this->TickBudgetSeconds, this->TickBudgetIterations,
+                                                this->TickSafetyCapSeconds};
   m_proxyLoopRate = settings.proxyRate > 0.0 ? settings.proxyRate : settings.servoRate;
   m_runtime.reset();
   try
@@ -298,7 +298,8 @@ void vtkHapticRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxIterations: " << this->MaxIterations << "\n";
   os << indent << "Skin: " << this->Skin << " (0: from the scene)\n";
   os << indent << "TickBudgetSeconds: " << this->TickBudgetSeconds
-     << ", TickBudgetIterations: " << this->TickBudgetIterations << " (0 and 0: none)\n";
+     << ", TickBudgetIterations: " << this->TickBudgetIterations
+     << ", TickSafetyCapSeconds: " << this->TickSafetyCapSeconds << " (all 0: none)\n";
   os << indent << "StateStreamCapacity: " << this->StateStreamCapacity << "\n";
   os << indent << "ServoRate: " << this->ServoRate << "\n";
   os << indent << "ProxyRate: " << this->ProxyRate << "\n";

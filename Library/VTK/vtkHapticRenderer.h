@@ -89,14 +89,17 @@ public:
 
   ///@{
   /// The proxy loop's work budget per tick (RuntimeSettings::tickBudget): seconds of wall time
-  /// (default 50e-6, which keeps a 4 kHz servo fed: 250 us per period, the proxy publishes at
-  /// least every ~50 us plus one iteration) and move/update iterations (default 0: none). 0 and
-  /// 0 means no budget. A budget-limited tick leaves the proxy feasible where it stopped; the
-  /// next tick goes on from there. Read at Start.
+  /// (default 0: none), move/update iterations (default proxima::kDefaultTickBudgetIterations,
+  /// the real-time default, deterministic) and a wall-time safety cap used when no seconds are
+  /// given (default proxima::kTickSafetyCapSeconds, 200e-6: within a 4 kHz servo's 250 us
+  /// period). All 0 means no budget. A budget-limited tick leaves the proxy feasible where it
+  /// stopped; the next tick goes on from there. Read at Start.
   vtkSetClampMacro(TickBudgetSeconds, double, 0.0, 1.0);
   vtkGetMacro(TickBudgetSeconds, double);
   vtkSetClampMacro(TickBudgetIterations, int, 0, 1000000);
   vtkGetMacro(TickBudgetIterations, int);
+  vtkSetClampMacro(TickSafetyCapSeconds, double, 0.0, 1.0);
+  vtkGetMacro(TickSafetyCapSeconds, double);
   ///@}
 
   ///@{
@@ -189,8 +192,9 @@ protected:
   double MaxForce = 10.0;
   int MaxIterations = 256;
   double Skin = 0.0;
-  double TickBudgetSeconds = proxima::kServoSafeTickBudgetSeconds;
-  int TickBudgetIterations = 0;
+  double TickBudgetSeconds = 0.0;
+  int TickBudgetIterations = proxima::kDefaultTickBudgetIterations;
+  double TickSafetyCapSeconds = proxima::kTickSafetyCapSeconds;
   double ServoRate = 4000.0;
   double ProxyRate = 0.0;
   vtkTypeBool RealtimeScheduling = 0;

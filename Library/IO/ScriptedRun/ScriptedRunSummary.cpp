@@ -178,6 +178,11 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
   budgetJson["tick_budget"] = outcome.budget.text();
   budgetJson["seconds"] = outcome.budget.seconds;
   budgetJson["iterations"] = outcome.budget.iterations;
+  if (context.realtime && !(outcome.budget.seconds > 0.0) && outcome.budget.safetyCapSeconds > 0.0)
+  {
+    // The threaded runtime's wall-time cap beside an iteration budget (applyToRealTime).
+    budgetJson["safety_cap_s"] = outcome.budget.safetyCapSeconds;
+  }
   budgetJson["limited_ticks"] = outcome.summary.budgetLimitedTicks();
   if (context.realtime)
   {
