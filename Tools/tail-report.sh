@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the worst-tick report (DESIGN.md section 5, "the tail is the headline"): builds
 # Testing/Benchmarks/BenchProbeTail, runs the probe path on every shared mesh at radii 0.5-3 mm
-# (and the shared person-like paths), each without a budget and with the real-time runtime's
-# servo-safe budget, and plots the tail into Documentation/Figures/probe_tail.png, the cost of
-# one iteration into Documentation/Figures/probe_iteration_cost.png, and both into
-# Documentation/ProbeTailTable.md. A few minutes on one core; QUICK=1 for one seed and two
+# (and the shared person-like paths), each without a budget and with each iteration budget of the
+# sweep, every tick replayed for its work, and plots the tail into
+# Documentation/Figures/probe_tail.png, run time against error over the budgets into
+# Documentation/Figures/budget_sweep.png (its table into the generated block at the top of
+# Documentation/Performance.md), the cost of one iteration into
+# Documentation/Figures/probe_iteration_cost.png, and the cases into
+# Documentation/ProbeTailTable.md. About ten minutes on one core; QUICK=1 for one seed and two
 # radii. Run it on an idle machine: the figure and table name the machine and its load.
 # Usage: bash Tools/tail-report.sh [build-dir]      (default: build; SEEDS=3, QUICK=0)
 set -euo pipefail
@@ -27,6 +30,8 @@ fi
 
 python="$(matplotlib_python tail-report.sh)" || exit 1
 "$python" "$root/Testing/Benchmarks/plot_probe_tail.py" "$json" \
-  --figure "$figures/probe_tail.png" --iteration-figure "$figures/probe_iteration_cost.png" \
+  --figure "$figures/probe_tail.png" --budget-figure "$figures/budget_sweep.png" \
+  --iteration-figure "$figures/probe_iteration_cost.png" \
   --table "$root/Documentation/ProbeTailTable.md" \
+  --performance-page "$root/Documentation/Performance.md" \
   --machine "$machine"

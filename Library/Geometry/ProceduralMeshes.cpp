@@ -131,4 +131,34 @@ TriangleSoup makePrism(std::uint32_t sides, double radius, double height, const 
   return soup;
 }
 
+TriangleSoup makeSliverCylinder(std::uint32_t sides, double radius, double height,
+                                const Vec3& center)
+{
+  TriangleSoup soup;
+  sides = std::max<std::uint32_t>(sides, 3);
+  const double pi = std::acos(-1.0);
+  // Rim points: bottom ring at 2i, top ring at 2i + 1.
+  for (std::uint32_t i = 0; i < sides; ++i)
+  {
+    const double angle = 2.0 * pi * i / sides;
+    const Vec3 radial{std::cos(angle), std::sin(angle), 0.0};
+    soup.points.push_back(center + radial * radius + Vec3{0.0, 0.0, -0.5 * height});
+    soup.points.push_back(center + radial * radius + Vec3{0.0, 0.0, 0.5 * height});
+  }
+  for (std::uint32_t i = 0; i < sides; ++i)
+  {
+    const std::uint32_t bottom = 2 * i;
+    const std::uint32_t next = 2 * ((i + 1) % sides);
+    soup.triangles.push_back({bottom, next, next + 1});
+    soup.triangles.push_back({bottom, next + 1, bottom + 1});
+  }
+  // The caps: fans from rim point 0, the bottom seen from below, the top from above.
+  for (std::uint32_t i = 1; i + 1 < sides; ++i)
+  {
+    soup.triangles.push_back({0, 2 * (i + 1), 2 * i});
+    soup.triangles.push_back({1, 2 * i + 1, 2 * (i + 1) + 1});
+  }
+  return soup;
+}
+
 } // namespace proxima

@@ -22,6 +22,14 @@ TriangleSoup makeBox(const Vec3& halfExtents, const Vec3& center = Vec3{});
 TriangleSoup makePrism(std::uint32_t sides, double radius, double height,
                        const Vec3& center = Vec3{});
 
+/// A closed cylinder about the z axis triangulated as CAD exporters write one: each of the `sides`
+/// side faces is two slivers the cylinder's height long and one facet wide, and each cap is a fan
+/// of sides - 2 slivers from a single rim point, so that every cap triangle shares that corner
+/// and the longest reach from it across the cap. Outward winding, no normals. The sliver-fan
+/// stress mesh of the benchmarks: a sliver's bounding sphere is far larger than the triangle.
+TriangleSoup makeSliverCylinder(std::uint32_t sides, double radius, double height,
+                                const Vec3& center = Vec3{});
+
 /// A square of side `size` in the plane z = height, split into 2 * cells^2 triangles, normal +z.
 TriangleSoup makeGrid(double size, std::uint32_t cells, double height = 0.0);
 

@@ -132,6 +132,8 @@ protected:
     {
       case 0: return makeIcosphere(3, 1.0, {0.1, -0.2, 0.3});
       case 1: return makeBox({0.5, 1.0, 0.25}, {0.0, 0.1, 0.0});
+      // Cap fans from one rim point and side slivers: closed and outward as the others.
+      case 3: return makeSliverCylinder(48, 0.2, 1.5, {0.05, 0.0, -0.1});
       default: return makePrismWithCaps();
     }
   }
@@ -224,7 +226,7 @@ TEST_P(ClosedMeshes, PointsAHairFromTheSurfaceAreOnTheirSide)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Procedural, ClosedMeshes, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Procedural, ClosedMeshes, ::testing::Values(0, 1, 2, 3));
 
 TEST(WindingNumberSoups, DuplicatedAndFlippedTrianglesAddUp)
 {
