@@ -101,10 +101,11 @@ double longestEdgeSquared(const Vec3& a, const Vec3& b, const Vec3& c)
   return std::max({squaredDistance(a, b), squaredDistance(b, c), squaredDistance(c, a)});
 }
 
-// Covers one triangle with leaf spheres like scan conversion: longest-edge bisection until every
-// piece's longest edge is at most `targetEdge`, or until `maxDepth` halvings.
-void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t triangle,
-                   double targetEdgeSquared, int maxDepth, std::vector<BuildLeaf>& leaves)
+// Longest-edge bisection of one triangle until every piece's longest edge is at most
+// `targetEdge`, or until `maxDepth` halvings; each final piece goes to `onPiece(a, b, c)`.
+template <class OnPiece>
+void bisectTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double targetEdgeSquared,
+                    int maxDepth, OnPiece&& onPiece)
 {
   struct Piece
   {
@@ -123,7 +124,7 @@ void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t tr
     const double longest = std::max({ab, bc, ca});
     if (piece.depth >= maxDepth || !(longest > targetEdgeSquared) || size + 2 > 64)
     {
-      leaves.push_back(makeLeaf(piece.a, piece.b, piece.c, triangle));
+      onPiece(piece.a, piece.b, piece.c);
       continue;
     }
     if (ab == longest)
@@ -145,6 +146,37 @@ void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t tr
       stack[size++] = Piece{m, piece.b, piece.c, piece.depth + 1};
     }
   }
+}
+
+// Covers one triangle with leaf spheres like scan conversion: a sphere per bisected piece.
+void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t triangle,
+                   double targetEdgeSquared, int maxDepth, std::vector<BuildLeaf>& leaves)
+{
+  bisectTriangle(a, b, c, targetEdgeSquared, maxDepth,
+                 [&](const Vec3& pa, const Vec3& pb, const Vec3& pc) {
+                   leaves.push_back(makeLeaf(pa, pb, pc, triangle));
+                 });
+}
+
+// The most halvings that keep a triangle within `maxPieces` pieces.
+int maxBisectionDepth(std::uint32_t maxPieces)
+{
+  int depth = 0;
+  while ((2u << depth) <= std::max<std::uint32_t>(1, maxPieces) && depth < 30)
+  {
+    ++depth;
+  }
+  return depth;
+}
+
+// How many leaf spheres coverTriangle gives the triangle, without making them.
+std::uint64_t countPieces(const Vec3& a, const Vec3& b, const Vec3& c, double targetEdgeSquared,
+                          int maxDepth)
+{
+  std::uint64_t count = 0;
+  bisectTriangle(a, b, c, targetEdgeSquared, maxDepth,
+                 [&count](const Vec3&, const Vec3&, const Vec3&) { ++count; });
+  return count;
 }
 
 // The box around leaves [begin, end) of `leaves`, each with its radius.
@@ -559,6 +591,7 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
   if (options.leafSizeFactor > 0.0)
   {
     std::vector<double> edges(std::size_t{m_numTriangles} * 3);
+    std::vector<double> shortest(m_numTriangles);
     auto squaredEdges = [&](std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t)
       {
@@ -566,23 +599,49 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
         edges[3 * t] = squaredDistance(c.a, c.b);
         edges[3 * t + 1] = squaredDistance(c.b, c.c);
         edges[3 * t + 2] = squaredDistance(c.c, c.a);
+        shortest[t] = std::min({edges[3 * t], edges[3 * t + 1], edges[3 * t + 2]});
       }
     };
     detail::parallelFor(0, m_numTriangles, kTrianglesPerChunk, squaredEdges, threads);
     auto median = edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2);
     std::nth_element(edges.begin(), median, edges.end());
-    const double target = options.leafSizeFactor * std::sqrt(*median);
+    auto medianShortest = shortest.begin() + static_cast<std::ptrdiff_t>(shortest.size() / 2);
+    std::nth_element(shortest.begin(), medianShortest, shortest.end());
+    // A CAD mesh of slivers (a cylinder's sides and its caps' fans) has long edges for most of
+    // its edges, so its median edge is as long as the slivers and would leave them whole: one
+    // leaf sphere as large as each sliver, met by every query beside it. The slivers' short
+    // edges say how fine the surface is there; a mesh of well-shaped triangles has its median
+    // shortest edge within half its median edge, and keeps the median rule.
+    const double medianLength = std::sqrt(*median);
+    const double scale = std::min(medianLength, kShortEdgeScaleFactor * std::sqrt(*medianShortest));
+    double target = options.leafSizeFactor * scale;
     if (target > 0.0)
     {
       targetEdgeSquared = target * target;
     }
+    // The short-edge rule can multiply the leaves of a mesh of slivers many times over: within
+    // kLeafSphereBudget, the length grows back toward the median rule's.
+    const int depth = maxBisectionDepth(options.maxPiecesPerTriangle);
+    const double medianTarget = options.leafSizeFactor * medianLength;
+    const std::uint64_t budget = std::max<std::uint64_t>(
+      kLeafSpheresPerTriangleBudget * std::uint64_t{m_numTriangles}, kLeafSphereBudget);
+    while (target > 0.0 && target < medianTarget)
+    {
+      std::uint64_t pieces = 0;
+      for (std::uint32_t t = 0; t < m_numTriangles && pieces <= budget; ++t)
+      {
+        const TriangleCorners& c = mesh.corners(t);
+        pieces += countPieces(c.a, c.b, c.c, targetEdgeSquared, depth);
+      }
+      if (pieces <= budget)
+      {
+        break;
+      }
+      target = std::min(medianTarget, target * 1.5);
+      targetEdgeSquared = target * target;
+    }
   }
-  int maxDepth = 0;
-  while ((2u << maxDepth) <= std::max<std::uint32_t>(1, options.maxPiecesPerTriangle) &&
-         maxDepth < 30)
-  {
-    ++maxDepth;
-  }
+  const int maxDepth = maxBisectionDepth(options.maxPiecesPerTriangle);
 
   std::vector<BuildLeaf> leaves;
   if (threads == 1)

@@ -15,11 +15,20 @@
 namespace proxima
 {
 
+/// The leaf size rule's length is the mesh's median edge, or this many times its median shortest
+/// edge (each triangle's shortest) where that is less: a mesh of slivers.
+inline constexpr double kShortEdgeScaleFactor = 2.0;
+/// Where the short-edge rule applies, the leaf spheres it may make: this many per triangle, or
+/// kLeafSphereBudget (20 bytes each) if more; past it the length grows toward the median rule's.
+inline constexpr std::uint64_t kLeafSpheresPerTriangleBudget = 8;
+inline constexpr std::uint64_t kLeafSphereBudget = std::uint64_t{1} << 20;
+
 struct SphereTreeOptions
 {
   /// Leaf size rule: a triangle whose longest edge exceeds leafSizeFactor times the mesh's median
-  /// edge length is split by longest-edge bisection until every piece is that short, and each
-  /// piece gets its own leaf sphere. 0 means one sphere per triangle.
+  /// edge length (or kShortEdgeScaleFactor times its median shortest edge, if less) is split by
+  /// longest-edge bisection until every piece is that short, and each piece gets its own leaf
+  /// sphere. 0 means one sphere per triangle.
   double leafSizeFactor = 2.0;
   /// A triangle is never split into more pieces than this (long slivers in a fine mesh).
   std::uint32_t maxPiecesPerTriangle = 256;

@@ -747,6 +747,69 @@ TEST(SphereTree, AgreesWithBruteForceOnSharedMeshes)
   EXPECT_EQ(tally.total(), 0) << "seed 0x7ee00004";
 }
 
+// A CAD cylinder of slivers (sides one facet wide and the whole height long, caps fanned from one
+// rim point): most of its edges are long, so a leaf size taken from the median edge alone left
+// every sliver whole, and every query beside the cylinder met all 384 side slivers. The leaves
+// must be tight: a query ball meets few more triangles' leaf spheres than triangles the ball
+// reaches. Only by a fan's apex, where all of a cap's 190 slivers meet, do the pieces of slivers
+// it does not reach crowd in, within about a piece of the apex.
+TEST(SphereTree, SliverCylinderLeavesAreTight)
+{
+  const TriangleMesh mesh = buildMesh(makeSliverCylinder(192, 0.02, 0.1));
+  SphereTree tree;
+  tree.build(mesh);
+  auto scratch = std::make_unique<SphereTreeScratch>();
+  Random random(0x7ee00005);
+  const double reach = 0.003;
+  // The fans' apexes (rim point 0 of each cap) and how near them the crowding is allowed.
+  const Vec3 apexes[2] = {{0.02, 0.0, -0.05}, {0.02, 0.0, 0.05}};
+  const double apexRegion = 0.008;
+  std::vector<std::uint32_t> found(mesh.numTriangles());
+  int worstExcess = 0;
+  std::uint64_t allCandidates = 0;
+  std::uint64_t allReached = 0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    // A point 0-2 mm off the side or a cap, anywhere along it.
+    const double angle = random.uniform(0.0, 6.283185307179586);
+    Vec3 point;
+    if (random.chance(0.7))
+    {
+      const double out = 0.02 + random.uniform(0.0, 0.002);
+      point = {out * std::cos(angle), out * std::sin(angle), random.uniform(-0.05, 0.05)};
+    }
+    else
+    {
+      const double at = random.uniform(0.0, 0.02);
+      point = {at * std::cos(angle), at * std::sin(angle),
+               (random.chance(0.5) ? 1.0 : -1.0) * (0.05 + random.uniform(0.0, 0.002))};
+    }
+    const std::uint32_t candidates = tree.candidatesWithin(
+      point, reach, found.data(), static_cast<std::uint32_t>(found.size()), *scratch);
+    int reached = 0;
+    for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
+    {
+      const auto closest = oracleClosestOnTriangle(extend<Quad>(point), mesh.corners(t));
+      reached += closest.squaredDistance <= Quad(reach) * Quad(reach) ? 1 : 0;
+    }
+    ASSERT_GE(static_cast<int>(candidates), reached) << "seed 0x7ee00005, point " << str(point);
+    if (distance(point, apexes[0]) > apexRegion && distance(point, apexes[1]) > apexRegion)
+    {
+      worstExcess = std::max(worstExcess, static_cast<int>(candidates) - 4 * reached);
+      allCandidates += candidates;
+      allReached += static_cast<std::uint64_t>(reached);
+    }
+  }
+  // Leaf pieces about twice the facet width: a ball of 3 mm meets each nearby sliver's pieces
+  // a little beyond what it reaches, never the whole side.
+  EXPECT_LE(worstExcess, 16) << "seed 0x7ee00005";
+  EXPECT_LE(allCandidates, 3 * allReached) << "seed 0x7ee00005";
+  std::printf("[ slivers ] %zu leaf spheres for %u triangles; candidates %.2f per triangle "
+              "reached\n",
+              static_cast<std::size_t>(tree.numLeafSpheres()), mesh.numTriangles(),
+              static_cast<double>(allCandidates) / static_cast<double>(allReached));
+}
+
 TEST(SphereTree, EmptyTreeAnswersNothing)
 {
   TriangleMesh empty;
