@@ -53,6 +53,8 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
       // near the triangle (coordinates up to |centroid| + radius): generous, as it only widens a
       // filter that the exact test follows.
       m_planeSlack[m_count] = 2.0 * off + 1e-12 * (maxAbsComponent(centroid) + radius);
+      // The edges' half-spaces are made when keepNearEdges first needs them.
+      m_edgesMade[m_count] = false;
       m_object[m_count] = objectIndex;
       ++m_count;
     }
@@ -188,6 +190,72 @@ int CandidateCache::trianglesNearSegment(const Vec3& start, const Vec3& motion, 
   return compactMarked(mask, count, out);
 }
 
+void CandidateCache::makeEdges(const CollisionScene& scene, int i) const
+{
+  // Edge k runs from corner k to corner k + 1, its outward normal is (edge x normal), and the
+  // offset is taken at corner k. Rounding can leave a corner a little outside its own edges'
+  // half-spaces: the largest such excess is the slack. A triangle without area (a zero normal)
+  // gets zero normals, which keep it whatever the query.
+  const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
+  const Vec3 normal{m_normalX[i], m_normalY[i], m_normalZ[i]};
+  const Vec3 corners[3] = {c.a, c.b, c.c};
+  double excess = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 outward = normalizedOrZero(cross(corners[(k + 1) % 3] - corners[k], normal));
+    const double offset = dot(outward, corners[k]);
+    for (const Vec3& corner : corners)
+    {
+      excess = std::max(excess, dot(outward, corner) - offset);
+    }
+    m_edgeX[k][i] = outward.x;
+    m_edgeY[k][i] = outward.y;
+    m_edgeZ[k][i] = outward.z;
+    m_edgeOffset[k][i] = offset;
+  }
+  const Vec3 center{m_sphereX[i], m_sphereY[i], m_sphereZ[i]};
+  m_edgeSlack[i] = 2.0 * excess + 1e-12 * (maxAbsComponent(center) + m_sphereRadius[i]);
+  m_edgesMade[i] = true;
+}
+
+int CandidateCache::keepNearEdges(const CollisionScene& scene, const Vec3& start,
+                                  const Vec3& motion, double reach, int* candidates,
+                                  int count) const
+{
+  const Vec3 end = start + motion;
+  int kept = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    const int i = candidates[k];
+    // A triangle no larger than the reach passed the sphere test only where its edges' test
+    // passes too, nearly always: the test pays only for triangles larger than the query.
+    if (!(m_sphereRadius[i] > reach))
+    {
+      candidates[kept++] = i;
+      continue;
+    }
+    if (!m_edgesMade[i])
+    {
+      makeEdges(scene, i);
+    }
+    // A hair over the reach: a unit normal rounded to a length a little over 1 measures a
+    // little more than the distance.
+    const double edgeReach = reach * (1.0 + 1e-12) + m_edgeSlack[i];
+    bool near = true;
+    for (int edge = 0; edge < 3; ++edge)
+    {
+      const Vec3 outward{m_edgeX[edge][i], m_edgeY[edge][i], m_edgeZ[edge][i]};
+      // Linear along the segment: its least value is at an end.
+      const double beyond =
+        std::min(dot(outward, start), dot(outward, end)) - m_edgeOffset[edge][i];
+      near = near && !(beyond > edgeReach);
+    }
+    candidates[kept] = i;
+    kept += near ? 1 : 0;
+  }
+  return kept;
+}
+
 bool CandidateCache::mayReachSegment(int i, const Vec3& start, const Vec3& motion,
                                      double motionSquared, double reach) const
 {
@@ -233,7 +301,8 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
   std::uint32_t found = 0;
   const double maxDistanceSquared = maxDistance * maxDistance;
   int near[kCapacity];
-  const int numNear = trianglesNearPoint(point, maxDistance, near);
+  const int numNear = keepNearEdges(scene, point, Vec3{}, maxDistance, near,
+                                    trianglesNearPoint(point, maxDistance, near));
   for (int k = 0; k < numNear; ++k)
   {
     const int i = near[k];
@@ -325,7 +394,9 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   // The spheres near the part of the path that can still give the first contact.
   const double bound = best.hit ? best.t : covered;
   int near[kCapacity];
-  const int numNear = trianglesNearSegment(query.start, motion * bound, beyond, near);
+  const int numNear =
+    keepNearEdges(scene, query.start, motion * bound, beyond, near,
+                  trianglesNearSegment(query.start, motion * bound, beyond, near));
   for (int k = 0; k < numNear; ++k)
   {
     if (near[k] != first)

@@ -90,6 +90,20 @@ private:
   /// The cached triangles that mayReachSegment accepts for the segment from `start` along
   /// `motion`, into `out`; returns how many. The sweep's filter, as trianglesNearPoint.
   int trianglesNearSegment(const Vec3& start, const Vec3& motion, double reach, int* out) const;
+  /// Keeps those of the `count` cached triangles in `candidates` that the segment from `start`
+  /// along `motion` (zero for a point) may come within `reach` of by their edges' half-spaces:
+  /// a triangle lies inside each of the three half-spaces bounded by an edge, across the edge
+  /// from the triangle, and a point within `reach` of it lies within `reach` of each. Returns
+  /// how many are kept, in order. The second filter after the scans above, on their few
+  /// survivors: a sliver's bounding circle is as long as the sliver, so a fan of slivers passes
+  /// the circle test wherever the fan is, and this test keeps only the slivers the query is
+  /// beside.
+  /// Only triangles larger than `reach` are tested (a smaller one passed the sphere test only
+  /// where this passes too, nearly always); their half-spaces are made the first time.
+  int keepNearEdges(const CollisionScene& scene, const Vec3& start, const Vec3& motion,
+                    double reach, int* candidates, int count) const;
+  /// The half-spaces of cached triangle `i`'s edges, for keepNearEdges.
+  void makeEdges(const CollisionScene& scene, int i) const;
 
   bool m_valid = false;
   Vec3 m_center;
@@ -108,6 +122,16 @@ private:
   double m_normalZ[kCapacity];
   double m_planeOffset[kCapacity];
   double m_planeSlack[kCapacity];
+  // Each triangle's edges: the unit normal of edge k in the triangle's plane, pointing away from
+  // the triangle, and its offset (m . x <= offset on the triangle), with the rounding slack of
+  // the three (zero normals for a triangle without area, which then always pass). Made on first
+  // use by a query (makeEdges), so mutable: they change no answer, only how fast it comes.
+  mutable double m_edgeX[3][kCapacity];
+  mutable double m_edgeY[3][kCapacity];
+  mutable double m_edgeZ[3][kCapacity];
+  mutable double m_edgeOffset[3][kCapacity];
+  mutable double m_edgeSlack[kCapacity];
+  mutable bool m_edgesMade[kCapacity];
   std::uint32_t m_object[kCapacity];
   std::uint32_t m_triangle[kCapacity];
   /// The cached triangle of the last sweep's contact, or -1 (a hint for the next sweep's order:
