@@ -76,6 +76,8 @@ endfunction()
 # something costly (the image tests' X server), run through LAUNCHER when given. Test folders are
 # only entered when PROXIMA_BUILD_TESTING is on; this returns early too, for tests beside a layer.
 # DEPENDS goes to target_link_libraries as is, so linker flags may be among the libraries.
+# PROXIMA_SHARED_MESHES is the test-data folder's meshes/ (cmake/ProximaTestData.cmake): the
+# shipped third-party meshes, and the shared ones where PROXIMA_SHARED_DATA is present.
 function(proxima_add_test name)
   if(NOT PROXIMA_BUILD_TESTING)
     return()
@@ -85,7 +87,7 @@ function(proxima_add_test name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
-    PROXIMA_SHARED_MESHES="${PROXIMA_SHARED_DATA}/meshes"
+    PROXIMA_SHARED_MESHES="${PROXIMA_TEST_DATA}/meshes"
     PROXIMA_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ${ARG_DEFINITIONS})
   if(NOT ARG_LABELS)

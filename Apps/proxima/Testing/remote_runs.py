@@ -12,7 +12,7 @@
   hinged plate turn on the server as they do locally, bit for bit, and the spheres on the table
   (three objects) too; a scene that names a missing mesh is refused naming it.
 - The server leaves none of the runs' files behind.
-Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR SOURCE_DIR
+Usage: remote_runs.py BUILD_DIR TEST_DATA_DIR SOURCE_DIR (TEST_DATA_DIR: build/TestData)
 """
 import csv
 import glob

@@ -1,5 +1,7 @@
-"""What the Python tests share: where the build, the sources and the shared meshes are (ctest
-sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_SHARED_DATA), and the cases they run."""
+"""What the Python tests share: where the build, the sources and the test meshes and paths are
+(ctest sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_TEST_DATA, the build's test-data
+folder: the shipped meshes, and the shared ones where PROXIMA_SHARED_DATA is present), and the
+cases they run."""
 import os
 import signal
 import subprocess
@@ -9,9 +11,9 @@ import pytest
 
 BUILD = os.environ.get("PROXIMA_BUILD_DIR", "")
 SOURCE = os.environ.get("PROXIMA_SOURCE_DIR", "")
-SHARED = os.environ.get("PROXIMA_SHARED_DATA", "")
-MESHES = os.path.join(SHARED, "meshes")
-PATHS = os.path.join(SHARED, "paths")
+TEST_DATA = os.environ.get("PROXIMA_TEST_DATA", "")
+MESHES = os.path.join(TEST_DATA, "meshes")
+PATHS = os.path.join(TEST_DATA, "paths")
 
 #: The shared probe paths with the settings their README gives: mesh, scale, radius.
 SHARED_CASES = {
