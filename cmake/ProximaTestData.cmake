@@ -7,6 +7,9 @@
 # that need a file only PROXIMA_SHARED_DATA has carry the label shared-data and skip, saying so.
 # Remade at every configure, so that a changed PROXIMA_SHARED_DATA leaves no stale link.
 set(PROXIMA_TEST_DATA "${PROJECT_BINARY_DIR}/TestData")
+# The test cases named for a mesh that may not ship (parameter names have `_` for `.` and `-`):
+# for proxima_add_test's SHARED_DATA_CASES.
+set(PROXIMA_SHARED_ONLY_CASES "M3x10_screw|abc_00000050_trimesh_000|cranium_bone_iso075mm")
 if(EXISTS "${PROXIMA_SHARED_DATA}/meshes")
   set(PROXIMA_HAVE_SHARED_DATA TRUE)
 else()
