@@ -123,7 +123,7 @@ for name, mesh, scale, radius in (("featuretype", "featuretype.STL", "0.03", "0.
                                   ("liver", "VH_M_Liver.glb", "0.5", "0.002")):
     mesh, path = os.path.join(meshes, mesh), os.path.join(work, f"{name}-probe.csv")
     made = run("path", "probe", "--mesh", mesh, "--scale", scale, "--radius", radius,
-               "--seed", "1", "--duration", "4", "--out", path)
+               "--seed", "1", "--duration", "8", "--out", path)
     if made.returncode != 0:
         fail(f"proxima path probe on {mesh}: {made.stderr}")
     cases.append((name, mesh, scale, radius, path))
