@@ -1,15 +1,17 @@
 #!/usr/bin/python3
-"""Makes the surgical trainer's shipped liver exercises and their scripted paths.
+"""Makes the surgical trainer's shipped exercises and their scripted paths.
 
-Reads the shared liver (../shared/data/meshes/VH_M_Liver.glb at scale 0.5, 10 cm across) with
-VTK, picks spots on its upper surface (the side a default camera looks at, +z) and writes:
+Reads the shipped liver (Data/Meshes/VH_M_Liver.glb at scale 0.5, 10 cm across) with VTK, picks
+spots on its upper surface (the side a default camera looks at, +z) and writes:
 
   Data/Scenes/liver-nodule.json.in         the liver, soft, with a hard nodule 6 mm under one spot
   Data/Exercises/liver-palpation.json.in   find the nodule and mark it
   Data/Exercises/liver-targets.json.in     touch three spots in order with 0.5-2 N
   Data/Exercises/liver-trace.json.in       follow a 4 cm line on the surface within 3 mm
 
-and on the shared cranium (cranium_bone_iso075mm.ply, millimetres, 1.5M triangles):
+and on the shared cranium (../shared/data/meshes/cranium_bone_iso075mm.ply, millimetres, 1.5M
+triangles; it may not ship), where --shared has it (else the cranium's files are left as they
+are):
 
   Data/Scenes/cranium.json.in              the skull, bone as hard as the scene's spring
   Data/Exercises/cranium-trace.json.in     trace a 4.5 cm craniotomy line on the vertex within
@@ -17,9 +19,10 @@ and on the shared cranium (cranium_bone_iso075mm.ply, millimetres, 1.5M triangle
   Data/Paths/Trainer/*.csv                 for each exercise a path that passes and one that
                                            fails (and the palpation's mark times)
 
-The .json.in files name the meshes as @PROXIMA_SHARED_DATA@/meshes/...; the build turns
-them into build/Data/{Scenes,Exercises}/ when the shared meshes are present. Deterministic: run it
-again and nothing changes. Never edit its outputs by hand.
+The .json.in files name the liver as @PROXIMA_DATA_DIR@/Meshes/VH_M_Liver.glb and the cranium as
+@PROXIMA_SHARED_DATA@/meshes/...; the build turns the liver's into build/Data/{Scenes,Exercises}/
+always, and the cranium's when the shared cranium is present. Deterministic: run it again and
+nothing changes. Never edit its outputs by hand.
 
 Usage: /usr/bin/python3 Tools/make-trainer-exercises.py [--shared ../shared/data]
 """
@@ -71,8 +74,8 @@ def read_mesh(path, scale):
     return scaled.GetOutput()
 
 
-def read_liver(shared):
-    return read_mesh(os.path.join(shared, "meshes", "VH_M_Liver.glb"), SCALE)
+def read_liver(root):
+    return read_mesh(os.path.join(root, "Data", "Meshes", "VH_M_Liver.glb"), SCALE)
 
 
 class Surface:
@@ -211,7 +214,7 @@ def main():
     parser.add_argument("--shared", default=os.path.join(root, "..", "shared", "data"))
     args = parser.parse_args()
 
-    surface = Surface(read_liver(args.shared))
+    surface = Surface(read_liver(root))
     x0, x1, y0, y1, _, top = surface.bounds
     travel = top + 0.02
     start = [(x0 + x1) / 2, (y0 + y1) / 2, travel]
@@ -232,7 +235,7 @@ def main():
     write_json(os.path.join(scenes, "liver-nodule.json.in"), {
         "version": 1,
         "objects": [{
-            "mesh": "@PROXIMA_SHARED_DATA@/meshes/VH_M_Liver.glb",
+            "mesh": "@PROXIMA_DATA_DIR@/Meshes/VH_M_Liver.glb",
             "scale": SCALE,
             "material": {
                 "stiffness": TISSUE_STIFFNESS,
@@ -315,8 +318,12 @@ def main():
     # The cranium: a craniotomy line across the vertex, 1 mm proxy on bone at 1000 N/m. The
     # passing path strokes it pressed 2 mm (2 N); the failing one presses 8 mm (8 N, over the
     # bone's 6 N limit) along the same line: covered, but damaged.
-    skull = Surface(read_mesh(os.path.join(args.shared, "meshes",
-                                           "cranium_bone_iso075mm.ply"), 0.001))
+    cranium = os.path.join(args.shared, "meshes", "cranium_bone_iso075mm.ply")
+    if not os.path.isfile(cranium):
+        print(f"make-trainer-exercises: {cranium} is absent (--shared): the cranium's exercise "
+              "and paths are left as they are")
+        return
+    skull = Surface(read_mesh(cranium, 0.001))
     write_json(os.path.join(scenes, "cranium.json.in"), {
         "version": 1,
         "objects": [{"mesh": "@PROXIMA_SHARED_DATA@/meshes/cranium_bone_iso075mm.ply",

@@ -68,7 +68,7 @@ function(proxima_add_library name)
 endfunction()
 
 # proxima_add_test(NAME SOURCES ... DEPENDS ... [LABELS label] [DEFINITIONS ...]
-#                  [ENVIRONMENT VAR=value]
+#                  [ENVIRONMENT VAR=value] [SHARED_DATA_CASES regex]
 #                  [WHOLE_PROGRAM ctest-name [LAUNCHER command...] [TIMEOUT seconds]]):
 # the one way a test program is registered. A GoogleTest program under ctest, linked with
 # gtest_main; by default each of its test cases is its own ctest entry (gtest_discover_tests).
@@ -76,16 +76,22 @@ endfunction()
 # something costly (the image tests' X server), run through LAUNCHER when given. Test folders are
 # only entered when PROXIMA_BUILD_TESTING is on; this returns early too, for tests beside a layer.
 # DEPENDS goes to target_link_libraries as is, so linker flags may be among the libraries.
+# PROXIMA_SHARED_MESHES is the test-data folder's meshes/ (cmake/ProximaTestData.cmake): the
+# shipped third-party meshes, and the shared ones where PROXIMA_SHARED_DATA is present.
+# SHARED_DATA_CASES: the discovered cases whose ctest names match the regex need files only
+# PROXIMA_SHARED_DATA has (PROXIMA_SHARED_ONLY_CASES matches the cases named for its meshes) and
+# get the label shared-data as well; a WHOLE_PROGRAM whose every case needs them lists
+# shared-data in LABELS.
 function(proxima_add_test name)
   if(NOT PROXIMA_BUILD_TESTING)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "WHOLE_PROGRAM;TIMEOUT;ENVIRONMENT"
+  cmake_parse_arguments(ARG "" "WHOLE_PROGRAM;TIMEOUT;ENVIRONMENT;SHARED_DATA_CASES"
                         "SOURCES;DEPENDS;LABELS;DEFINITIONS;LAUNCHER" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
-    PROXIMA_SHARED_MESHES="${PROXIMA_SHARED_DATA}/meshes"
+    PROXIMA_SHARED_MESHES="${PROXIMA_TEST_DATA}/meshes"
     PROXIMA_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ${ARG_DEFINITIONS})
   if(NOT ARG_LABELS)
@@ -112,12 +118,23 @@ function(proxima_add_test name)
       gtest_discover_tests(${name} PROPERTIES LABELS "${firstLabel}" DISCOVERY_TIMEOUT 60)
     endif()
     list(LENGTH ARG_LABELS numLabels)
-    if(numLabels GREATER 1)
+    if(numLabels GREATER 1 OR ARG_SHARED_DATA_CASES)
       set(labelScript "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
-      file(WRITE "${labelScript}"
-           "if(DEFINED ${name}_TESTS)\n"
-           "  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${ARG_LABELS}\")\n"
-           "endif()\n")
+      set(script "if(DEFINED ${name}_TESTS)\n")
+      if(numLabels GREATER 1)
+        string(APPEND script
+               "  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${ARG_LABELS}\")\n")
+      endif()
+      if(ARG_SHARED_DATA_CASES)
+        string(APPEND script
+               "  foreach(test IN LISTS ${name}_TESTS)\n"
+               "    if(test MATCHES [==[${ARG_SHARED_DATA_CASES}]==])\n"
+               "      set_tests_properties(\"\${test}\" PROPERTIES LABELS \"${ARG_LABELS};shared-data\")\n"
+               "    endif()\n"
+               "  endforeach()\n")
+      endif()
+      string(APPEND script "endif()\n")
+      file(WRITE "${labelScript}" "${script}")
       set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labelScript}")
     endif()
   endif()

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <sstream>
 
 namespace proxima::cli
 {
@@ -35,8 +36,11 @@ int runCommandProgram(int argc, char** argv, AddCommandFunction addCommand)
   }
   catch (const CLI::ParseError& error)
   {
-    // --help and --version are "errors" with status 0; every real usage error is bad input.
-    const int status = app.exit(error);
+    // --help and --version are "errors" with status 0; every real usage error is bad input (its
+    // message goes to standard error). The help is made in memory and written in one piece, so
+    // that a failed write is seen with its reason however long the text.
+    std::ostringstream help;
+    const int status = app.exit(error, help, std::cerr);
     if (status != 0)
     {
       return kExitBadInput;
@@ -44,6 +48,7 @@ int runCommandProgram(int argc, char** argv, AddCommandFunction addCommand)
     try
     {
       // Help sent to a full disk or /dev/full is lost, not shown: not a success either.
+      writeStandardOutput(help.str());
       finishStandardOutput();
     }
     catch (const InputError& lost)

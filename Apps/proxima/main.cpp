@@ -14,8 +14,10 @@
 
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -78,20 +80,25 @@ int main(int argc, char** argv)
   }
   catch (const CLI::ParseError& error)
   {
-    // --help and --version are "errors" with status 0; every real usage error is bad input.
-    const int status = app.exit(error);
+    // --help and --version are "errors" with status 0; every real usage error is bad input (its
+    // message goes to standard error). The help is made in memory and written in one piece, so
+    // that a failed write is seen with its reason however long the text.
+    std::ostringstream help;
+    const int status = app.exit(error, help, std::cerr);
     if (status != 0)
     {
       return kExitBadInput;
     }
-    // Help sent to a full disk or /dev/full is lost, not shown: not a success either (the front
-    // links no library, so the check of IO/Output/StandardOutput.h is made here by hand).
+    // Help sent to a full disk or /dev/full is lost, not shown: not a success either. The front
+    // links no library, so the check of IO/Output/StandardOutput.cpp is made here by hand, in its
+    // words.
+    const std::string text = help.str();
     errno = 0;
-    std::cout.flush();
-    if (!std::cout)
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
     {
-      std::cerr << "proxima: cannot write to standard output ("
-                << (errno != 0 ? std::strerror(errno) : "a short write") << ")\n";
+      const int lost = errno;
+      std::cerr << "proxima: cannot write to standard output: "
+                << (lost != 0 ? std::strerror(lost) : "a short write") << "\n";
       return kExitBadInput;
     }
     return kExitOk;

@@ -30,8 +30,9 @@ cmake -G Ninja -S "$source/Examples" -B "$work/examples" -DCMAKE_BUILD_TYPE=Rele
 cmake --build "$work/examples" --parallel 2 > "$work/build.log"
 
 # The shared screw (an STL scan of a real part) and its person-like probe path when the shared
-# data is there (PROXIMA_SHARED_DATA), else an STL icosphere and the bundled path.
-shared="${PROXIMA_SHARED_DATA:-}"
+# data is there (PROXIMA_TEST_DATA, the build's test-data folder, links to it), else an STL
+# icosphere and the bundled path.
+shared="${PROXIMA_TEST_DATA:-}"
 if [ -n "$shared" ] && [ -f "$shared/meshes/M3x10_screw.stl" ]; then
   mesh="$shared/meshes/M3x10_screw.stl"
   path="$shared/paths/screw-probe.csv"

@@ -2,8 +2,10 @@
 """proxima.remote-runs: `proxima serve` on loopback and `proxima remote ... run` against it.
 
 - A remote run's trace equals a local `proxima run`'s bit for bit but for solve_ns, and its
-  summary equals the local one but for the clock's figures and the trace's name (the shared screw
-  and liver paths: STL and glTF read on the server).
+  summary equals the local one but for the clock's figures and the trace's name (seeded probe
+  paths on the shipped featuretype part and liver: STL and glTF read on the server; with
+  --shared, proxima.remote-runs-shared, the same on the shared screw's and liver's person-like
+  paths, and only that: status 77, a skip to ctest, where PROXIMA_SHARED_DATA lacks them).
 - Bad input is refused as a local run refuses it, naming the client's file, and leaves no trace.
 - With --token-file, a wrong token is refused (--token-file) and the right one runs.
 - A path longer than the server's --max-ticks is refused, whatever the client's own limit.
@@ -12,7 +14,7 @@
   hinged plate turn on the server as they do locally, bit for bit, and the spheres on the table
   (three objects) too; a scene that names a missing mesh is refused naming it.
 - The server leaves none of the runs' files behind.
-Usage: remote_runs.py BUILD_DIR SHARED_DATA_DIR SOURCE_DIR
+Usage: remote_runs.py BUILD_DIR TEST_DATA_DIR SOURCE_DIR [--shared] (TEST_DATA_DIR: build/TestData)
 """
 import csv
 import glob
@@ -26,9 +28,10 @@ import tempfile
 
 import serve_process
 
-build, shared, source = sys.argv[1], sys.argv[2], sys.argv[3]
+build, test_data, source = sys.argv[1], sys.argv[2], sys.argv[3]
+shared_only = sys.argv[4:] == ["--shared"]
 proxima = os.path.join(build, "bin", "proxima")
-meshes, paths = os.path.join(shared, "meshes"), os.path.join(shared, "paths")
+meshes, paths = os.path.join(test_data, "meshes"), os.path.join(test_data, "paths")
 work = tempfile.mkdtemp(prefix="proxima-remote-test-")
 TIMED = ("solve_ns", "read_ms", "tree_build_ms", "run_ms", "dynamics_ns")
 
@@ -81,17 +84,52 @@ def compare_with_local(name, options):
     return remote_rows, remote_summary
 
 
+def compare_cases(cases):
+    """Each (name, mesh, scale, radius, path) run here and on the server, with enough contact."""
+    for name, mesh, scale, radius, path in cases:
+        remote_rows, summary = compare_with_local(
+            name, ["--mesh", mesh, "--scale", scale, "--radius", radius, "--path", path])
+        contact = summary["contact_ticks"]
+        if contact < 1000:
+            fail(f"{name}: only {contact} contact ticks: the comparison says little")
+        print(f"{name}: {len(remote_rows) - 1} ticks ({contact} in contact), the same as "
+              "proxima run")
+
+
 before = leftovers()
-server, address = start_server()
-for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"),
+if shared_only:
+    # The shared screw's and liver's person-like paths (../shared/data/paths/README.md).
+    cases = [(name, os.path.join(meshes, mesh), scale, radius,
+              os.path.join(paths, f"{name}-probe.csv"))
+             for name, mesh, scale, radius in (("screw", "M3x10_screw.stl", "0.005", "0.0005"),
+                                               ("liver", "VH_M_Liver.glb", "0.5", "0.002"))]
+    missing = [f for case in cases for f in case[1::3] if not os.path.exists(f)]
+    if missing:
+        print(f"remote-runs: {', '.join(missing)} absent (PROXIMA_SHARED_DATA): skipped")
+        sys.exit(77)
+    server, address = start_server()
+    compare_cases(cases)
+    server.send_signal(signal.SIGTERM)
+    if server.wait(timeout=30) != 0:
+        fail(f"the server ended with {server.returncode}")
+    if leftovers() - before:
+        fail(f"the server left its runs' files: {sorted(leftovers() - before)}")
+    print("remote runs: the same traces as local runs on the shared person-like paths")
+    sys.exit(0)
+
+# Seeded probe paths on the shipped STL part and glTF liver, made here by proxima path.
+cases = []
+for name, mesh, scale, radius in (("featuretype", "featuretype.STL", "0.03", "0.001"),
                                   ("liver", "VH_M_Liver.glb", "0.5", "0.002")):
-    remote_rows, summary = compare_with_local(
-        name, ["--mesh", os.path.join(meshes, mesh), "--scale", scale, "--radius", radius,
-               "--path", os.path.join(paths, f"{name}-probe.csv")])
-    contact = summary["contact_ticks"]
-    if contact < 1000:
-        fail(f"{name}: only {contact} contact ticks: the comparison says little")
-    print(f"{name}: {len(remote_rows) - 1} ticks ({contact} in contact), the same as proxima run")
+    mesh, path = os.path.join(meshes, mesh), os.path.join(work, f"{name}-probe.csv")
+    made = run("path", "probe", "--mesh", mesh, "--scale", scale, "--radius", radius,
+               "--seed", "1", "--duration", "8", "--out", path)
+    if made.returncode != 0:
+        fail(f"proxima path probe on {mesh}: {made.stderr}")
+    cases.append((name, mesh, scale, radius, path))
+part, part_path = cases[0][1], cases[0][4]
+server, address = start_server()
+compare_cases(cases)
 
 # Scene files, sent with the files they name; bodies move on the server as they do here.
 scenes, body_paths = os.path.join(source, "Data", "Scenes"), os.path.join(source, "Data", "Paths")
@@ -116,9 +154,8 @@ bad_path = os.path.join(work, "bad-path.csv")
 with open(bad_path, "w") as out:
     out.write("t,x,y,z\n0,1,2\n")
 bad_trace = os.path.join(work, "bad.csv")
-refused = run("remote", "--server", address, "run", "--mesh",
-              os.path.join(meshes, "M3x10_screw.stl"), "--scale", "0.005", "--path", bad_path,
-              "--out", bad_trace)
+refused = run("remote", "--server", address, "run", "--mesh", part, "--scale", "0.03", "--path",
+              bad_path, "--out", bad_trace)
 if refused.returncode != 2 or f"{bad_path}: line 2: expected 4 values" not in refused.stderr:
     fail(f"a bad path: status {refused.returncode}, {refused.stderr!r}")
 if os.path.exists(bad_trace):
@@ -136,10 +173,10 @@ with open(wrong_file, "w") as out:
     out.write("guess\n")
 server, address = start_server("--token-file", token_file)
 short = os.path.join(work, "short.csv")
-with open(os.path.join(paths, "screw-probe.csv")) as source, open(short, "w") as out:
+with open(part_path) as source, open(short, "w") as out:
     out.writelines(source.readlines()[:500])
-options = ["--mesh", os.path.join(meshes, "M3x10_screw.stl"), "--scale", "0.005", "--radius",
-           "0.0005", "--path", short, "--out", os.path.join(work, "token.csv")]
+options = ["--mesh", part, "--scale", "0.03", "--radius", "0.001", "--path", short, "--out",
+           os.path.join(work, "token.csv")]
 wrong = run("remote", "--server", address, "--token-file", wrong_file, "run", *options)
 if wrong.returncode != 2 or "--token-file" not in wrong.stderr:
     fail(f"a wrong token: status {wrong.returncode}, {wrong.stderr!r}")

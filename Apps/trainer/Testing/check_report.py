@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Runs proxima-trainer on one exercise and path and checks its report (a ctest entry).
 
-Usage: check_report.py TRAINER EXERCISE PATH REPORT [--marks M] [--screenshot S --at T] CHECK...
-A CHECK is KEY=VALUE or KEY<VALUE or KEY>VALUE, KEY a dotted path into the report
+Usage: check_report.py TRAINER EXERCISE PATH REPORT [--needs FILE] [--marks M]
+                       [--screenshot S --at T] CHECK...
+With --needs, a FILE that is absent (a shared mesh, which may not ship) skips the check: status
+77, which ctest takes for a skip, with a line saying why. A CHECK is KEY=VALUE or KEY<VALUE or KEY>VALUE, KEY a dotted path into the report
 (tasks.0.passed, damage_events.#, peak_force_n); `#` is a list's length; VALUE is JSON
 (true, 3, "liver", null). With --screenshot, the file must be a PNG of 800 x 600 pixels. Fails
 with every failed check listed.
@@ -41,7 +43,13 @@ def main():
     trainer, exercise, path, report_path, *rest = sys.argv[1:]
     command = [trainer, "--exercise", exercise, "--path", path, "--report", report_path]
     screenshot = None
-    while rest[:1] and rest[0] in ("--marks", "--screenshot", "--at"):
+    while rest[:1] and rest[0] in ("--needs", "--marks", "--screenshot", "--at"):
+        if rest[0] == "--needs":
+            if not os.path.exists(rest[1]):
+                print(f"check_report: {rest[1]} is absent (PROXIMA_SHARED_DATA): skipped")
+                sys.exit(77)
+            rest = rest[2:]
+            continue
         command += rest[:2]
         if rest[0] == "--screenshot":
             screenshot = rest[1]

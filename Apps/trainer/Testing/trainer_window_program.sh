@@ -17,9 +17,15 @@ cd "$work"
 program=$!
 picker=$(find_window "Proxima trainer$" "$program" err.txt)
 sleep 0.5
-# The list is sorted: cranium-trace, liver-palpation, ... The second is the palpation.
+# The list is the folder's exercises sorted by name, the first selected: go down to the palpation
+# (the second where the shared cranium's exercise is there, else the first).
+downs=()
+for file in $(ls "$PROXIMA_EXERCISE_DIR" | LC_ALL=C sort); do
+  [ "$file" = liver-palpation.json ] && break
+  case "$file" in *.json) downs+=(Down) ;; esac
+done
 xdotool windowfocus --sync "$picker"
-xdotool key --clearmodifiers Down Return
+xdotool key --clearmodifiers "${downs[@]}" Return
 window=$(find_window "Proxima trainer: Liver palpation" "$program" err.txt)
 sleep 1.5
 xdotool windowfocus --sync "$window"

@@ -93,6 +93,39 @@ TriangleSoup scaled(TriangleSoup soup, double scale)
   return soup;
 }
 
+/// A real mesh of the test data (PROXIMA_SHARED_MESHES) at `scale`, read through the IO layer's
+/// readers when that layer is built (PROXIMA_BUILD_IO), as a scene of its own with a proxy of a
+/// few triangles' size (so that the cache's neighbourhoods fit its capacity). Returns why it
+/// could not be read, or an empty string.
+std::string addRealScene(std::vector<NamedScene>& made, const char* file, double scale)
+{
+#if PROXIMA_WITH_MESH_IO
+  TriangleSoup soup;
+  try
+  {
+    soup = readMeshFile(std::string(PROXIMA_SHARED_MESHES) + "/" + file);
+  }
+  catch (const InputError& error)
+  {
+    return error.what();
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  if (!addSoup(*scene, scaled(std::move(soup), scale)))
+  {
+    ADD_FAILURE() << file << ": mesh refused";
+    return {};
+  }
+  const double radius = 0.003 * scene->diagonal();
+  made.push_back(NamedScene{file, std::move(scene), radius});
+  return {};
+#else
+  (void)made;
+  (void)scale;
+  return std::string(file) + ": the IO layer is not built";
+#endif
+}
+
+/// The procedural scenes and the shipped bunny (Data/Meshes: a bunny that cannot be read fails).
 const std::vector<NamedScene>& scenes()
 {
   static const std::vector<NamedScene> all = [] {
@@ -113,39 +146,28 @@ const std::vector<NamedScene>& scenes()
     add("box-and-grid", {makeBox({0.02, 0.02, 0.01}, {0.0, 0.0, 0.012}), makeGrid(0.1, 40)}, 0.003);
     add("doubled-icosphere", {doubled(makeIcosphere(2, 0.05))}, 0.005);
     add("two-identical-objects", {makeIcosphere(2, 0.05), makeIcosphere(2, 0.05)}, 0.005);
-    const std::string folder = PROXIMA_SHARED_MESHES;
-    const std::pair<const char*, double> real[] = {{"stanford-bunny.obj", 0.4},
-                                                   {"M3x10_screw.stl", 0.005}};
-    for (const auto& [file, scale] : real)
-    {
-      // Read through the IO layer's readers when that layer is built (PROXIMA_BUILD_IO).
-      TriangleSoup soup;
 #if PROXIMA_WITH_MESH_IO
-      try
-      {
-        soup = readMeshFile(folder + "/" + file);
-      }
-      catch (const InputError& error)
-      {
-        std::printf("[ skipped  ] %s: %s\n", file, error.what());
-        continue;
-      }
-#else
-      std::printf("[ skipped  ] %s: the IO layer is not built\n", file);
-      continue;
-#endif
-      auto scene = std::make_unique<CollisionScene>();
-      if (!addSoup(*scene, scaled(std::move(soup), scale)))
-      {
-        ADD_FAILURE() << file << ": mesh refused";
-        continue;
-      }
-      // A proxy of a few triangles' size, so that the cache's neighbourhoods fit its capacity.
-      const double radius = 0.003 * scene->diagonal();
-      made.push_back(NamedScene{file, std::move(scene), radius});
+    const std::string missing = addRealScene(made, "stanford-bunny.obj", 0.4);
+    if (!missing.empty())
+    {
+      ADD_FAILURE() << "the bunny is shipped in Data/Meshes: " << missing;
     }
+#endif
     return made;
   }();
+  return all;
+}
+
+/// The shared screw (PROXIMA_SHARED_DATA only: it may not ship), or nothing and why.
+const std::vector<NamedScene>& sharedScenes(std::string& missing)
+{
+  static std::string why;
+  static const std::vector<NamedScene> all = [] {
+    std::vector<NamedScene> made;
+    why = addRealScene(made, "M3x10_screw.stl", 0.005);
+    return made;
+  }();
+  missing = why;
   return all;
 }
 
@@ -499,9 +521,10 @@ public:
 using Implementations = ::testing::Types<TreeQueries, CacheQueries>;
 TYPED_TEST_SUITE(SceneQueries, Implementations, ImplementationNames);
 
-TYPED_TEST(SceneQueries, FirstContactOfASweepMatchesBruteForce)
+template <typename TypeParam>
+void expectFirstContactsMatchBruteForce(const std::vector<NamedScene>& all)
 {
-  for (const NamedScene& named : scenes())
+  for (const NamedScene& named : all)
   {
     const CollisionScene& scene = *named.scene;
     const BruteForce brute(scene);
@@ -542,9 +565,26 @@ TYPED_TEST(SceneQueries, FirstContactOfASweepMatchesBruteForce)
   }
 }
 
-TYPED_TEST(SceneQueries, TrianglesNearAPointMatchBruteForce)
+TYPED_TEST(SceneQueries, FirstContactOfASweepMatchesBruteForce)
 {
-  for (const NamedScene& named : scenes())
+  expectFirstContactsMatchBruteForce<TypeParam>(scenes());
+}
+
+TYPED_TEST(SceneQueries, FirstContactOfASweepMatchesBruteForceOnTheSharedScrew)
+{
+  std::string missing;
+  const std::vector<NamedScene>& shared = sharedScenes(missing);
+  if (shared.empty())
+  {
+    GTEST_SKIP() << missing << " (the shared meshes, PROXIMA_SHARED_DATA)";
+  }
+  expectFirstContactsMatchBruteForce<TypeParam>(shared);
+}
+
+template <typename TypeParam>
+void expectTrianglesNearAPointMatchBruteForce(const std::vector<NamedScene>& all)
+{
+  for (const NamedScene& named : all)
   {
     const CollisionScene& scene = *named.scene;
     const BruteForce brute(scene);
@@ -578,9 +618,26 @@ TYPED_TEST(SceneQueries, TrianglesNearAPointMatchBruteForce)
   }
 }
 
-TYPED_TEST(SceneQueries, NearestPointMatchesBruteForce)
+TYPED_TEST(SceneQueries, TrianglesNearAPointMatchBruteForce)
 {
-  for (const NamedScene& named : scenes())
+  expectTrianglesNearAPointMatchBruteForce<TypeParam>(scenes());
+}
+
+TYPED_TEST(SceneQueries, TrianglesNearAPointMatchBruteForceOnTheSharedScrew)
+{
+  std::string missing;
+  const std::vector<NamedScene>& shared = sharedScenes(missing);
+  if (shared.empty())
+  {
+    GTEST_SKIP() << missing << " (the shared meshes, PROXIMA_SHARED_DATA)";
+  }
+  expectTrianglesNearAPointMatchBruteForce<TypeParam>(shared);
+}
+
+template <typename TypeParam>
+void expectNearestPointsMatchBruteForce(const std::vector<NamedScene>& all)
+{
+  for (const NamedScene& named : all)
   {
     const CollisionScene& scene = *named.scene;
     const BruteForce brute(scene);
@@ -613,6 +670,22 @@ TYPED_TEST(SceneQueries, NearestPointMatchesBruteForce)
     EXPECT_GE(answered, kQueriesPerScene / 2) << named.name;
     EXPECT_GT(found, 0) << named.name;
   }
+}
+
+TYPED_TEST(SceneQueries, NearestPointMatchesBruteForce)
+{
+  expectNearestPointsMatchBruteForce<TypeParam>(scenes());
+}
+
+TYPED_TEST(SceneQueries, NearestPointMatchesBruteForceOnTheSharedScrew)
+{
+  std::string missing;
+  const std::vector<NamedScene>& shared = sharedScenes(missing);
+  if (shared.empty())
+  {
+    GTEST_SKIP() << missing << " (the shared meshes, PROXIMA_SHARED_DATA)";
+  }
+  expectNearestPointsMatchBruteForce<TypeParam>(shared);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
-"""What the Python tests share: where the build, the sources and the shared meshes are (ctest
-sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_SHARED_DATA), and the cases they run."""
+"""What the Python tests share: where the build, the sources and the test meshes and paths are
+(ctest sets PROXIMA_BUILD_DIR, PROXIMA_SOURCE_DIR and PROXIMA_TEST_DATA, the build's test-data
+folder: the shipped meshes, and the shared ones where PROXIMA_SHARED_DATA is present), and the
+cases they run."""
 import os
 import signal
 import subprocess
@@ -9,9 +11,9 @@ import pytest
 
 BUILD = os.environ.get("PROXIMA_BUILD_DIR", "")
 SOURCE = os.environ.get("PROXIMA_SOURCE_DIR", "")
-SHARED = os.environ.get("PROXIMA_SHARED_DATA", "")
-MESHES = os.path.join(SHARED, "meshes")
-PATHS = os.path.join(SHARED, "paths")
+TEST_DATA = os.environ.get("PROXIMA_TEST_DATA", "")
+MESHES = os.path.join(TEST_DATA, "meshes")
+PATHS = os.path.join(TEST_DATA, "paths")
 
 #: The shared probe paths with the settings their README gives: mesh, scale, radius.
 SHARED_CASES = {
@@ -24,9 +26,36 @@ SHARED_CASES = {
 TIMED_KEYS = ("solve_ns", "read_ms", "tree_build_ms", "run_ms")
 
 
+def shared_files():
+    """The files of SHARED_CASES: meshes that may not ship and the probe paths, both only in
+    PROXIMA_SHARED_DATA."""
+    for name, (mesh, _, _) in SHARED_CASES.items():
+        yield os.path.join(MESHES, mesh)
+        yield os.path.join(PATHS, f"{name}-probe.csv")
+
+
 def needs_shared_data():
-    return pytest.mark.skipif(not os.path.isdir(MESHES),
-                              reason=f"shared meshes not found in {MESHES}")
+    """Marks a test `shared_data` (ctest runs those as Python.SharedData, label shared-data) and
+    skips it, naming what is missing, where the shared files are absent."""
+    missing = [f for f in shared_files() if not os.path.isfile(f)]
+    skip = pytest.mark.skipif(bool(missing), reason=f"shared data not found: {', '.join(missing)}"
+                              " (PROXIMA_SHARED_DATA)")
+
+    def mark(test):
+        return pytest.mark.shared_data(skip(test))
+    return mark
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "shared_data: needs files only PROXIMA_SHARED_DATA has")
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """A run in which a case was skipped and none failed ends with status 77, which ctest reports
+    as a skip (SKIP_RETURN_CODE), so that a skipped case never passes unseen."""
+    reporter = session.config.pluginmanager.get_plugin("terminalreporter")
+    if exitstatus == 0 and reporter is not None and reporter.stats.get("skipped"):
+        session.exitstatus = 77
 
 
 def shared_case(name):

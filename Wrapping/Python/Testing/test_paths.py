@@ -5,10 +5,9 @@ import numpy
 import pytest
 
 import proxima
-from conftest import MESHES, needs_shared_data, proxima_cli
+from conftest import MESHES, proxima_cli
 
 
-@needs_shared_data()
 @pytest.mark.parametrize("kind,seed", [("probe", 3), ("press-stroke", 2), ("jab", 5)])
 def test_make_path_gives_the_command_lines_rows(kind, seed, tmp_path):
     mesh = os.path.join(MESHES, "teapot.obj")
