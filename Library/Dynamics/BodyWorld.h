@@ -1,7 +1,10 @@
 // The bodies of a scene and their integration (paper section 6) on MuJoCo, whose headers stay in
 // BodyWorld.cpp. Each haptic tick: applyForce for the touched body (the force the device renders,
 // equal and opposite, at the contact point: J^T f_c, eqs. 23-24), then step(), then pose() moves
-// each body's object for the next proxy update.
+// each body's object for the next proxy update. MuJoCo's messages are Proxima's once a world
+// is made: a warning is one line on standard error (`proxima: MuJoCo warning: ...`), an error a
+// std::runtime_error thrown from the call that met it; neither reaches standard output, and no
+// MUJOCO_LOG.TXT is written.
 #pragma once
 
 #include "Core/Vec3.h"
