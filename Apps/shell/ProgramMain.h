@@ -44,6 +44,10 @@ inline int runProgram(CLI::App& app, const std::string& program, int argc, char*
 {
   // A file-size limit fails a write with EFBIG, reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
+  // A usage error in one line, as bad input is (not CLI11's two, the second "Run with --help").
+  app.failure_message([program](const CLI::App*, const CLI::Error& error) {
+    return program + ": " + error.what() + " (see " + program + " --help)\n";
+  });
   try
   {
     app.parse(argc, argv);
