@@ -9,6 +9,7 @@
 // The defect report alone is `proxima inspect`. Exit statuses as the proxima command line's
 // (DESIGN.md section 3): 0 when the session ran, 2 for bad input or an output that cannot be
 // written (one line naming the file and the defect), 1 for an internal error.
+#include "NumberOptions.h"
 #include "Probing/ProbeReport.h"
 #include "Probing/ProbeSession.h"
 #include "ProgramMain.h"
@@ -17,11 +18,13 @@
 #endif
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/InputChecks/ParameterRanges.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/PathAndTrace/MarkTimesFile.h"
+#include "Runtime/ServoRate.h"
 
 #include <CLI/CLI.hpp>
 
@@ -97,7 +100,21 @@ int runHeadless(const InspectorOptions& options)
   ProbeMeterSettings meter;
   meter.stopDepth = options.stopDepth >= 0.0 ? options.stopDepth : 0.5 * options.toolRadius;
   meter.widestGap = options.widestGap;
-  const ProbeMeasurements measured = playProbeSession(settings, path, marks, meter);
+  ProbeMeasurements measured;
+  try
+  {
+    measured = playProbeSession(settings, path, marks, meter);
+  }
+  catch (const InputError& error)
+  {
+    // The scripted run's checks name the proxy's radius as proxima run spells it; here the proxy
+    // is the tool.
+    if (error.path() == "--radius")
+    {
+      throw InputError("--tool-radius", error.defect());
+    }
+    throw;
+  }
 
   nlohmann::ordered_json json;
   json["format"] = "proxima-probe-session";
@@ -143,19 +160,24 @@ int main(int argc, char** argv)
     .add_option("--mesh", options.mesh,
                 "The part: .stl .obj .ply .vtp .gltf .glb .off (extension in any case)")
     ->required();
+  // The ranges are the table's (ParameterRanges.h) that `proxima run` checks too, so --help shows
+  // what the checks take: the tool is the proxy, and the session a scripted run.
   app.add_option("--scale", options.scale, "Factor from file units to metres")
-    ->check(CLI::Range(1e-9, 1e9))
+    ->check(cli::numberIn(kMeshScaleRange))
     ->capture_default_str();
   app
     .add_option("--tool-radius", options.toolRadius,
                 "The probe's radius in metres: the proxy's, and the tool whose reach is shown")
-    ->check(CLI::Range(1e-7, 1.0))
+    ->check(cli::numberIn(kProxyRadiusRange))
     ->capture_default_str();
   app.add_option("--stiffness", options.stiffness, "The proxy's spring kp in N/m")
-    ->check(CLI::Range(1e-3, 1e7))
+    ->check(cli::numberIn(kStiffnessRange))
     ->capture_default_str();
-  app.add_option("--rate", options.rate, "Servo rate in Hz")
-    ->check(CLI::Range(1.0, 100000.0))
+  app
+    .add_option("--rate", options.rate,
+                "Servo rate in Hz; in the window (without --path) " + servoRateRange() +
+                  ", the servo loop's range")
+    ->check(cli::numberIn(kScriptedRateRange))
     ->capture_default_str();
   app.add_option("--path", options.path,
                  "Finger path CSV (t,x,y,z) played in lockstep, headless; without it the "
@@ -167,18 +189,27 @@ int main(int argc, char** argv)
     .add_option("--stop-depth", options.stopDepth,
                 "The finger this far beyond the proxy is a stop (metres; default half the tool "
                 "radius)")
-    ->check(CLI::Range(0.0, 1.0));
+    ->check(cli::numberIn(kStopDepthRange));
   app.add_option("--widest-gap", options.widestGap, "Gaps wider than this are not measured (m)")
-    ->check(CLI::Range(1e-6, 10.0))
+    ->check(cli::numberIn(kWidestGapRange))
     ->capture_default_str();
   shell::addWindowDeviceOptions(app, options.device, options.falconFirmware);
-  app.add_option("--width", options.width, "Window width in pixels")->check(CLI::Range(64, 8192));
+  app.add_option("--width", options.width, "Window width in pixels")
+    ->check(cli::wholeNumberIn(kWindowSizeRange));
   app.add_option("--height", options.height, "Window height in pixels")
-    ->check(CLI::Range(64, 8192));
+    ->check(cli::wholeNumberIn(kWindowSizeRange));
   return shell::runProgram(app, "proxima-inspector", argc, argv, [&] {
     checkMode(options);
     if (options.path.empty())
     {
+      // The window runs the real-time loops: their rate rule, before anything is loaded.
+      if (!isServoRate(options.rate))
+      {
+        throw InputError("--rate", "must be " + servoRateRange() +
+                                     " in the window (the servo loop's range); a scripted "
+                                     "session (--path) takes " +
+                                     describeRange(kScriptedRateRange));
+      }
 #if PROXIMA_INSPECTOR_WINDOW
       InspectorWindowOptions window;
       window.mesh = options.mesh;

@@ -36,6 +36,7 @@ struct InspectArguments
   std::size_t locations = 10;
   double sliverAngle = 1.0;
   double weld = 0.0;
+  /// 0: not given (a given radius is above 0).
   double toolRadius = 0.0;
 };
 
@@ -149,7 +150,7 @@ Command addInspectCommand(CLI::App& parent)
     ->add_option("--tool-radius", arguments->toolRadius,
                  "Also report where a ball tool of this radius cannot touch the surface (metres, "
                  "after --scale)")
-    ->check(numberIn(ParameterRange{0.0, false, 1e6, " m"}));
+    ->check(numberIn(kProxyRadiusRange));
   return Command{app, [arguments] { return runInspect(*arguments); }};
 }
 

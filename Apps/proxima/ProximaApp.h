@@ -3,6 +3,8 @@
 // reads the same whichever of them parses it.
 #pragma once
 
+#include "UsageErrors.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -13,13 +15,12 @@ namespace proxima::cli
 inline constexpr const char* kProximaDescription =
   "Proxima: haptic rendering with the virtual-proxy method of Ruspini and Khatib.";
 
-/// Requires one subcommand, and words usage errors in one line, in the same shape as bad input.
+/// Requires one subcommand, and words usage errors in one line, in the same shape as bad input
+/// (UsageErrors.h: an unknown word is named with the nearest valid one).
 inline void configureProximaApp(CLI::App& app)
 {
   app.require_subcommand(1);
-  app.failure_message([](const CLI::App*, const CLI::Error& error) {
-    return std::string("proxima: ") + error.what() + " (see proxima --help)\n";
-  });
+  configureUsageErrors(app, "proxima");
 }
 
 } // namespace proxima::cli

@@ -3,9 +3,13 @@
 #include "Validators.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "Runtime/ServoRate.h"
 
 namespace proxima::cli
 {
+
+static_assert(kRealtimeRateRange.low == kMinServoRate && kRealtimeRateRange.high == kMaxServoRate,
+              "the real-time rate's range is the servo loop's rule");
 
 void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options, bool pathRequired)
 {
@@ -27,16 +31,16 @@ void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options, bool pathR
   }
 }
 
-void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options)
+void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options, const ParameterRange& rateRange)
 {
   app.add_option("--rate", options.rate, "Servo rate in Hz (default 1000)")
-    ->check(numberIn(kScriptedRateRange));
+    ->check(numberIn(rateRange));
   app.add_option("--max-force", options.maxForce, "Force clamp in newtons (default 10)")
     ->check(numberIn(kMaxForceRange));
   app
     .add_option("--max-iterations", options.maxIterations,
                 "Move/update iterations per tick (default 256)")
-    ->check(CLI::Range(1, 1000));
+    ->check(wholeNumberIn(kMaxIterationsRange));
   app
     .add_option("--skin", options.skin,
                 "Contact skin in metres (default: from the scene, see Documentation/Epsilons.md)")

@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "IO/InputChecks/ParameterRanges.h"
+
 #include <string>
 
 namespace proxima::cli
@@ -21,8 +23,9 @@ using SceneOptions = ScriptedRunSettings;
 void addSceneOptionsThroughPath(CLI::App& app, SceneOptions& options, bool pathRequired = true);
 /// Registers --rate, --max-force, --max-iterations, --skin and the --mesh-only surface options
 /// (--scale, --shading, --feature-angle, friction, viscosity, --texture*), which --scene
-/// excludes.
-void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options);
+/// excludes. `rateRange` is the --rate the command takes (the view's servo loop has its own).
+void addSceneOptionsAfterPath(CLI::App& app, SceneOptions& options,
+                              const ParameterRange& rateRange = kScriptedRateRange);
 /// Registers --tick-budget; `defaults` says in the help what the command uses without it.
 void addTickBudgetOption(CLI::App& app, SceneOptions& options, const std::string& defaults);
 /// The checks between these options that CLI11 cannot say by itself, as usage errors (status 2);

@@ -124,7 +124,7 @@ int serve(const ServeOptions& options)
   }
   RemoteRunServer server(settings);
   // The port a script asked for with :0 is on standard output, one line, at once.
-  const std::string host = options.listen.substr(0, options.listen.rfind(':'));
+  const std::string host = parseListenAddress(options.listen).host;
   std::printf("proxima serve: listening on %s:%d\n", host.c_str(), server.port());
   std::fflush(stdout);
   int signal = 0;
@@ -158,9 +158,10 @@ Command addServeCommand(CLI::App& parent)
   auto options = std::make_shared<ServeOptions>();
   CLI::App* app = parent.add_subcommand(kServeSummary.name, kServeSummary.description);
   app->add_option("--listen", options->listen,
-                  "HOST:PORT to listen on (default 127.0.0.1:50051; port 0 takes a free one, "
-                  "printed on standard output); an address other than loopback needs "
-                  "--token-file");
+                  "HOST:PORT or [IPV6]:PORT to listen on (default 127.0.0.1:50051; a HOST "
+                  "alone takes port 50051; port 0 takes a free one, printed on standard "
+                  "output); an address other than loopback (127.0.0.0/8, localhost, [::1]) "
+                  "needs --token-file");
   app->add_option("--token-file", options->tokenFile,
                   "File whose first line is the token every client must send");
   CLI::Option* certificate =

@@ -575,9 +575,9 @@ Command addViewCommand(CLI::App& parent)
                  "With --screenshot: seconds into the path to capture (default: its end)")
     ->check(finiteNumber(false));
   app->add_option("--width", options->width, "Window width in pixels (default 800)")
-    ->check(CLI::Range(64, 8192));
+    ->check(wholeNumberIn(kWindowSizeRange));
   app->add_option("--height", options->height, "Window height in pixels (default 600)")
-    ->check(CLI::Range(64, 8192));
+    ->check(wholeNumberIn(kWindowSizeRange));
   app
     ->add_option("--view-distance", options->viewDistance,
                  "Camera distance from the proxy in metres (default: 40 proxy radii for a "
@@ -589,7 +589,7 @@ Command addViewCommand(CLI::App& parent)
                  "--max-force)")
     ->check(numberIn(ParameterRange{0.0, true, 1e6, " m/N"}));
   addDeviceOptions(*app, options->device);
-  addSceneOptionsAfterPath(*app, options->scene);
+  addSceneOptionsAfterPath(*app, options->scene, kRealtimeRateRange);
   addTickBudgetOption(
     *app, options->scene,
     "Default: default, the real-time default budget, also for a --screenshot of the scripted "

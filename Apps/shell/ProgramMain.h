@@ -5,6 +5,8 @@
 // CLI11 is too.
 #pragma once
 
+#include "UsageErrors.h"
+
 #include "Devices/DeviceRegistry.h"
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/StandardOutput.h"
@@ -44,6 +46,9 @@ inline int runProgram(CLI::App& app, const std::string& program, int argc, char*
 {
   // A file-size limit fails a write with EFBIG, reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
+  // A usage error in one line, as bad input is (not CLI11's two, the second "Run with --help"),
+  // an unknown option named with the nearest valid one, as for proxima (UsageErrors.h).
+  cli::configureUsageErrors(app, program);
   try
   {
     app.parse(argc, argv);

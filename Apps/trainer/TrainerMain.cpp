@@ -11,6 +11,7 @@
 // be written (one line naming the file and the defect), 1 for an internal error.
 #include "DisplayCheck.h"
 #include "ExerciseScreenshot.h"
+#include "NumberOptions.h"
 #include "ProgramMain.h"
 #include "Exercises/ExerciseFile.h"
 #include "Exercises/ExerciseReport.h"
@@ -21,6 +22,7 @@
 #endif
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/InputChecks/ParameterRanges.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
@@ -196,15 +198,15 @@ int main(int argc, char** argv)
                  "Also render the session at --at offscreen to this PNG (needs a display: "
                  "xvfb-run -a without one)");
   app.add_option("--at", options.at, "With --screenshot: seconds into the path (default its end)")
-    ->check(CLI::Range(0.0, 1e9));
+    ->check(cli::numberIn(kScreenshotTimeRange));
   app
     .add_option("--width", options.size.width,
                 "Screenshot width in pixels (default 800; the window's 1024)")
-    ->check(CLI::Range(64, 8192));
+    ->check(cli::wholeNumberIn(kWindowSizeRange));
   app
     .add_option("--height", options.size.height,
                 "Screenshot height in pixels (default 600; the window's 720)")
-    ->check(CLI::Range(64, 8192));
+    ->check(cli::wholeNumberIn(kWindowSizeRange));
   return shell::runProgram(app, "proxima-trainer", argc, argv, [&] {
     checkMode(options);
     if (options.path.empty())

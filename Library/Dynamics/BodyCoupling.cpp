@@ -54,7 +54,7 @@ std::string couplingStabilityDefect(const BodyDescription& body, const TriangleM
 {
   const JointDescription& joint = body.joint;
   const SolidMassProperties& mass = body.mass;
-  const Vec3 axis = normalizedOrZero(joint.axis);
+  const Vec3 axis = overflowSafeDirection(joint.axis);
   double effectiveMass = mass.mass;
   std::string where = "its mass";
   if (joint.type == JointType::Hinge)

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -94,7 +95,9 @@ std::string modelXml(const std::vector<BodyDescription>& bodies, const DynamicsS
           << "\" pos=\"" << triple(joint.anchor) << "\"";
       if (joint.type != JointType::Ball)
       {
-        xml << " axis=\"" << triple(joint.axis) << "\"";
+        // The unit axis: MuJoCo normalises it by its plain norm, which overflows for
+        // [1e300, 1e300, 0] and leaves a zero axis (a body that never moves).
+        xml << " axis=\"" << triple(overflowSafeDirection(joint.axis)) << "\"";
       }
       xml << " stiffness=\"" << number(joint.stiffness) << "\" damping=\"" << number(joint.damping)
           << "\"";
@@ -115,11 +118,35 @@ std::string modelXml(const std::vector<BodyDescription>& bodies, const DynamicsS
   return xml.str();
 }
 
+// MuJoCo's own handlers print on standard output, where a command's JSON report goes, append to
+// MUJOCO_LOG.TXT in the current folder, which is the user's, and exit on an error. Proxima's
+// handlers, set once before the first model is read, say a warning in one line on standard error
+// and turn an error into an exception the caller reports (an internal error, status 1).
+void onMujocoWarning(const char* message)
+{
+  std::fprintf(stderr, "proxima: MuJoCo warning: %s\n", message);
+}
+
+[[noreturn]] void onMujocoError(const char* message)
+{
+  throw std::runtime_error(std::string("MuJoCo: ") + message);
+}
+
+void routeMujocoMessages()
+{
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mju_user_warning = onMujocoWarning;
+    mju_user_error = onMujocoError;
+  });
+}
+
 void checkBody(const BodyDescription& body)
 {
   const JointDescription& joint = body.joint;
   const bool axial = joint.type == JointType::Hinge || joint.type == JointType::Slide;
-  check(!axial || norm(joint.axis) > 0.0, body, "the joint's axis is zero");
+  check(!axial || isFinite(joint.axis), body, "the joint's axis is not finite");
+  check(!axial || maxAbsComponent(joint.axis) > 0.0, body, "the joint's axis is zero");
   check(std::isfinite(joint.anchor.x) && std::isfinite(joint.anchor.y) &&
           std::isfinite(joint.anchor.z),
         body, "the joint's anchor is not finite");
@@ -160,6 +187,7 @@ BodyWorld::BodyWorld(const std::vector<BodyDescription>& bodies, const DynamicsS
   : m_model(std::make_unique<Model>())
   , m_settings(settings)
 {
+  routeMujocoMessages();
   if (!(settings.timeStep > 0.0) || !std::isfinite(settings.timeStep))
   {
     throw std::invalid_argument("the dynamics time step must be above 0 s");
@@ -234,6 +262,7 @@ BodyWorld::BodyWorld(const std::string& mjcfFile, const std::vector<std::string>
   : m_model(std::make_unique<Model>())
   , m_settings(settings)
 {
+  routeMujocoMessages();
   if (!(settings.timeStep > 0.0) || !std::isfinite(settings.timeStep))
   {
     throw std::invalid_argument("the dynamics time step must be above 0 s");
@@ -358,7 +387,11 @@ double BodyWorld::jointPosition(std::size_t body) const
   const JointType type = m_joints[body];
   if (type != JointType::Hinge && type != JointType::Slide)
   {
-    return 0.0;
+    // No single coordinate: the angle of the body's turn from where it started, the length of
+    // its rotation vector, in [0, pi].
+    const BodyPose turned = pose(body);
+    const double* q = turned.orientation;
+    return 2.0 * std::atan2(std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]), std::fabs(q[0]));
   }
   const mjModel* model = m_model->model;
   const int joint = model->body_jntadr[m_ids[body]];
@@ -368,13 +401,27 @@ double BodyWorld::jointPosition(std::size_t body) const
 double BodyWorld::jointVelocity(std::size_t body) const
 {
   const JointType type = m_joints[body];
+  const mjModel* model = m_model->model;
+  const mjData* data = m_model->data;
   if (type != JointType::Hinge && type != JointType::Slide)
   {
-    return 0.0;
+    // No single coordinate: the body's angular speed in the world, |J_r qdot|, from the
+    // rotational Jacobian of the state's own frames.
+    std::vector<mjtNum> rotational(static_cast<std::size_t>(3 * model->nv));
+    const int b = m_ids[body];
+    mj_jac(model, data, nullptr, rotational.data(), data->xpos + 3 * b, b);
+    double w[3] = {0.0, 0.0, 0.0};
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int dof = 0; dof < model->nv; ++dof)
+      {
+        w[row] += rotational[static_cast<std::size_t>(row * model->nv + dof)] * data->qvel[dof];
+      }
+    }
+    return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   }
-  const mjModel* model = m_model->model;
   const int joint = model->body_jntadr[m_ids[body]];
-  return m_model->data->qvel[model->jnt_dofadr[joint]];
+  return data->qvel[model->jnt_dofadr[joint]];
 }
 
 Vec3 BodyWorld::pointVelocity(std::size_t body, const Vec3& point) const

@@ -1,7 +1,10 @@
 // The bodies of a scene and their integration (paper section 6) on MuJoCo, whose headers stay in
 // BodyWorld.cpp. Each haptic tick: applyForce for the touched body (the force the device renders,
 // equal and opposite, at the contact point: J^T f_c, eqs. 23-24), then step(), then pose() moves
-// each body's object for the next proxy update.
+// each body's object for the next proxy update. MuJoCo's messages are Proxima's once a world
+// is made: a warning is one line on standard error (`proxima: MuJoCo warning: ...`), an error a
+// std::runtime_error thrown from the call that met it; neither reaches standard output, and no
+// MUJOCO_LOG.TXT is written.
 #pragma once
 
 #include "Core/Vec3.h"
@@ -75,8 +78,10 @@ public:
 
   /// Where the body is now, relative to where it started.
   BodyPose pose(std::size_t body) const;
-  /// The joint coordinate q and its rate (hinge: radians; slide: metres); 0 for ball, free and
-  /// mechanism bodies.
+  /// The joint coordinate q and its rate (hinge: radians and rad/s; slide: metres and m/s). Ball,
+  /// free and mechanism bodies have no single coordinate: q is the angle of their turn from where
+  /// they started (the length of the rotation vector of pose(), radians in [0, pi]) and its rate
+  /// their angular speed in the world (rad/s, never negative).
   double jointPosition(std::size_t body) const;
   double jointVelocity(std::size_t body) const;
   /// Velocity (m/s) of the body's material point now at `point` (world).

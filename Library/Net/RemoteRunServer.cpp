@@ -9,21 +9,113 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+
 #include <chrono>
+#include <string>
 #include <utility>
 
 namespace proxima
 {
 
+namespace
+{
+bool isLoopbackHost(const std::string& host)
+{
+  if (host == "localhost")
+  {
+    return true;
+  }
+  in_addr v4{};
+  if (inet_pton(AF_INET, host.c_str(), &v4) == 1)
+  {
+    return (ntohl(v4.s_addr) >> 24) == 127;
+  }
+  in6_addr v6{};
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']' &&
+      inet_pton(AF_INET6, host.substr(1, host.size() - 2).c_str(), &v6) == 1)
+  {
+    // ::1, or ::ffff:127.x.y.z (an IPv4 loopback address written as IPv6).
+    return IN6_IS_ADDR_LOOPBACK(&v6) || (IN6_IS_ADDR_V4MAPPED(&v6) && v6.s6_addr[12] == 127);
+  }
+  return false;
+}
+} // namespace
+
+ListenAddress parseListenAddress(const std::string& text)
+{
+  const auto refuse = [&](const std::string& defect) {
+    throw InputError("--listen", "'" + text + "' " + defect);
+  };
+  ListenAddress address;
+  std::string port;
+  bool hasPort = false;
+  if (!text.empty() && text.front() == '[')
+  {
+    const std::size_t close = text.find(']');
+    if (close == std::string::npos)
+    {
+      refuse("has no ']' after its IPv6 address: give [ADDRESS]:PORT, as [::1]:50051");
+    }
+    address.host = text.substr(0, close + 1);
+    if (close + 1 < text.size())
+    {
+      if (text[close + 1] != ':')
+      {
+        refuse("has something other than ':PORT' after ']'");
+      }
+      hasPort = true;
+      port = text.substr(close + 2);
+    }
+  }
+  else
+  {
+    const std::size_t colon = text.find(':');
+    if (colon != std::string::npos && text.find(':', colon + 1) != std::string::npos)
+    {
+      refuse("has more than one ':': write an IPv6 address in brackets, as [::1]:50051");
+    }
+    address.host = text.substr(0, colon);
+    if (colon != std::string::npos)
+    {
+      hasPort = true;
+      port = text.substr(colon + 1);
+    }
+  }
+  if (address.host.empty() || address.host == "[]")
+  {
+    refuse("has no host: give HOST:PORT, as 127.0.0.1:50051");
+  }
+  if (hasPort)
+  {
+    if (port.empty() || port.find_first_not_of("0123456789") != std::string::npos)
+    {
+      refuse("has no port number after ':': give a whole number from 0 to 65535 (0 takes a free "
+             "one), or no ':' for " +
+             std::to_string(kDefaultListenPort));
+    }
+    const std::size_t digits = port.find_first_not_of('0');
+    if (digits != std::string::npos && (port.size() - digits > 5 || std::stoi(port) > 65535))
+    {
+      refuse("has port " + port + ", out of range: give 0 to 65535 (0 takes a free one)");
+    }
+    address.port = digits == std::string::npos ? 0 : std::stoi(port);
+  }
+  address.loopback = isLoopbackHost(address.host);
+  return address;
+}
+
 bool isLoopbackAddress(const std::string& hostAndPort)
 {
-  const std::size_t colon = hostAndPort.rfind(':');
-  std::string host = colon == std::string::npos ? hostAndPort : hostAndPort.substr(0, colon);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
+  try
   {
-    host = host.substr(1, host.size() - 2);
+    return parseListenAddress(hostAndPort).loopback;
   }
-  return host == "127.0.0.1" || host == "localhost" || host == "::1";
+  catch (const InputError&)
+  {
+    return false;
+  }
 }
 
 namespace
@@ -65,7 +157,8 @@ struct RemoteRunServer::Impl
 RemoteRunServer::RemoteRunServer(const RemoteServerSettings& settings)
   : m_impl(std::make_unique<Impl>())
 {
-  if (settings.token.empty() && !isLoopbackAddress(settings.listen))
+  const ListenAddress address = parseListenAddress(settings.listen);
+  if (settings.token.empty() && !address.loopback)
   {
     throw InputError("--listen", settings.listen +
                                    " is not a loopback address: give --token-file, which every "
@@ -82,7 +175,7 @@ RemoteRunServer::RemoteRunServer(const RemoteServerSettings& settings)
     credentials = grpc::SslServerCredentials(options);
   }
   grpc::ServerBuilder builder;
-  builder.AddListeningPort(settings.listen, credentials, &m_impl->port);
+  builder.AddListeningPort(address.hostAndPort(), credentials, &m_impl->port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(settings.maxRequestBytes));
   builder.RegisterService(m_impl->service.get());
   if (settings.runtime != nullptr)

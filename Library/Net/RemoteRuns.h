@@ -47,7 +47,32 @@ struct RemoteServerSettings
   std::uint64_t maxModelTriangles = 20'000'000;
 };
 
-/// True for 127.0.0.1, localhost and ::1 (with or without brackets), with any port.
+/// The port a --listen address without one takes (Documentation/Server.md).
+inline constexpr int kDefaultListenPort = 50051;
+
+/// A --listen address, checked.
+struct ListenAddress
+{
+  /// As given: a name, an IPv4 address, or an IPv6 address in brackets ("[::1]").
+  std::string host;
+  /// 0 to 65535; 0 takes a free one.
+  int port = kDefaultListenPort;
+  /// The host is this machine's loopback: localhost, any address of 127.0.0.0/8, ::1 (also as
+  /// an IPv4-mapped 127 address).
+  bool loopback = false;
+
+  /// "HOST:PORT", as gRPC binds it.
+  std::string hostAndPort() const { return host + ":" + std::to_string(port); }
+};
+
+/// Reads `HOST:PORT`, `[IPV6]:PORT`, or a host alone, which takes kDefaultListenPort. Throws
+/// InputError naming --listen for an empty host, a port that is not a whole number from 0 to
+/// 65535 (gRPC would wrap 99999 to 34463, and take 443 for a missing one), or an IPv6 address
+/// without brackets.
+ListenAddress parseListenAddress(const std::string& text);
+
+/// True for a loopback host (ListenAddress::loopback) with any port; false for an address that
+/// parseListenAddress refuses.
 bool isLoopbackAddress(const std::string& hostAndPort);
 
 class RemoteRunServer

@@ -593,9 +593,9 @@ std::string InvariantStats::summary(const std::string& name) const
       << maxCapLag << " m from the capped end; non-terminating " << nonTerminating << ")"
       << ", failures " << failures() << " (penetration " << penetrations << ", crossing "
       << crossings << ", tunnel " << tunnels << ", free path " << freePathFailures << ", residual "
-      << residualFailures << ", gap " << gapFailures << ", force " << forceFailures << ", refusal "
-      << refusalFailures << ", replay " << replayFailures << ", approach " << approachFailures
-      << ", non-terminating " << nonTerminating << ")\n";
+      << residualFailures << ", gap " << gapFailures << ", force " << forceFailures << ", coverage "
+      << coverageFailures << ", refusal " << refusalFailures << ", replay " << replayFailures
+      << ", approach " << approachFailures << ", non-terminating " << nonTerminating << ")\n";
   // One row per case for the tables of the closing note: grep '^\[table\]'.
   out << "[table] | " << name << " | " << ticks << " | " << minClearance << " | "
       << minSweepClearance << " | " << maxResidual << " | " << maxGap << " | " << maxFreePathError
@@ -610,6 +610,58 @@ std::string InvariantStats::summary(const std::string& name) const
     out << "[oracle] " << name << ": note " << note << "\n";
   }
   return out.str();
+}
+
+void checkServoForce(InvariantStats& stats, const std::string& where, const ForceTick& tick,
+                     double stiffness, double maxForce)
+{
+  const Vec3& force = tick.force;
+  if (!std::isfinite(force.x) || !std::isfinite(force.y) || !std::isfinite(force.z))
+  {
+    stats.fail(stats.forceFailures, where + ": force is not finite");
+    return;
+  }
+  if (tick.refused)
+  {
+    if (force != tick.previousForce)
+    {
+      stats.fail(stats.forceFailures, where + ": refused tick did not hold the force");
+    }
+    return;
+  }
+  // In long double, whose exponent reaches 1e4932: the spring and its magnitude for a finger
+  // 1e300 m away are exact enough there, where in double |F|^2 overflows.
+  const long double k = stiffness;
+  const long double fx = (static_cast<long double>(tick.proxy.x) - tick.finger.x) * k;
+  const long double fy = (static_cast<long double>(tick.proxy.y) - tick.finger.y) * k;
+  const long double fz = (static_cast<long double>(tick.proxy.z) - tick.finger.z) * k;
+  const long double longMagnitude = std::sqrt(fx * fx + fy * fy + fz * fz);
+  const double limit = maxForce * (1.0 + 1e-12);
+  if (tick.ramped || (tick.inContact && !tick.knownStiffness))
+  {
+    // Bounded by the clamp, and (unramped) along the spring.
+    const long double along = fx * force.x + fy * force.y + fz * force.z;
+    if (norm(force) > limit || (!tick.ramped && along < 0.0L))
+    {
+      stats.fail(stats.forceFailures, where + ": force " + str(force) + " is beyond the clamp " +
+                                        str(maxForce) + " N or against kp (proxy - finger)");
+    }
+    return;
+  }
+  const bool clamp = longMagnitude > maxForce;
+  const long double gain = clamp ? maxForce / longMagnitude : 1.0L;
+  const Vec3 expected{static_cast<double>(fx * gain), static_cast<double>(fy * gain),
+                      static_cast<double>(fz * gain)};
+  const double magnitude = static_cast<double>(longMagnitude);
+  const double error = norm(force - expected) / std::max(norm(expected), 1e-300);
+  stats.maxForceError = std::max(stats.maxForceError, magnitude > 0.0 ? error : 0.0);
+  if (clamp != tick.clamped || (magnitude > 0.0 && error > 1e-12) ||
+      (magnitude == 0.0 && force != Vec3{}))
+  {
+    stats.fail(stats.forceFailures,
+               where + ": force " + str(force) + (tick.clamped ? " (clamped)" : "") +
+                 " but kp (proxy - finger) gives " + str(expected) + (clamp ? " (clamped)" : ""));
+  }
 }
 
 TickChecker::TickChecker(const MeshOracle& oracle, const CollisionScene& scene,

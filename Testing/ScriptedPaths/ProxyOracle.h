@@ -154,6 +154,8 @@ struct InvariantStats
   std::uint64_t residualFailures = 0;
   std::uint64_t gapFailures = 0;
   std::uint64_t forceFailures = 0;
+  /// A trace that is not every tick of its path at the run's rate (ticks, times or fingers).
+  std::uint64_t coverageFailures = 0;
   std::uint64_t refusalFailures = 0;
   std::uint64_t replayFailures = 0;
   /// A move stage that carried the proxy farther from the finger: each goal is the feasible point
@@ -168,12 +170,39 @@ struct InvariantStats
   std::uint64_t failures() const
   {
     return penetrations + crossings + tunnels + freePathFailures + residualFailures + gapFailures +
-           forceFailures + refusalFailures + replayFailures + approachFailures + nonTerminating;
+           forceFailures + coverageFailures + refusalFailures + replayFailures + approachFailures +
+           nonTerminating;
   }
   void fail(std::uint64_t& counter, const std::string& message);
   /// One line per measure, for the test output.
   std::string summary(const std::string& name) const;
 };
+
+/// One tick's force as the servo commanded it (ServoForce), with what it is made from.
+struct ForceTick
+{
+  Vec3 proxy;
+  Vec3 finger;
+  Vec3 force;
+  /// The force of the tick before (zero before the first).
+  Vec3 previousForce;
+  bool refused = false;
+  bool clamped = false;
+  /// The servo ramped the force (rate limit after a start outside or a scene change, or a fade):
+  /// it is then bounded by the clamp but is not the spring's.
+  bool ramped = false;
+  /// False where a surface material may scale kp at the contact (a stiffness other than 1, a
+  /// stiffness map or region) and the trace does not say by how much: in contact only the
+  /// direction and the clamp are checked.
+  bool knownStiffness = true;
+  bool inContact = false;
+};
+
+/// (e) Force: kp (proxy - finger), computed in long double, clamped to `maxForce` (and flagged
+/// clamped exactly when it is); a refused finger holds the previous force, bit for bit; a ramped
+/// force stays within the clamp. Counts into stats.forceFailures.
+void checkServoForce(InvariantStats& stats, const std::string& where, const ForceTick& tick,
+                     double stiffness, double maxForce);
 
 /// Checks every tick of a proxy run against the oracle. The move segments of a tick are
 /// recovered by replaying it from the previous proxy with the iteration cap set to 1, 2, ...:

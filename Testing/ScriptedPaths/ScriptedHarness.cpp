@@ -133,43 +133,16 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
       stats.fail(stats.refusalFailures, where + ": finger " + oracle::str(record.finger) +
                                           (nanTick ? " was not refused" : " was refused"));
     }
-    if (!std::isfinite(record.force.x) || !std::isfinite(record.force.y) ||
-        !std::isfinite(record.force.z))
-    {
-      stats.fail(stats.forceFailures, where + ": force is not finite");
-    }
-    else if (record.fingerRefused)
-    {
-      if (record.force != previousForce)
-      {
-        stats.fail(stats.forceFailures, where + ": refused tick did not hold the force");
-      }
-    }
-    else
-    {
-      // In long double, whose exponent reaches 1e4932: the spring and its magnitude for a
-      // finger 1e300 m away are exact enough there, where in double |F|^2 overflows (the
-      // servo's clamp once gave 0 N for such a finger, and this oracle agreed with it).
-      const long double k = c.servo.stiffness;
-      const long double fx = (static_cast<long double>(record.proxy.x) - record.finger.x) * k;
-      const long double fy = (static_cast<long double>(record.proxy.y) - record.finger.y) * k;
-      const long double fz = (static_cast<long double>(record.proxy.z) - record.finger.z) * k;
-      const long double longMagnitude = std::sqrt(fx * fx + fy * fy + fz * fz);
-      const bool clamp = longMagnitude > c.servo.maxForce;
-      const long double gain = clamp ? c.servo.maxForce / longMagnitude : 1.0L;
-      const Vec3 expected{static_cast<double>(fx * gain), static_cast<double>(fy * gain),
-                          static_cast<double>(fz * gain)};
-      const double magnitude = static_cast<double>(longMagnitude);
-      const double error = norm(record.force - expected) / std::max(norm(expected), 1e-300);
-      stats.maxForceError = std::max(stats.maxForceError, magnitude > 0.0 ? error : 0.0);
-      if (clamp != record.forceClamped || (magnitude > 0.0 && error > 1e-12) ||
-          (magnitude == 0.0 && record.force != Vec3{}))
-      {
-        stats.fail(stats.forceFailures, where + ": force " + oracle::str(record.force) +
-                                          " but kp (proxy - finger) gives " +
-                                          oracle::str(expected));
-      }
-    }
+    oracle::ForceTick force;
+    force.proxy = record.proxy;
+    force.finger = record.finger;
+    force.force = record.force;
+    force.previousForce = previousForce;
+    force.refused = record.fingerRefused;
+    force.clamped = record.forceClamped;
+    force.ramped = record.rateLimited || record.fading;
+    force.inContact = record.numContacts > 0;
+    oracle::checkServoForce(stats, where, force, c.servo.stiffness, c.servo.maxForce);
     previousForce = record.force;
     if (c.keepTrace)
     {

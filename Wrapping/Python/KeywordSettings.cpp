@@ -2,11 +2,13 @@
 #include "Bindings.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/InputChecks/ParameterRanges.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -16,11 +18,68 @@ namespace
 {
 using Setter = std::function<void(ScriptedRunSettings&, const py::handle&)>;
 
-Setter number(double ScriptedRunSettings::*field)
+// "str ('0.002')": the Python type and value a keyword was given, for its TypeError.
+std::string given(const py::handle& value)
 {
-  return [field](ScriptedRunSettings& settings, const py::handle& value) {
-    settings.*field = value.cast<double>();
+  return std::string(Py_TYPE(value.ptr())->tp_name) + " (" + py::repr(value).cast<std::string>() +
+         ")";
+}
+
+// A number keyword takes an int or a float (numpy's too) and nothing else: not a bool (True is
+// not 1 m), not a string ('0.002' is text, as it is to Python). Its range is checked with the
+// command line's (checkScriptedRunSettings).
+double numberFrom(const std::string& keyword, const py::handle& value)
+{
+  PyObject* object = value.ptr();
+  const bool number =
+    !PyBool_Check(object) && !PyUnicode_Check(object) && !PyBytes_Check(object) &&
+    (PyFloat_Check(object) || PyIndex_Check(object) || py::hasattr(value, "__float__"));
+  if (!number || py::isinstance<py::array>(value) ||
+      py::isinstance(value, py::module_::import("numpy").attr("bool_")))
+  {
+    throw py::type_error("keyword '" + keyword + "' takes a number (an int or a float), not " +
+                         given(value));
+  }
+  PyObject* converted = PyNumber_Float(object);
+  if (converted == nullptr)
+  {
+    // An int too large for a double (10**400): no number of any range.
+    PyErr_Clear();
+    return std::numeric_limits<double>::infinity();
+  }
+  const double result = PyFloat_AsDouble(converted);
+  Py_DECREF(converted);
+  return result;
+}
+
+Setter number(const char* keyword, double ScriptedRunSettings::*field)
+{
+  return [keyword, field](ScriptedRunSettings& settings, const py::handle& value) {
+    settings.*field = numberFrom(keyword, value);
   };
+}
+
+// max_iterations takes an int (numpy's too), not a float (1.5 is no count of iterations) nor a
+// bool; one outside the command line's range, 2**70 as well, is refused as the command line
+// refuses it.
+void setMaxIterations(ScriptedRunSettings& settings, const py::handle& value)
+{
+  PyObject* object = value.ptr();
+  if (PyBool_Check(object) || !PyIndex_Check(object) || py::isinstance<py::array>(value))
+  {
+    throw py::type_error("keyword 'max_iterations' takes a whole number (an int), not " +
+                         given(value));
+  }
+  const py::object count = py::reinterpret_steal<py::object>(PyNumber_Index(object));
+  int overflow = 0;
+  const long long whole = PyLong_AsLongLongAndOverflow(count.ptr(), &overflow);
+  if (overflow != 0 || !kMaxIterationsRange.contains(static_cast<double>(whole)))
+  {
+    throw InputError("--max-iterations", "must be a whole number " +
+                                           describeRange(kMaxIterationsRange) + ", not " +
+                                           py::str(count).cast<std::string>());
+  }
+  settings.maxIterations = static_cast<int>(whole);
 }
 
 Setter text(std::string ScriptedRunSettings::*field)
@@ -37,22 +96,21 @@ const std::map<std::string, Setter>& setters()
   static const std::map<std::string, Setter> table = {
     {"mesh", text(&ScriptedRunSettings::mesh)},
     {"scene", text(&ScriptedRunSettings::scene)},
-    {"scale", number(&ScriptedRunSettings::scale)},
-    {"radius", number(&ScriptedRunSettings::radius)},
-    {"stiffness", number(&ScriptedRunSettings::stiffness)},
-    {"rate", number(&ScriptedRunSettings::rate)},
-    {"max_force", number(&ScriptedRunSettings::maxForce)},
-    {"max_iterations", [](ScriptedRunSettings& settings,
-                          const py::handle& value) { settings.maxIterations = value.cast<int>(); }},
-    {"skin", number(&ScriptedRunSettings::skin)},
+    {"scale", number("scale", &ScriptedRunSettings::scale)},
+    {"radius", number("radius", &ScriptedRunSettings::radius)},
+    {"stiffness", number("stiffness", &ScriptedRunSettings::stiffness)},
+    {"rate", number("rate", &ScriptedRunSettings::rate)},
+    {"max_force", number("max_force", &ScriptedRunSettings::maxForce)},
+    {"max_iterations", setMaxIterations},
+    {"skin", number("skin", &ScriptedRunSettings::skin)},
     {"shading", text(&ScriptedRunSettings::shading)},
-    {"feature_angle", number(&ScriptedRunSettings::featureAngle)},
-    {"static_friction", number(&ScriptedRunSettings::staticFriction)},
-    {"dynamic_friction", number(&ScriptedRunSettings::dynamicFriction)},
-    {"viscosity", number(&ScriptedRunSettings::viscosity)},
+    {"feature_angle", number("feature_angle", &ScriptedRunSettings::featureAngle)},
+    {"static_friction", number("static_friction", &ScriptedRunSettings::staticFriction)},
+    {"dynamic_friction", number("dynamic_friction", &ScriptedRunSettings::dynamicFriction)},
+    {"viscosity", number("viscosity", &ScriptedRunSettings::viscosity)},
     {"texture", text(&ScriptedRunSettings::texture)},
     {"texture_role", text(&ScriptedRunSettings::textureRole)},
-    {"texture_amplitude", number(&ScriptedRunSettings::textureAmplitude)},
+    {"texture_amplitude", number("texture_amplitude", &ScriptedRunSettings::textureAmplitude)},
     {"texture_channel", text(&ScriptedRunSettings::textureChannel)},
     {"tick_budget", text(&ScriptedRunSettings::tickBudget)},
   };

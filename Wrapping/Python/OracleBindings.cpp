@@ -1,12 +1,14 @@
 // proxima._proxima.check_trace: the verdict of the scripted suites' oracle (Testing/ScriptedPaths/
 // ProxyOracle.h: CGAL's AABB tree, exact predicates, an exact QP; written apart from the solver)
-// on a trace, whoever produced it: no penetration, no tunnelling, the local minimum reached.
+// on a trace, whoever produced it: every tick of the path at the run's rate, no penetration, no
+// tunnelling, the local minimum reached, and the servo's force for the proxy and the finger.
 #include "Bindings.h"
 
 #include "IO/InputChecks/InputError.h"
 #include "ProxyOracle.h"
 #include "Proxy/ProxySolver.h"
 #include "Proxy/ProxyStart.h"
+#include "Runtime/LockstepRuntime.h"
 
 #include <memory>
 #include <vector>
@@ -46,6 +48,8 @@ py::dict verdict(const oracle::InvariantStats& stats)
   result["local_minimum_failures"] = stats.residualFailures;
   result["gap_failures"] = stats.gapFailures;
   result["replay_failures"] = stats.replayFailures;
+  result["force_failures"] = stats.forceFailures;
+  result["coverage_failures"] = stats.coverageFailures;
   result["approach_failures"] = stats.approachFailures;
   result["non_terminating"] = stats.nonTerminating;
   result["budget_limited_ticks"] = stats.budgetLimitedTicks;
@@ -67,12 +71,16 @@ void addOracleBindings(py::module_& module)
       const FingerPath fingerPath = fingerPathFrom(path, settings);
       const auto tick = traceColumn<std::uint64_t>(trace, "tick", -1);
       const py::ssize_t rows = tick.shape(0);
+      const auto time = traceColumn<double>(trace, "t", rows);
       const auto fingerX = traceColumn<double>(trace, "finger_x", rows);
       const auto fingerY = traceColumn<double>(trace, "finger_y", rows);
       const auto fingerZ = traceColumn<double>(trace, "finger_z", rows);
       const auto proxyX = traceColumn<double>(trace, "proxy_x", rows);
       const auto proxyY = traceColumn<double>(trace, "proxy_y", rows);
       const auto proxyZ = traceColumn<double>(trace, "proxy_z", rows);
+      const auto forceX = traceColumn<double>(trace, "force_x", rows);
+      const auto forceY = traceColumn<double>(trace, "force_y", rows);
+      const auto forceZ = traceColumn<double>(trace, "force_z", rows);
       const auto iterations = traceColumn<std::int32_t>(trace, "iterations", rows);
       const auto contacts = traceColumn<std::int32_t>(trace, "contacts", rows);
       const auto flags = traceColumn<std::uint32_t>(trace, "flags", rows);
@@ -81,8 +89,10 @@ void addOracleBindings(py::module_& module)
       struct Row
       {
         std::uint64_t tick;
+        double time;
         Vec3 finger;
         Vec3 proxy;
+        Vec3 force;
         int iterations;
         int contacts;
         std::uint32_t flags;
@@ -92,8 +102,10 @@ void addOracleBindings(py::module_& module)
       {
         table[static_cast<std::size_t>(row)] =
           Row{tick.at(row),
+              time.at(row),
               Vec3{fingerX.at(row), fingerY.at(row), fingerZ.at(row)},
               Vec3{proxyX.at(row), proxyY.at(row), proxyZ.at(row)},
+              Vec3{forceX.at(row), forceY.at(row), forceZ.at(row)},
               iterations.at(row),
               contacts.at(row),
               flags.at(row)};
@@ -115,12 +127,66 @@ void addOracleBindings(py::module_& module)
         oracle::TickChecker checker(meshOracle, scene, parameters, oracleSettings);
         // Where the run put the proxy before its first tick (ProxyStart.h).
         checker.reset(placeProxyStart(scene, parameters, fingerPath.positions.front()).position);
+        oracle::InvariantStats& checked = checker.stats();
+        // Coverage: the run plays every tick of the path at its rate, tick i at
+        // start + i / rate with the finger where the path is then.
+        const double rate = settings.rate;
+        const std::uint64_t expected =
+          ticksCovering(fingerPath.startTime(), fingerPath.endTime(), rate);
+        if (table.size() != expected)
+        {
+          checked.fail(checked.coverageFailures, "the trace has " + std::to_string(table.size()) +
+                                                   " ticks, but the path at " + oracle::str(rate) +
+                                                   " Hz has " + std::to_string(expected));
+        }
+        // Whether a surface material may scale kp at a contact, by an amount no column holds.
+        bool knownStiffness = settings.textureRole != "stiffness";
+        for (const CollisionObject& object : scene.objects)
+        {
+          knownStiffness = knownStiffness && object.material.stiffness == 1.0 &&
+                           object.material.stiffnessRegions.empty();
+          for (const TextureMap& map : object.material.textures)
+          {
+            knownStiffness = knownStiffness && map.role != TextureRole::Stiffness;
+          }
+        }
+        const ServoParameters servo = servoParameters(settings);
+        std::size_t hint = 0;
+        Vec3 previousForce;
+        std::uint64_t index = 0;
         for (const Row& row : table)
         {
-          checker.check(row.tick, row.finger, row.proxy, row.iterations, row.contacts,
-                        (row.flags & kTickFingerRefused) != 0, (row.flags & kTickIterationCap) != 0,
+          const std::string where = "tick " + std::to_string(row.tick);
+          const double at = fingerPath.startTime() + static_cast<double>(index) / rate;
+          const Vec3 sampled = fingerPath.positionAt(at, hint);
+          if (checked.coverageFailures == 0 &&
+              (row.tick != index || row.time != at || row.finger != sampled))
+          {
+            checked.fail(checked.coverageFailures,
+                         "row " + std::to_string(index) + " is " + where +
+                           " at t = " + oracle::str(row.time) + " s with the finger at " +
+                           oracle::str(row.finger) + ", but the path's tick " +
+                           std::to_string(index) + " is at t = " + oracle::str(at) +
+                           " s with the finger at " + oracle::str(sampled));
+          }
+          ++index;
+          const bool refused = (row.flags & kTickFingerRefused) != 0;
+          checker.check(row.tick, row.finger, row.proxy, row.iterations, row.contacts, refused,
+                        (row.flags & kTickIterationCap) != 0,
                         (row.flags & kTickContactOverflow) != 0,
                         (row.flags & kTickBudgetLimited) != 0);
+          oracle::ForceTick force;
+          force.proxy = row.proxy;
+          force.finger = row.finger;
+          force.force = row.force;
+          force.previousForce = previousForce;
+          force.refused = refused;
+          force.clamped = (row.flags & kTickForceClamped) != 0;
+          force.ramped = (row.flags & (kTickForceRateLimited | kTickForceFading)) != 0;
+          force.knownStiffness = knownStiffness;
+          force.inContact = row.contacts > 0;
+          oracle::checkServoForce(checked, where, force, servo.stiffness, servo.maxForce);
+          previousForce = row.force;
         }
         stats = checker.stats();
       }

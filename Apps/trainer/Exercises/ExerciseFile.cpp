@@ -198,9 +198,17 @@ private:
     {
       fail(at, "must be an array of at least two points [x, y, z], got " + quoted(line));
     }
+    double length = 0.0;
     for (std::size_t i = 0; i < line.size(); ++i)
     {
       task.line.push_back(point(line[i], element(at, i)));
+      length += i == 0 ? 0.0 : overflowSafeNorm(task.line[i] - task.line[i - 1]);
+    }
+    // A line of no length has nothing to trace: its one point would be covered by a touch.
+    if (!(length > 0.0))
+    {
+      fail(at, "has no length (all its points are one point): give a line to trace, got " +
+                 quoted(line));
     }
     task.tolerance =
       ranged(require(value, "tolerance", where), child(where, "tolerance"), kExerciseLengthRange);

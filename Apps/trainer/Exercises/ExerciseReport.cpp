@@ -65,7 +65,7 @@ Json taskJson(const ExerciseTask& task, const TaskScore& score)
       json["min_coverage"] = task.trace.minCoverage;
       json["off_line"] = score.trace.offLine;
       json["max_off_line"] = task.trace.maxOffLine;
-      json["max_deviation_m"] = score.trace.maxDeviation;
+      json["max_deviation_m"] = score.trace.touched ? Json(score.trace.maxDeviation) : Json();
       json["tolerance_m"] = task.trace.tolerance;
       json["contact_ticks"] = score.trace.contactTicks;
       break;

@@ -228,21 +228,23 @@ void ExerciseScorer::scoreTrace(const ExerciseTask& task, TaskScore& score, Trac
   }
   const double deviation = distanceToPolyline(contact, task.trace.line);
   const bool onLine = deviation <= tolerance;
-  if (!progress.onLineSeen && !onLine)
+  progress.maxDeviationAnyContact = std::max(progress.maxDeviationAnyContact, deviation);
+  // Before the trainee reached the line, a tick counts for none of the figures since the first.
+  if (progress.onLineSeen || onLine)
   {
-    return; // before the trainee reached the line
-  }
-  progress.onLineSeen = true;
-  ++progress.contactSinceFirst;
-  progress.strayedSinceFirst += onLine ? 0 : 1;
-  progress.maxDeviationSinceFirst = std::max(progress.maxDeviationSinceFirst, deviation);
-  if (onLine)
-  {
-    progress.contactAtLast = progress.contactSinceFirst;
-    progress.strayedAtLast = progress.strayedSinceFirst;
-    progress.maxDeviationAtLast = progress.maxDeviationSinceFirst;
+    progress.onLineSeen = true;
+    ++progress.contactSinceFirst;
+    progress.strayedSinceFirst += onLine ? 0 : 1;
+    progress.maxDeviationSinceFirst = std::max(progress.maxDeviationSinceFirst, deviation);
+    if (onLine)
+    {
+      progress.contactAtLast = progress.contactSinceFirst;
+      progress.strayedAtLast = progress.strayedSinceFirst;
+      progress.maxDeviationAtLast = progress.maxDeviationSinceFirst;
+    }
   }
   TraceScore& trace = score.trace;
+  trace.touched = true;
   const auto covered =
     static_cast<double>(std::count(progress.covered.begin(), progress.covered.end(), true));
   trace.coverage = covered / static_cast<double>(progress.samples.size());
@@ -250,7 +252,10 @@ void ExerciseScorer::scoreTrace(const ExerciseTask& task, TaskScore& score, Trac
   trace.offLine = progress.contactAtLast > 0 ? static_cast<double>(progress.strayedAtLast) /
                                                  static_cast<double>(progress.contactAtLast)
                                              : 0.0;
-  trace.maxDeviation = progress.maxDeviationAtLast;
+  // A trace that never came within the tolerance has no ticks from the first on the line: its
+  // deviation is the largest of every contact tick's, not the 0 of an empty count.
+  trace.maxDeviation =
+    progress.onLineSeen ? progress.maxDeviationAtLast : progress.maxDeviationAnyContact;
 }
 
 void ExerciseScorer::scoreDamage(const HapticState& state, double forceMagnitude)

@@ -58,7 +58,12 @@ struct TraceScore
 {
   double coverage = 0.0;
   double offLine = 0.0;
+  /// The largest distance of the contact point from the line, over the ticks from the first on
+  /// the line to the last (those offLine counts), or over every contact tick when none came
+  /// within the tolerance.
   double maxDeviation = 0.0;
+  /// A contact tick was scored (else the report's deviation is null: nothing was touched).
+  bool touched = false;
   std::uint64_t contactTicks = 0;
 };
 
@@ -116,6 +121,8 @@ private:
     std::uint64_t contactAtLast = 0;
     std::uint64_t strayedAtLast = 0;
     double maxDeviationAtLast = 0.0;
+    /// The largest deviation of any contact tick, on the line or not.
+    double maxDeviationAnyContact = 0.0;
   };
 
   void scoreTargets(const ExerciseTask& task, TaskScore& score, const HapticState& state,

@@ -99,6 +99,15 @@ TEST_F(ExerciseFile, Defects)
   expectRefused(withTasks("line.json", R"([{"type": "trace", "line": [[0, 0, 0]],
                                              "tolerance": 0.01}])"),
                 "tasks[0].line: must be an array of at least two points [x, y, z], got [[0,0,0]]");
+  // A line of no length, however many points it repeats, is no line to trace.
+  expectRefused(withTasks("point.json", R"([{"type": "trace", "line": [[0, 0, 0], [0, 0, 0]],
+                "tolerance": 0.002}])"),
+                "tasks[0].line: has no length (all its points are one point): give a line to "
+                "trace, got [[0,0,0],[0,0,0]]");
+  expectRefused(withTasks("points.json", R"([{"type": "trace", "line": [[1, 2, 3], [1, 2, 3],
+                [1, 2, 3]], "tolerance": 0.002}])"),
+                "tasks[0].line: has no length (all its points are one point): give a line to "
+                "trace, got [[1,2,3],[1,2,3],[1,2,3]]");
   expectRefused(withTasks("index.json", R"([{"type": "palpation", "object": 0.5, "region": 0,
                                               "pass_distance": 0.01}])"),
                 "tasks[0].object: must be an index (a whole number from 0), got 0.5");

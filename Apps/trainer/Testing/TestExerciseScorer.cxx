@@ -178,6 +178,32 @@ TEST(ExerciseScorer, TraceCoverageAndStraying)
   EXPECT_FALSE(score.tasks[0].passed);
 }
 
+// A trace drawn 8 mm beside the line, never within its 2 mm tolerance: nothing covered, and its
+// largest deviation is 8 mm (the ticks' farthest), not the 0 of no tick on the line.
+TEST(ExerciseScorer, TraceBesideTheLineDeviatesByItsDistance)
+{
+  const CollisionScene scene = floorWithNodule();
+  ExerciseTask task;
+  task.kind = TaskKind::Trace;
+  task.trace.line = {{-0.02, 0.0, 0.0}, {0.02, 0.0, 0.0}};
+  task.trace.tolerance = 0.002;
+  ExerciseScorer scorer(exerciseWith(task), scene);
+  EXPECT_FALSE(scorer.score().tasks[0].trace.touched);
+  double t = 0.0;
+  for (int i = 0; i <= 40; ++i)
+  {
+    const double x = -0.02 + i * 0.001;
+    scorer.addTick(stateAt(t, {x, 0.008, -0.002}, true, {x, i == 20 ? 0.0085 : 0.008, 0.0}, 1.0));
+    t += 0.001;
+  }
+  const TraceScore& trace = scorer.score().tasks[0].trace;
+  EXPECT_TRUE(trace.touched);
+  EXPECT_EQ(trace.coverage, 0.0);
+  EXPECT_EQ(trace.contactTicks, 0u);
+  EXPECT_NEAR(trace.maxDeviation, 0.0085, 1e-12);
+  EXPECT_FALSE(scorer.score().tasks[0].passed);
+}
+
 TEST(ExerciseScorer, DamageEventsAreRunsOfTicksOverTheTissuesLimit)
 {
   const CollisionScene scene = floorWithNodule();

@@ -5,12 +5,17 @@
 #include "Geometry/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -239,6 +244,89 @@ TEST(BodyWorld, EffectiveMassIsWhatAPushMovesThroughTheJoint)
   EXPECT_NEAR(free.leastEffectiveMass(0, {{0.1, 0.0, 0.0}}), mass, 1e-12);
 }
 
+// An axis is a direction of any length: one whose squared norm overflows (1e300) or underflows
+// (1e-300) turns the lever as the unit axis does. MuJoCo normalised 1e300 to a zero axis, warned
+// on standard output that the inertia was singular, wrote MUJOCO_LOG.TXT in the current folder,
+// and the lever never moved.
+TEST(BodyWorld, AnAxisOfAnyLengthTurnsAsItsDirection)
+{
+  const TriangleMesh lever = boxMesh({0.1, 0.01, 0.01}, {0.1, 0.0, 0.0});
+  const auto deflection = [&](const Vec3& axis, const Vec3& push) {
+    JointDescription hinge;
+    hinge.axis = axis;
+    hinge.stiffness = 2.0;
+    hinge.damping = 0.05;
+    BodyWorld world({body("lever", lever, 1000.0, hinge)}, settings());
+    for (int i = 0; i < 2000; ++i)
+    {
+      world.applyForce(0, world.pose(0).apply({0.2, 0.0, 0.0}), push);
+      world.step();
+    }
+    return world.jointPosition(0);
+  };
+  std::filesystem::remove("MUJOCO_LOG.TXT");
+  testing::internal::CaptureStdout();
+  const Vec3 y{0.0, 1.0, 0.0};
+  const Vec3 z{0.0, 0.0, 1.0};
+  double unit = 0.0;
+  double huge = 0.0;
+  double tiny = 0.0;
+  double diagonal = 0.0;
+  double hugeDiagonal = 0.0;
+  std::string refused;
+  try
+  {
+    unit = deflection({0.0, 0.0, 1.0}, y);
+    huge = deflection({0.0, 0.0, 1e300}, y);
+    tiny = deflection({0.0, 0.0, 1e-300}, y);
+    diagonal = deflection({1.0, 1.0, 0.0}, z);
+    hugeDiagonal = deflection({1e300, 1e300, 0.0}, z);
+  }
+  catch (const std::exception& error)
+  {
+    refused = error.what();
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(refused, "");
+  EXPECT_FALSE(std::filesystem::exists("MUJOCO_LOG.TXT"));
+  EXPECT_GT(unit, 0.05);
+  EXPECT_DOUBLE_EQ(huge, unit);
+  EXPECT_DOUBLE_EQ(tiny, unit);
+  EXPECT_LT(diagonal, -0.01);
+  EXPECT_DOUBLE_EQ(hugeDiagonal, diagonal);
+}
+
+// MuJoCo's warnings are one line of Proxima's on standard error, its errors exceptions; neither
+// reaches standard output or writes MUJOCO_LOG.TXT in the current folder.
+TEST(BodyWorld, MujocoMessagesGoToStandardErrorNotToAFile)
+{
+  const TriangleMesh bar = boxMesh({0.01, 0.01, 0.1}, {0.0, 0.0, -0.1});
+  BodyWorld world({body("pendulum", bar, 1000.0, JointDescription{})}, settings());
+  std::filesystem::remove("MUJOCO_LOG.TXT");
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  mju_warning("a test warning");
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(err, "proxima: MuJoCo warning: a test warning\n");
+  // MuJoCo's own handler would print, write the log and exit: the test runs it in a child,
+  // which leaves by _Exit (no exit-time leak check of the forked copy under the sanitizers).
+  EXPECT_EXIT(
+    {
+      try
+      {
+        mju_error("a test error");
+      }
+      catch (const std::runtime_error& error)
+      {
+        std::_Exit(std::string(error.what()) == "MuJoCo: a test error" ? 0 : 3);
+      }
+      std::_Exit(4);
+    },
+    testing::ExitedWithCode(0), "");
+  EXPECT_FALSE(std::filesystem::exists("MUJOCO_LOG.TXT"));
+}
+
 TEST(BodyWorld, BadBodiesAreRefusedByName)
 {
   const TriangleMesh bar = boxMesh({0.01, 0.01, 0.1}, {0.0, 0.0, -0.1});
@@ -264,6 +352,9 @@ TEST(BodyWorld, BadBodiesAreRefusedByName)
   JointDescription negative;
   negative.damping = -1.0;
   EXPECT_NE(refusal(negative).find("damping is negative"), std::string::npos);
+  JointDescription infiniteAxis;
+  infiniteAxis.axis = {std::numeric_limits<double>::infinity(), 0.0, 0.0};
+  EXPECT_EQ(refusal(infiniteAxis), "body 'crank': the joint's axis is not finite");
   BodyDescription weightless = body("crank", bar, 1000.0, JointDescription{});
   weightless.mass.mass = 0.0;
   EXPECT_THROW(BodyWorld({weightless}, settings()), std::invalid_argument);

@@ -54,6 +54,9 @@ inline constexpr ParameterRange kSkinRange{0.0, false, 0.1, " m"};
 inline constexpr ParameterRange kMeshScaleRange{0.0, true, 1e6, ""};
 inline constexpr ParameterRange kFeatureAngleRange{0.0, false, 180.0, " degrees"};
 
+/// The proxy's work: move/update iterations allowed per tick.
+inline constexpr ParameterRange kMaxIterationsRange{1.0, false, 1000.0, ""};
+
 // The spring and the device.
 inline constexpr ParameterRange kStiffnessRange{0.0, true, 1e6, " N/m"};
 inline constexpr ParameterRange kMaxForceRange{0.0, true, 1000.0, " N"};
@@ -89,10 +92,24 @@ inline std::string frictionPairError(double staticFriction, double dynamicFricti
   return {};
 }
 
+// The applications' windows and pictures (proxima view, proxima-inspector, proxima-trainer).
+inline constexpr ParameterRange kWindowSizeRange{64.0, false, 8192.0, " pixels"};
+/// A screenshot's time into its path.
+inline constexpr ParameterRange kScreenshotTimeRange{0.0, false, 1e9, " s"};
+
+// The CAD inspector's probe (Documentation/CadInspector.md): the finger this far beyond the proxy
+// is a stop; gaps wider than the widest are not measured.
+inline constexpr ParameterRange kStopDepthRange{0.0, false, 1.0, " m"};
+inline constexpr ParameterRange kWidestGapRange{1e-6, false, 10.0, " m"};
+
 // Time.
 /// A scripted run or path's sample rate. The real-time servo has its own, narrower rule
 /// (Runtime/ServoRate.h).
 inline constexpr ParameterRange kScriptedRateRange{10.0, false, 100000.0, " Hz"};
+/// The real-time servo loop's rate, the rule of Runtime/ServoRate.h (a static_assert in
+/// Apps/proxima/SceneOptions.cpp keeps the two equal): proxima view, run --realtime, the
+/// applications' windows.
+inline constexpr ParameterRange kRealtimeRateRange{1000.0, false, 10000.0, " Hz"};
 /// The length of a generated path.
 inline constexpr ParameterRange kPathDurationRange{0.0, false, 3600.0, " s"};
 /// Ticks of a run, or rows of a generated path, taken without --max-ticks: about 40 minutes at

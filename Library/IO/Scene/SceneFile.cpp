@@ -172,11 +172,15 @@ private:
     {
       const std::string at = child(where, "axis");
       const std::vector<double> a = numbers(require(value, "axis", where), at, 3, "[ax, ay, az]");
-      body.axis = {a[0], a[1], a[2]};
-      if (!(norm(body.axis) > 0.0))
+      // A direction of any length: scaled by its largest component first, so that neither
+      // [1e300, 1e300, 0] (whose squared norm overflows) nor [1e-300, 0, 0] (whose squared norm
+      // underflows) loses its direction.
+      const Vec3 given{a[0], a[1], a[2]};
+      if (!(maxAbsComponent(given) > 0.0))
       {
         fail(at, "must not be zero");
       }
+      body.axis = overflowSafeDirection(given);
     }
     if (const Json* anchor = find(value, "anchor"))
     {
@@ -291,7 +295,7 @@ private:
       const std::string at = child(where, "axis_angle_deg");
       const std::vector<double> a = numbers(*axisAngle, at, 4, "[ax, ay, az, degrees]");
       const Vec3 axis{a[0], a[1], a[2]};
-      if (!(norm(axis) > 0.0))
+      if (!(maxAbsComponent(axis) > 0.0))
       {
         fail(at, "the axis (the first three numbers) must not be zero");
       }

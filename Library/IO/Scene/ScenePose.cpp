@@ -32,14 +32,14 @@ UnitQuaternion UnitQuaternion::fromAxisAngle(const Vec3& axis, double degrees)
   {
     throw std::invalid_argument("axis-angle rotation with a number that is not finite");
   }
-  const double length = norm(axis);
-  if (!(length > 0.0) || !std::isfinite(length))
+  // Scaled by its largest component first: an axis of 1e300 or 1e-300 keeps its direction.
+  const Vec3 unit = overflowSafeDirection(axis);
+  if (!(maxAbsComponent(unit) > 0.0))
   {
     throw std::invalid_argument("axis-angle rotation about an axis without direction");
   }
   // Reduce the angle first so that a whole number of turns gives the identity exactly.
   const double half = std::remainder(degrees, 360.0) * std::numbers::pi / 360.0;
-  const Vec3 unit = axis / length;
   const double s = std::sin(half);
   return {std::cos(half), unit.x * s, unit.y * s, unit.z * s};
 }

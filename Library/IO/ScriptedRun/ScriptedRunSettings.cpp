@@ -123,7 +123,7 @@ void checkScriptedRunSettings(const ScriptedRunSettings& settings)
   checkRange("--stiffness", settings.stiffness, kStiffnessRange);
   checkRange("--rate", settings.rate, kScriptedRateRange);
   checkRange("--max-force", settings.maxForce, kMaxForceRange);
-  checkRange("--max-iterations", settings.maxIterations, ParameterRange{1.0, false, 1000.0, ""});
+  checkRange("--max-iterations", settings.maxIterations, kMaxIterationsRange);
   checkRange("--skin", settings.skin, kSkinRange);
   TickWorkBudget ignored;
   const std::string budget =

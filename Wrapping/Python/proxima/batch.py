@@ -1,11 +1,13 @@
 """Many scripted cases (meshes x paths x settings) on a Dask cluster, gathered into one table.
 
     from proxima import batch
-    cases = batch.cases(meshes=[{"mesh": "bunny.obj", "scale": 0.4}],
-                        paths=["bunny-probe.csv"], settings=[{"radius": 0.002}])
-    table = batch.run_cases(cases)               # a local cluster of two worker processes
-    table = batch.run_cases(cases, scheduler="tcp://farm:8786")   # many machines
-    batch.write_table(table, "results.csv")
+
+    if __name__ == "__main__":  # a local cluster's workers import the script again
+        cases = batch.cases(meshes=[{"mesh": "bunny.obj", "scale": 0.4}],
+                            paths=["bunny-probe.csv"], settings=[{"radius": 0.002}])
+        table = batch.run_cases(cases)           # a local cluster of two worker processes
+        table = batch.run_cases(cases, scheduler="tcp://farm:8786")   # many machines
+        batch.write_table(table, "results.csv")
 
 Each case runs proxima.run and, with check=True, the oracle on its trace (proxima.check). A row
 holds the case, the run's figures, the oracle's verdict and a digest of the trace's deterministic
@@ -13,6 +15,7 @@ columns (all but solve_ns), so that a farm's results can be compared with a run 
 From a shell: python3 -m proxima.batch CASES.json [--scheduler ADDRESS] [--out TABLE.csv].
 """
 import argparse
+import ast
 import csv
 import hashlib
 import io
@@ -97,6 +100,67 @@ def run_case(case, check_trace=True):
     return row
 
 
+_UNGUARDED = ("proxima.batch.run_cases {where}: a local cluster's workers import the script that "
+              "started them, so each would start a cluster of its own and the script would wait "
+              "for workers that never come; start the batch under "
+              "`if __name__ == \"__main__\":` (Documentation/Python.md)")
+
+
+def _is_main_guard(node):
+    """True for `if __name__ == "__main__":` (either way round)."""
+    if not isinstance(node, ast.If) or not isinstance(node.test, ast.Compare):
+        return False
+    test = node.test
+    if len(test.ops) != 1 or not isinstance(test.ops[0], ast.Eq):
+        return False
+    sides = [test.left, test.comparators[0]]
+    names = [s for s in sides if isinstance(s, ast.Name) and s.id == "__name__"]
+    texts = [s for s in sides if isinstance(s, ast.Constant) and s.value == "__main__"]
+    return len(names) == 1 and len(texts) == 1
+
+
+def _guarded(tree, line):
+    """True when `line` of the module `tree` is in the body of an `if __name__ == "__main__":`."""
+    for node in ast.walk(tree):
+        if _is_main_guard(node) and node.body and \
+                node.body[0].lineno <= line <= node.body[-1].end_lineno:
+            return True
+    return False
+
+
+def _refuse_an_unguarded_script():
+    """Raises RuntimeError when run_cases is about to start a local cluster from a script's top
+    level outside `if __name__ == "__main__":`, and when it is called while a process started by
+    spawn (as Dask starts a local cluster's workers) imports its parent's __main__: the workers of
+    such a script would run its batch again. Scripts read from stdin, `-c` and interactive
+    sessions have no file for the workers to import, and pass."""
+    import multiprocessing
+
+    # multiprocessing's own flag for "bootstrapping": set while spawn's child imports __main__.
+    if getattr(multiprocessing.current_process(), "_inheriting", False):
+        raise RuntimeError(_UNGUARDED.format(
+            where="was called while a worker process imported the script that started it"))
+    main = sys.modules.get("__main__")
+    script = getattr(main, "__file__", None)
+    if main is None or not script:
+        return
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_code.co_name == "<module>"
+                                     and frame.f_globals is vars(main)):
+        frame = frame.f_back
+    if frame is None:
+        return
+    try:
+        with open(script, encoding="utf-8") as source:
+            tree = ast.parse(source.read(), script)
+    except (OSError, SyntaxError, ValueError, UnicodeDecodeError):
+        return
+    if not _guarded(tree, frame.f_lineno):
+        raise RuntimeError(_UNGUARDED.format(
+            where=f"was called at the top level of {script} (line {frame.f_lineno}), outside "
+                  f"`if __name__ == \"__main__\":`"))
+
+
 def run_cases(case_list, scheduler=None, workers=2, check_trace=True, progress=None):
     """Runs every case on a Dask cluster and returns their rows in the order of `case_list`.
 
@@ -108,6 +172,7 @@ def run_cases(case_list, scheduler=None, workers=2, check_trace=True, progress=N
 
     cluster = None
     if scheduler is None:
+        _refuse_an_unguarded_script()
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                dashboard_address=None)
         client = Client(cluster)

@@ -293,6 +293,42 @@ TEST_F(SceneFile, BodyKeysRoundTripIntoTheDescription)
   EXPECT_EQ(free.objects[0].body.mass, 0.3);
 }
 
+// An axis is a direction of any length but zero: one whose squared norm overflows or underflows
+// is read as its unit direction, for a joint and for a rotation, rather than as no direction
+// (which gave a hinge that never moved, or a rotation refused as about no axis).
+TEST_F(SceneFile, AxesOfAnyLengthAreTheirDirections)
+{
+  const auto jointAxis = [&](const std::string& name, const std::string& axis) {
+    return proxima::readSceneFile(write(name, bodyScene(R"({"joint": {"type": "hinge", "axis": )" +
+                                                        axis + R"(}, "mass": 1})")))
+      .objects[0]
+      .body.axis;
+  };
+  const proxima::Vec3 huge = jointAxis("huge.json", "[1e300, 1e300, 0]");
+  EXPECT_DOUBLE_EQ(huge.x, std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(huge.y, std::sqrt(0.5));
+  EXPECT_EQ(huge.z, 0.0);
+  const proxima::Vec3 tiny = jointAxis("tiny.json", "[0, 0, -1e-300]");
+  EXPECT_EQ(tiny.x, 0.0);
+  EXPECT_EQ(tiny.y, 0.0);
+  EXPECT_EQ(tiny.z, -1.0);
+  const proxima::Vec3 plain = jointAxis("plain.json", "[0, 3, 4]");
+  EXPECT_DOUBLE_EQ(plain.y, 0.6);
+  EXPECT_DOUBLE_EQ(plain.z, 0.8);
+  for (const char* axis : {"1e300, 1e300, 0", "1e-300, 1e-300, 0"})
+  {
+    const SceneDescription scene = proxima::readSceneFile(
+      write("turned.json", std::string(R"({"objects": [{"mesh": "m.obj", "pose": {"rotation": )"
+                                       R"({"axis_angle_deg": [)") +
+                             axis + R"(, 90]}}}]})"));
+    const proxima::UnitQuaternion& rotation = scene.objects[0].pose.rotation;
+    EXPECT_DOUBLE_EQ(rotation.w, std::sqrt(0.5)) << axis;
+    EXPECT_DOUBLE_EQ(rotation.x, 0.5) << axis;
+    EXPECT_DOUBLE_EQ(rotation.y, 0.5) << axis;
+    EXPECT_EQ(rotation.z, 0.0) << axis;
+  }
+}
+
 TEST_F(SceneFile, BodyRefusals)
 {
   expectRefused(write("v1.json", R"({"objects": [{"mesh": "m.obj", "body": {}}]})"),
