@@ -172,11 +172,8 @@ void writeBodyPoses(BodyPoseWriter& poses, const BodyCoupling& bodies, const Hap
   for (std::size_t body = 0; body < bodies.numBodies(); ++body)
   {
     const BodyPose pose = bodies.world().pose(body);
-    const JointType type = bodies.world().jointType(body);
     const double q = bodies.world().jointPosition(body);
-    const bool single = type == JointType::Hinge || type == JointType::Slide;
-    poses.write(record.tick, record.time, bodies.object(body), pose.position, pose.orientation,
-                single ? &q : nullptr);
+    poses.write(record.tick, record.time, bodies.object(body), pose.position, pose.orientation, &q);
   }
 }
 

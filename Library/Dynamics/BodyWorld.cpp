@@ -387,7 +387,11 @@ double BodyWorld::jointPosition(std::size_t body) const
   const JointType type = m_joints[body];
   if (type != JointType::Hinge && type != JointType::Slide)
   {
-    return 0.0;
+    // No single coordinate: the angle of the body's turn from where it started, the length of
+    // its rotation vector, in [0, pi].
+    const BodyPose turned = pose(body);
+    const double* q = turned.orientation;
+    return 2.0 * std::atan2(std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]), std::fabs(q[0]));
   }
   const mjModel* model = m_model->model;
   const int joint = model->body_jntadr[m_ids[body]];
@@ -397,13 +401,27 @@ double BodyWorld::jointPosition(std::size_t body) const
 double BodyWorld::jointVelocity(std::size_t body) const
 {
   const JointType type = m_joints[body];
+  const mjModel* model = m_model->model;
+  const mjData* data = m_model->data;
   if (type != JointType::Hinge && type != JointType::Slide)
   {
-    return 0.0;
+    // No single coordinate: the body's angular speed in the world, |J_r qdot|, from the
+    // rotational Jacobian of the state's own frames.
+    std::vector<mjtNum> rotational(static_cast<std::size_t>(3 * model->nv));
+    const int b = m_ids[body];
+    mj_jac(model, data, nullptr, rotational.data(), data->xpos + 3 * b, b);
+    double w[3] = {0.0, 0.0, 0.0};
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int dof = 0; dof < model->nv; ++dof)
+      {
+        w[row] += rotational[static_cast<std::size_t>(row * model->nv + dof)] * data->qvel[dof];
+      }
+    }
+    return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   }
-  const mjModel* model = m_model->model;
   const int joint = model->body_jntadr[m_ids[body]];
-  return m_model->data->qvel[model->jnt_dofadr[joint]];
+  return data->qvel[model->jnt_dofadr[joint]];
 }
 
 Vec3 BodyWorld::pointVelocity(std::size_t body, const Vec3& point) const

@@ -78,8 +78,10 @@ public:
 
   /// Where the body is now, relative to where it started.
   BodyPose pose(std::size_t body) const;
-  /// The joint coordinate q and its rate (hinge: radians; slide: metres); 0 for ball, free and
-  /// mechanism bodies.
+  /// The joint coordinate q and its rate (hinge: radians and rad/s; slide: metres and m/s). Ball,
+  /// free and mechanism bodies have no single coordinate: q is the angle of their turn from where
+  /// they started (the length of the rotation vector of pose(), radians in [0, pi]) and its rate
+  /// their angular speed in the world (rad/s, never negative).
   double jointPosition(std::size_t body) const;
   double jointVelocity(std::size_t body) const;
   /// Velocity (m/s) of the body's material point now at `point` (world).

@@ -317,21 +317,61 @@ TEST(BodyScenes, BallPendulumSwingsInItsPlaneWithThatPlanesPeriod)
   BodyRun run = playBodyScene("ball-pendulum.json", "ball-pendulum-push-release.csv");
   // The upright box hung by a ball at its top edge's middle, pushed on its side: it swings about
   // y, in its own plane, where its inertia about the ball is m (x^2 + z^2) / 12 + m d^2 over
-  // its 0.1 x 0.2 m face, d = 0.1 m. A ball joint has no coordinate: the angle about y comes
-  // from the pose, and the pose must hold no turn about any other axis.
+  // its 0.1 x 0.2 m face, d = 0.1 m. A ball joint has no single coordinate: the signed angle
+  // about y comes from the pose, and the pose must hold no turn about any other axis.
   const double d = kBoxY / 2.0;
   const double inertia = kBoxMass * (kBoxX * kBoxX + kBoxY * kBoxY) / 12.0 + kBoxMass * d * d;
   const double period = 2.0 * M_PI * std::sqrt(inertia / (kBoxMass * 9.81 * d));
   double offPlane = 0.0;
+  std::vector<double> reported;
+  std::vector<double> reportedRate;
   for (BodyTick& tick : run.ticks)
   {
     const RigidTransform& pose = tick.poses[0];
+    reported.push_back(tick.q[0]);
+    reportedRate.push_back(tick.qRate[0]);
     tick.q[0] = std::atan2(pose.row[0].z, pose.row[0].x);
     offPlane = std::max(
       {offPlane, std::abs(pose.row[1].x), std::abs(pose.row[1].z), std::abs(pose.row[0].y)});
   }
   std::printf("[ measured ] ball pendulum: largest turn out of its plane %.3g\n", offPlane);
   EXPECT_LT(offPlane, 1e-9);
+  // What the summary and --bodies-out report for it: the angle of its turn, |theta|, and its
+  // angular speed, |d theta / dt| (central differences of the pose's angle, once the finger has
+  // let go: its push is a kick within a tick); and with them, after the release, the energy of the swing about the ball, I w^2 / 2 + m g d (1 - cos q),
+  // stays that of its largest angle, m g d (1 - cos q_max).
+  double largest = 0.0;
+  double fastest = 0.0;
+  for (std::size_t k = 0; k < run.ticks.size(); ++k)
+  {
+    EXPECT_NEAR(reported[k], std::abs(run.ticks[k].q[0]), 1e-9) << "tick " << k;
+    fastest = std::max(fastest, reportedRate[k]);
+    if (run.ticks[k].state.time > 0.4)
+    {
+      largest = std::max(largest, reported[k]);
+    }
+  }
+  ASSERT_GT(largest, 0.01);
+  const double swing = kBoxMass * 9.81 * d * (1.0 - std::cos(largest));
+  double worstRate = 0.0;
+  double worstEnergy = 0.0;
+  for (std::size_t k = 1; k + 1 < run.ticks.size(); ++k)
+  {
+    if (run.ticks[k].state.time > 0.4)
+    {
+      const double dt = run.ticks[k + 1].state.time - run.ticks[k - 1].state.time;
+      const double rate = std::abs(run.ticks[k + 1].q[0] - run.ticks[k - 1].q[0]) / dt;
+      worstRate = std::max(worstRate, std::abs(reportedRate[k] - rate));
+      const double energy = 0.5 * inertia * reportedRate[k] * reportedRate[k] +
+                            kBoxMass * 9.81 * d * (1.0 - std::cos(reported[k]));
+      worstEnergy = std::max(worstEnergy, std::abs(energy - swing));
+    }
+  }
+  std::printf("[ measured ] ball pendulum: q up to %.6f rad, q_rate up to %.6f rad/s, off the "
+              "pose's d theta / dt by up to %.3g rad/s, energy off by up to %.3g of %.6g J\n",
+              largest, fastest, worstRate, worstEnergy, swing);
+  EXPECT_LT(worstRate, 0.01 * fastest);
+  EXPECT_LT(worstEnergy, 0.02 * swing);
   expectPeriods(run, 0.4, period, "ball pendulum");
   expectNoPenetration(run);
   expectNoEnergyGain(run);

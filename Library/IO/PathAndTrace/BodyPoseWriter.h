@@ -1,8 +1,8 @@
 // The bodies file of `proxima run --bodies-out` (DESIGN.md section 3, "Bodies"): one row per
 // moving object per tick, `tick,t,object,x,y,z,qw,qx,qy,qz,q`, the world pose of the object's
 // frame (a point p of the object as placed is now at (x, y, z) + rotate(q, p)) and the joint
-// coordinate in radians or metres, empty for ball and free joints. Written atomically, like a
-// trace.
+// coordinate in radians or metres (BodyWorld::jointPosition: for ball, free and mechanism bodies
+// the angle of their turn from the start). Written atomically, like a trace.
 #pragma once
 
 #include "Core/Vec3.h"

@@ -32,7 +32,8 @@ struct BodyOutcome
   std::string name;
   std::uint32_t object = 0;
   std::string joint;
-  /// The joint coordinate (hinge: rad; slide: m; 0 for ball and free) and its rate.
+  /// The joint coordinate (hinge: rad; slide: m; ball, free and mechanism: the angle of the
+  /// body's turn from the start, rad) and its rate (for those: the angular speed, rad/s).
   double jointPosition = 0.0;
   double jointVelocity = 0.0;
   /// Joules: kinetic and potential energy at the end, and the work the finger did on the body.
