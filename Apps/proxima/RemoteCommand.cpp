@@ -14,6 +14,7 @@
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
+#include "IO/PathAndTrace/BodyPoseWriter.h"
 #include "IO/PathAndTrace/TraceWriter.h"
 #include "Net/HapticClient.h"
 #include "Net/RemoteRuns.h"
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -40,6 +42,7 @@ struct RemoteOptions
   SceneOptions scene;
   std::string out;
   std::string summary;
+  std::string bodiesOut;
   double maxTicks = kDefaultMaxTicks;
   // upload
   std::vector<std::string> meshes;
@@ -188,26 +191,48 @@ int runRemote(const RemoteOptions& options)
 {
   const SceneOptions& settings = options.scene;
   // Before anything is sent or written: a run never replaces what it reads.
-  refuseOverlappingFiles({{options.out, "--out"}, {options.summary, "--summary"}},
-                         {{settings.mesh, "--mesh"},
-                          {settings.scene, "--scene"},
-                          {settings.path, "--path"},
-                          {settings.texture, "--texture"},
-                          {options.tokenFile, "--token-file"}});
+  refuseOverlappingFiles(
+    {{options.out, "--out"}, {options.bodiesOut, "--bodies-out"}, {options.summary, "--summary"}},
+    {{settings.mesh, "--mesh"},
+     {settings.scene, "--scene"},
+     {settings.path, "--path"},
+     {settings.texture, "--texture"},
+     {options.tokenFile, "--token-file"}});
   RemoteRunRequest request;
   request.settings = settings;
   request.maxTicks = options.maxTicks;
   request.traceName = options.out;
   const ServerConnection server = connection(options);
   TraceWriter trace(options.out);
-  const std::string summary =
-    runRemotely(server, request, [&trace](const HapticState& state) { trace.write(state); });
+  // The bodies' poses come back from the server beside the ticks, written here as a local run
+  // writes them.
+  std::unique_ptr<BodyPoseWriter> poses;
+  std::function<void(const BodyPoseRow&)> onBodyPose;
+  if (!options.bodiesOut.empty())
+  {
+    poses = std::make_unique<BodyPoseWriter>(options.bodiesOut);
+    onBodyPose = [&poses](const BodyPoseRow& row) {
+      poses->write(row.tick, row.time, row.object, row.position, row.orientation,
+                   &row.jointPosition);
+    };
+  }
+  const std::string summary = runRemotely(
+    server, request, [&trace](const HapticState& state) { trace.write(state); }, onBodyPose);
+  // As a local run: the trace and the poses are put in place last, once the summary is written.
   trace.finish();
+  if (poses != nullptr)
+  {
+    poses->finish();
+  }
   if (!options.summary.empty())
   {
     writeFileAtomically(options.summary, summary);
   }
   trace.close();
+  if (poses != nullptr)
+  {
+    poses->close();
+  }
   writeStandardOutput(summary);
   return kExitOk;
 }
@@ -229,6 +254,9 @@ Command addRemoteCommand(CLI::App& parent)
   addSceneOptionsThroughPath(*run, options->scene);
   run->add_option("--out", options->out, "Trace CSV to write here (trace v2)")->required();
   run->add_option("--summary", options->summary, "Also write the summary JSON to this file");
+  run->add_option("--bodies-out", options->bodiesOut,
+                  "With a scene that has bodies: write their poses here, as proxima run does "
+                  "(tick,t,object,x,y,z,qw,qx,qy,qz,q; Documentation/Dynamics.md)");
   addSceneOptionsAfterPath(*run, options->scene);
   run->add_option("--max-ticks", options->maxTicks, "The most ticks the run may take (default 1e7)")
     ->check(tickCount());

@@ -169,12 +169,9 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
 // One row per body: where its object's frame is now, and its joint coordinate.
 void writeBodyPoses(BodyPoseWriter& poses, const BodyCoupling& bodies, const HapticState& record)
 {
-  for (std::size_t body = 0; body < bodies.numBodies(); ++body)
-  {
-    const BodyPose pose = bodies.world().pose(body);
-    const double q = bodies.world().jointPosition(body);
-    poses.write(record.tick, record.time, bodies.object(body), pose.position, pose.orientation, &q);
-  }
+  forEachBodyPose(bodies, record, [&poses](const BodyPoseRow& row) {
+    poses.write(row.tick, row.time, row.object, row.position, row.orientation, &row.jointPosition);
+  });
 }
 
 int run(const RunOptions& options)
@@ -218,8 +215,7 @@ int run(const RunOptions& options)
   }
   if (bodies == nullptr && !options.bodiesOut.empty())
   {
-    throw InputError("--bodies-out", "the scene has no bodies (a scene file's objects with a "
-                                     "\"body\", Documentation/Dynamics.md)");
+    refuseBodiesOutWithoutBodies();
   }
   refuseOverlappingFiles({{options.out, "--out"},
                           {options.bodiesOut, "--bodies-out"},

@@ -46,7 +46,8 @@ net::RunSettings settingsMessage(const ScriptedRunSettings& s, double maxTicks)
 } // namespace
 
 std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
-                        const std::function<void(const HapticState&)>& onTick)
+                        const std::function<void(const HapticState&)>& onTick,
+                        const std::function<void(const BodyPoseRow&)>& onBodyPose)
 {
   const std::string& server = connection.server;
   const ScriptedRunSettings& settings = request.settings;
@@ -68,6 +69,7 @@ std::string runRemotely(const ServerConnection& connection, const RemoteRunReque
     readFile(settings.texture, "texture image", *message.mutable_texture());
   }
   message.set_trace_name(request.traceName);
+  message.set_bodies_out(static_cast<bool>(onBodyPose));
 
   const auto channel = detail::connectToServer(connection);
   const auto stub = net::RemoteRuns::NewStub(channel);
@@ -77,6 +79,7 @@ std::string runRemotely(const ServerConnection& connection, const RemoteRunReque
     context.AddMetadata(detail::kTokenMetadata, connection.token);
   }
   std::string summary;
+  std::uint64_t bodyRows = 0;
   const auto reader = stub->Run(&context, message);
   net::RunReply reply;
   try
@@ -87,7 +90,16 @@ std::string runRemotely(const ServerConnection& connection, const RemoteRunReque
       {
         forEachTick(reply.ticks(), onTick);
       }
-      else
+      if (reply.has_bodies())
+      {
+        if (!onBodyPose)
+        {
+          throw std::runtime_error("the server sent body poses that were not asked for");
+        }
+        bodyRows += static_cast<std::uint64_t>(reply.bodies().tick_size());
+        forEachBodyPose(reply.bodies(), onBodyPose);
+      }
+      if (reply.part_case() == net::RunReply::kSummaryJson)
       {
         summary = reply.summary_json();
       }
@@ -107,6 +119,14 @@ std::string runRemotely(const ServerConnection& connection, const RemoteRunReque
       if (summary.empty())
       {
         throw std::runtime_error("the server ended the run without its summary");
+      }
+      if (onBodyPose && bodyRows == 0)
+      {
+        // A server that does not know bodies_out plays the run and sends no poses: an empty
+        // bodies file would pass for a run whose bodies never existed.
+        throw std::runtime_error("the server at " + server +
+                                 " sent no body poses for --bodies-out (is it older than this "
+                                 "client?)");
       }
       return summary;
     case grpc::StatusCode::INVALID_ARGUMENT:

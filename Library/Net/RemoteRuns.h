@@ -4,6 +4,7 @@
 // proxima_remote.proto; gRPC and protobuf stay in this layer's .cpp files.
 #pragma once
 
+#include "IO/ScriptedRun/ScriptedRun.h"
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
 #include "Net/ServerConnection.h"
 #include "Proxy/ProxyParameters.h"
@@ -109,10 +110,12 @@ struct RemoteRunRequest
 };
 
 /// Sends `request` to the server of `connection`, hands each tick to `onTick` as it arrives and
-/// returns the summary. Throws InputError: the server's refusal of the run (the option or the
+/// returns the summary. With `onBodyPose` (`--bodies-out`), the server also sends each body's
+/// pose after each tick, handed to it in order (a scene without bodies is refused, as locally). Throws InputError: the server's refusal of the run (the option or the
 /// client's file named, as a local run would), "--server" when no server answers, "--token-file"
 /// when the token is refused.
 std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
-                        const std::function<void(const HapticState&)>& onTick);
+                        const std::function<void(const HapticState&)>& onTick,
+                        const std::function<void(const BodyPoseRow&)>& onBodyPose = {});
 
 } // namespace proxima

@@ -13,6 +13,9 @@
 - Scene files go with their files (meshes, an MJCF file): the crank's mechanism and the lever's
   hinged plate turn on the server as they do locally, bit for bit, and the spheres on the table
   (three objects) too; a scene that names a missing mesh is refused naming it.
+- --bodies-out works remotely: the server sends the bodies' poses back, and the file equals a
+  local run's bit for bit (ball, hinge and mechanism bodies); on a scene without bodies it is
+  refused as locally, and writes nothing.
 - The server leaves none of the runs' files behind.
 Usage: remote_runs.py BUILD_DIR TEST_DATA_DIR SOURCE_DIR [--shared] (TEST_DATA_DIR: build/TestData)
 """
@@ -63,12 +66,17 @@ def leftovers():
     return set(glob.glob(os.path.join(tempfile.gettempdir(), "proxima-remote-??????")))
 
 
-def compare_with_local(name, options):
+def compare_with_local(name, options, bodies=False):
     """Runs `options` here and on the server; fails unless the traces are the same (but for
-    solve_ns) and the summaries too (but for the clock). Returns the rows and the summary."""
-    local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"))
+    solve_ns) and the summaries too (but for the clock), and with `bodies` the --bodies-out files
+    byte for byte. Returns the rows and the summary."""
+    local_bodies, remote_bodies = (os.path.join(work, f"{name}-{where}-bodies.csv")
+                                   for where in ("local", "remote"))
+    local = run("run", *options, "--out", os.path.join(work, f"{name}-local.csv"),
+                *(["--bodies-out", local_bodies] if bodies else []))
     remote = run("remote", "--server", address, "run", *options,
-                 "--out", os.path.join(work, f"{name}-remote.csv"))
+                 "--out", os.path.join(work, f"{name}-remote.csv"),
+                 *(["--bodies-out", remote_bodies] if bodies else []))
     if local.returncode != 0 or remote.returncode != 0:
         fail(f"{name}: local {local.returncode} {local.stderr} remote {remote.returncode} "
              f"{remote.stderr}")
@@ -77,6 +85,12 @@ def compare_with_local(name, options):
     if local_rows != remote_rows:
         first = next(i for i, (a, b) in enumerate(zip(local_rows, remote_rows)) if a != b)
         fail(f"{name}: the remote trace differs from the local one at row {first}")
+    if bodies:
+        with open(local_bodies, "rb") as here, open(remote_bodies, "rb") as there:
+            local_poses, remote_poses = here.read(), there.read()
+        if local_poses != remote_poses or local_poses.count(b"\n") < 1000:
+            fail(f"{name}: the remote --bodies-out differs from the local one "
+                 f"({len(remote_poses)} bytes, {len(local_poses)} here)")
     local_summary, remote_summary = json.loads(local.stdout), json.loads(remote.stdout)
     if untimed(local_summary) != untimed(remote_summary):
         fail(f"{name}: the remote summary differs: {untimed(local_summary)} "
@@ -135,11 +149,28 @@ compare_cases(cases)
 scenes, body_paths = os.path.join(source, "Data", "Scenes"), os.path.join(source, "Data", "Paths")
 for name, scene, path in (("crank", "crank.json", "Bodies/crank-turn.csv"),
                           ("lever", "lever.json", "Bodies/lever-press-hold.csv"),
+                          ("ball", "ball-pendulum.json", "Bodies/ball-pendulum-push-release.csv"),
                           ("spheres", "spheres-on-table.json", "spheres-on-table-press-stroke.csv")):
     _, summary = compare_with_local(name, ["--scene", os.path.join(scenes, scene), "--path",
-                                           os.path.join(body_paths, path)])
+                                           os.path.join(body_paths, path)],
+                                    bodies=name != "spheres")
     print(f"{name} scene: {summary['ticks']} ticks, {len(summary.get('bodies', []))} bodies, "
           "the same as proxima run")
+# --bodies-out on a scene without bodies: refused as a local run refuses it, nothing written.
+no_bodies = os.path.join(work, "no-bodies.csv")
+refused = run("remote", "--server", address, "run", "--scene",
+              os.path.join(scenes, "spheres-on-table.json"), "--path",
+              os.path.join(body_paths, "spheres-on-table-press-stroke.csv"), "--out",
+              os.path.join(work, "no-bodies-trace.csv"), "--bodies-out", no_bodies)
+local = run("run", "--scene", os.path.join(scenes, "spheres-on-table.json"), "--path",
+            os.path.join(body_paths, "spheres-on-table-press-stroke.csv"), "--out",
+            os.path.join(work, "no-bodies-trace.csv"), "--bodies-out", no_bodies)
+if (refused.returncode != 2 or refused.stderr != local.stderr
+        or not refused.stderr.startswith("proxima: --bodies-out: the scene has no bodies")):
+    fail(f"--bodies-out without bodies: status {refused.returncode}, {refused.stderr!r}, "
+         f"locally {local.stderr!r}")
+if os.path.exists(no_bodies) or os.path.exists(os.path.join(work, "no-bodies-trace.csv")):
+    fail("a refused --bodies-out left a file")
 missing_scene = os.path.join(work, "missing-mesh.json")
 with open(missing_scene, "w") as out:
     out.write('{"version": 1, "objects": [{"mesh": "no-such-mesh.obj"}]}')

@@ -93,6 +93,38 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
   return outcome;
 }
 
+void forEachBodyPose(const BodyCoupling& bodies, const HapticState& record,
+                     const std::function<void(const BodyPoseRow&)>& onPose)
+{
+#ifdef PROXIMA_WITH_DYNAMICS
+  for (std::size_t body = 0; body < bodies.numBodies(); ++body)
+  {
+    const BodyPose pose = bodies.world().pose(body);
+    BodyPoseRow row;
+    row.tick = record.tick;
+    row.time = record.time;
+    row.object = bodies.object(body);
+    row.position = pose.position;
+    for (int i = 0; i < 4; ++i)
+    {
+      row.orientation[i] = pose.orientation[i];
+    }
+    row.jointPosition = bodies.world().jointPosition(body);
+    onPose(row);
+  }
+#else
+  static_cast<void>(bodies);
+  static_cast<void>(record);
+  static_cast<void>(onPose);
+#endif
+}
+
+void refuseBodiesOutWithoutBodies()
+{
+  throw InputError("--bodies-out", "the scene has no bodies (a scene file's objects with a "
+                                   "\"body\", Documentation/Dynamics.md)");
+}
+
 std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies)
 {
   std::vector<BodyOutcome> reports;
@@ -147,7 +179,8 @@ std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
 
 std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                             const std::function<void(const HapticState&)>& onTick,
-                            const ScriptedRunReportContext& context, double maxTicks)
+                            const ScriptedRunReportContext& context, double maxTicks,
+                            const std::function<void(const BodyPoseRow&)>& onBodyPose)
 {
   checkScriptedRunSettings(settings);
   if (path.positions.empty())
@@ -164,9 +197,20 @@ std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPat
   checkRadiusAgainstScene(settings, loaded);
   checkPathStart(settings, loaded, path);
   const std::unique_ptr<BodyCoupling> bodies = sceneBodies(settings, loaded);
+  if (onBodyPose && bodies == nullptr)
+  {
+    refuseBodiesOutWithoutBodies();
+  }
   SimulatedDevice device(path);
+  const auto tickAndPoses = [&](const HapticState& record) {
+    onTick(record);
+    if (onBodyPose)
+    {
+      forEachBodyPose(*bodies, record, onBodyPose);
+    }
+  };
   const ScriptedRunOutcome outcome =
-    playScriptedPath(settings, *loaded.scene, path, device, onTick, {}, bodies.get());
+    playScriptedPath(settings, *loaded.scene, path, device, tickAndPoses, {}, bodies.get());
   return scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, report);
 }
 

@@ -78,6 +78,27 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     const std::function<void(std::uint64_t)>& progress = {},
                                     BodyCoupling* bodies = nullptr);
 
+/// One body where a tick's dynamics step left it: a row of `--bodies-out` (BodyPoseWriter).
+struct BodyPoseRow
+{
+  std::uint64_t tick = 0;
+  double time = 0.0;
+  std::uint32_t object = 0;
+  /// The world pose of the object's frame: a point p of the object as placed is now at
+  /// position + rotate(orientation, p); orientation is w, x, y, z.
+  Vec3 position;
+  double orientation[4] = {1.0, 0.0, 0.0, 0.0};
+  /// BodyWorld::jointPosition.
+  double jointPosition = 0.0;
+};
+
+/// Hands each body of `bodies` where it is now to `onPose`, as the row of the tick `record`.
+void forEachBodyPose(const BodyCoupling& bodies, const HapticState& record,
+                     const std::function<void(const BodyPoseRow&)>& onPose);
+
+/// The refusal of --bodies-out for a scene without bodies, as every runner words it.
+[[noreturn]] void refuseBodiesOutWithoutBodies();
+
 /// The summary's report of each body where `bodies` left it.
 std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies);
 
@@ -122,9 +143,12 @@ struct ScriptedRunResult
 ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                                   double maxTicks = kDefaultMaxTicks);
 /// The same, handing each tick to `onTick` as it ends instead of keeping it (a server streams
-/// them); returns the summary.
+/// them); returns the summary. With `onBodyPose`, each body's pose after each tick goes to it
+/// after the tick's `onTick` (`--bodies-out`), and a scene without bodies is refused
+/// (refuseBodiesOutWithoutBodies).
 std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                             const std::function<void(const HapticState&)>& onTick,
-                            const ScriptedRunReportContext& context, double maxTicks);
+                            const ScriptedRunReportContext& context, double maxTicks,
+                            const std::function<void(const BodyPoseRow&)>& onBodyPose = {});
 
 } // namespace proxima

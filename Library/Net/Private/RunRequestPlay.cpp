@@ -105,8 +105,11 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
     ScriptedRunReportContext report;
     report.trace = request.trace_name();
     net::RunReply chunk;
+    // Ticks and body poses count alike toward a message's size (a row of either is about 100
+    // bytes).
+    const auto rows = [&chunk] { return chunk.ticks().tick_size() + chunk.bodies().tick_size(); };
     const auto flush = [&] {
-      if (chunk.ticks().tick_size() == 0)
+      if (rows() == 0)
       {
         return;
       }
@@ -120,12 +123,16 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
       settings, path,
       [&](const HapticState& state) {
         appendTick(state, *chunk.mutable_ticks());
-        if (chunk.ticks().tick_size() >= kTicksPerMessage)
+        if (rows() >= kTicksPerMessage)
         {
           flush();
         }
       },
-      report, maxTicks);
+      report, maxTicks,
+      request.bodies_out()
+        ? std::function<void(const BodyPoseRow&)>(
+            [&chunk](const BodyPoseRow& row) { appendBodyPose(row, *chunk.mutable_bodies()); })
+        : std::function<void(const BodyPoseRow&)>{});
     flush();
     net::RunReply last;
     last.set_summary_json(clientSummary(summary, request, folder));

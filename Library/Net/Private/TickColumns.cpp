@@ -53,4 +53,46 @@ void forEachTick(const net::TickColumns& columns, const std::function<void(const
   }
 }
 
+void appendBodyPose(const BodyPoseRow& row, net::BodyPoseColumns& columns)
+{
+  columns.add_tick(row.tick);
+  columns.add_t(row.time);
+  columns.add_object(row.object);
+  for (int i = 0; i < 3; ++i)
+  {
+    columns.add_position(row.position[i]);
+  }
+  for (const double component : row.orientation)
+  {
+    columns.add_orientation(component);
+  }
+  columns.add_q(row.jointPosition);
+}
+
+void forEachBodyPose(const net::BodyPoseColumns& columns,
+                     const std::function<void(const BodyPoseRow&)>& f)
+{
+  const int n = columns.tick_size();
+  if (columns.t_size() != n || columns.object_size() != n || columns.position_size() != 3 * n ||
+      columns.orientation_size() != 4 * n || columns.q_size() != n)
+  {
+    throw std::runtime_error("the server sent body poses whose columns differ in length");
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    BodyPoseRow row;
+    row.tick = columns.tick(i);
+    row.time = columns.t(i);
+    row.object = columns.object(i);
+    row.position =
+      Vec3{columns.position(3 * i), columns.position(3 * i + 1), columns.position(3 * i + 2)};
+    for (int k = 0; k < 4; ++k)
+    {
+      row.orientation[k] = columns.orientation(4 * i + k);
+    }
+    row.jointPosition = columns.q(i);
+    f(row);
+  }
+}
+
 } // namespace proxima

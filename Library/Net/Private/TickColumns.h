@@ -1,7 +1,9 @@
-// A HapticState to and from the packed columns of proxima_remote.proto's TickColumns: the fields
-// of a trace row, nothing rounded, so that a remote trace equals a local one.
+// A HapticState to and from the packed columns of proxima_remote.proto's TickColumns, and a body's
+// pose to and from its BodyPoseColumns: the fields of a trace row and of a --bodies-out row,
+// nothing rounded, so that a remote run's files equal a local run's.
 #pragma once
 
+#include "IO/ScriptedRun/ScriptedRun.h"
 #include "Runtime/HapticState.h"
 
 #include "proxima_remote.pb.h"
@@ -18,5 +20,11 @@ void appendTick(const HapticState& state, net::TickColumns& columns);
 /// Every tick of `columns`, in order; throws std::runtime_error when its columns disagree in
 /// length.
 void forEachTick(const net::TickColumns& columns, const std::function<void(const HapticState&)>& f);
+
+void appendBodyPose(const BodyPoseRow& row, net::BodyPoseColumns& columns);
+/// Every row of `columns`, in order; throws std::runtime_error when its columns disagree in
+/// length.
+void forEachBodyPose(const net::BodyPoseColumns& columns,
+                     const std::function<void(const BodyPoseRow&)>& f);
 
 } // namespace proxima
