@@ -14,7 +14,7 @@ namespace proxima
 /// from the run time against error of the budget sweep (Documentation/Performance.md): on
 /// person-like probing of real meshes the proxy settles within this many move/update iterations
 /// on all but a small share of ticks, and a limited tick recovers within a few ticks.
-inline constexpr int kDefaultTickBudgetIterations = 8;
+inline constexpr int kDefaultTickBudgetIterations = 16;
 
 /// The threaded runtime's safety cap beside the default's iterations: wall time, so it is not
 /// deterministic, and set above what the default's iterations take (a few tens of microseconds)
