@@ -21,7 +21,7 @@ inline constexpr double kShortEdgeScaleFactor = 2.0;
 /// Where the short-edge rule applies, the leaf spheres it may make: this many per triangle, or
 /// kLeafSphereBudget (20 bytes each) if more; past it the length grows toward the median rule's.
 inline constexpr std::uint64_t kLeafSpheresPerTriangleBudget = 8;
-inline constexpr std::uint64_t kLeafSphereBudget = std::uint64_t{1} << 20;
+inline constexpr std::uint64_t kLeafSphereBudget = std::uint64_t{1} << 16;
 
 struct SphereTreeOptions
 {
