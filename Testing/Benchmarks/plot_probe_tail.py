@@ -117,18 +117,16 @@ def plot_budget_sweep(report, path, title):
     work.set_ylabel("replayed work per tick (us)")
     work.set_title("run time: the slowest ticks", fontsize=10)
     # Symmetric-log axes, for the zeros a log axis cannot show; no quantity here is negative.
-    limited.set_yscale("symlog", linthresh=0.01)
-    limited.set_ylim(bottom=0)
-    limited.set_ylabel("ticks the budget limited (%)")
-    limited.set_title("how often the budget bites", fontsize=10)
-    recovery.set_yscale("symlog", linthresh=1)
-    recovery.set_ylim(bottom=0)
-    recovery.set_ylabel("ticks until the proxy settles again")
-    recovery.set_title("recovery of a run of limited ticks", fontsize=10)
-    error.set_yscale("symlog", linthresh=0.1)
-    error.set_ylim(bottom=0)
-    error.set_ylabel("force direction error of limited ticks (degrees)")
-    error.set_title("error: against the same tick settled without a budget", fontsize=10)
+    for axes, threshold, label, title_text in (
+            (limited, 0.01, "ticks the budget limited (%)", "how often the budget bites"),
+            (recovery, 1, "ticks until the proxy settles again",
+             "recovery of a run of limited ticks"),
+            (error, 0.1, "force direction error of limited ticks (degrees)",
+             "error: against the same tick settled without a budget")):
+        axes.set_yscale("symlog", linthresh=threshold)
+        axes.set_ylim(bottom=0)
+        axes.set_ylabel(label)
+        axes.set_title(title_text, fontsize=10)
     work.legend(fontsize=6, ncol=2)
     error.legend(fontsize=6, ncol=2)
     figure.suptitle(title, fontsize=10)

@@ -141,15 +141,20 @@ TEST(ExerciseScorer, TargetsCountInOrderWithTheForceInTheBandForTheHoldTime)
   EXPECT_TRUE(score.damage.empty());
 }
 
+// A trace task on a 4 cm line along x, tolerance 2 mm: sampled every 1 mm, 41 samples.
+ExerciseTask traceAlongX()
+{
+  ExerciseTask task;
+  task.kind = TaskKind::Trace;
+  task.trace.line = {{-0.02, 0.0, 0.0}, {0.02, 0.0, 0.0}};
+  task.trace.tolerance = 0.002;
+  return task;
+}
+
 TEST(ExerciseScorer, TraceCoverageAndStraying)
 {
   const CollisionScene scene = floorWithNodule();
-  ExerciseTask task;
-  task.kind = TaskKind::Trace;
-  // A 4 cm line along x, tolerance 2 mm: sampled every 1 mm, 41 samples.
-  task.trace.line = {{-0.02, 0.0, 0.0}, {0.02, 0.0, 0.0}};
-  task.trace.tolerance = 0.002;
-  ExerciseScorer scorer(exerciseWith(task), scene);
+  ExerciseScorer scorer(exerciseWith(traceAlongX()), scene);
   double t = 0.0;
   const auto touch = [&](double x, double y) {
     scorer.addTick(stateAt(t, {x, y, -0.002}, true, {x, y, 0.0}, 1.0));
@@ -183,11 +188,7 @@ TEST(ExerciseScorer, TraceCoverageAndStraying)
 TEST(ExerciseScorer, TraceBesideTheLineDeviatesByItsDistance)
 {
   const CollisionScene scene = floorWithNodule();
-  ExerciseTask task;
-  task.kind = TaskKind::Trace;
-  task.trace.line = {{-0.02, 0.0, 0.0}, {0.02, 0.0, 0.0}};
-  task.trace.tolerance = 0.002;
-  ExerciseScorer scorer(exerciseWith(task), scene);
+  ExerciseScorer scorer(exerciseWith(traceAlongX()), scene);
   EXPECT_FALSE(scorer.score().tasks[0].trace.touched);
   double t = 0.0;
   for (int i = 0; i <= 40; ++i)
