@@ -197,7 +197,8 @@ TEST(ExerciseScorer, TraceBesideTheLineDeviatesByItsDistance)
     scorer.addTick(stateAt(t, {x, 0.008, -0.002}, true, {x, i == 20 ? 0.0085 : 0.008, 0.0}, 1.0));
     t += 0.001;
   }
-  const TraceScore& trace = scorer.score().tasks[0].trace;
+  const ExerciseScore score = scorer.score();
+  const TraceScore& trace = score.tasks[0].trace;
   EXPECT_TRUE(trace.touched);
   EXPECT_EQ(trace.coverage, 0.0);
   EXPECT_EQ(trace.contactTicks, 0u);
