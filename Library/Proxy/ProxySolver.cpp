@@ -774,6 +774,11 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     followMovingObjects(result);
   }
   ProxyTickState tick(m_parameters, withinReach(requestedFinger), m_proxy, m_skin);
+  if (m_moveRecord != nullptr)
+  {
+    m_moveRecord->clear();
+    m_moveRecord->add(m_proxy, MovePointKind::Accepted);
+  }
   refreshCache(result.queries);
   for (;;)
   {
@@ -782,6 +787,10 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     updateStage(tick, result);
     if (atLocalMinimum(tick))
     {
+      if (retracedUnpaidTrials(tick))
+      {
+        continue; // a stretch led to a minimum farther than where it began: seek on from there
+      }
       break;
     }
     const Vec3 step = nextStep(tick);
@@ -789,20 +798,34 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     const Vec3 goal = m_proxy + step;
     if (tick.blocked.repeats(goal) || outOfWork(tick, result))
     {
+      if (retracedUnpaidTrials(tick))
+      {
+        solveAtProxy(tick, result); // the contacts are those where the retrace ended
+      }
       break;
     }
-    const double distanceBefore = moveStage(tick, goal, result);
+    if (stretched && !tick.trials.pending())
+    {
+      tick.trials.accept(m_proxy, norm(tick.shading.target() - m_proxy));
+    }
+    const double distanceBefore = moveStage(tick, goal, stretched, result);
     if (reachedTarget(tick, result))
     {
+      retracedUnpaidTrials(tick); // at the target: never farther, so this only accepts
       break;
     }
     if (stretched)
     {
+      tick.trials.addTrial(m_proxy);
       tick.stretch.awaitPayoff(tick.solution.numActive, distanceBefore);
       continue;
     }
     const double toTarget = norm(tick.shading.target() - m_proxy);
     tick.stretch.judgePayoff(toTarget, tick.stepTolerance);
+    if (retracedUnpaidTrials(tick))
+    {
+      continue;
+    }
     if (stopsWithoutProgress(tick, toTarget, distanceBefore, result))
     {
       break;
@@ -810,6 +833,50 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   }
   finishTick(tick, result);
   return result;
+}
+
+bool ProxySolver::retracedUnpaidTrials(ProxyTickState& tick)
+{
+  TrialChain& trials = tick.trials;
+  if (!trials.pending())
+  {
+    return false;
+  }
+  const double toTarget = norm(tick.shading.target() - m_proxy);
+  if (!(toTarget > trials.acceptedDistance()))
+  {
+    trials.accept(m_proxy, toTarget);
+    if (m_moveRecord != nullptr && m_moveRecord->count > 0)
+    {
+      m_moveRecord->points[m_moveRecord->count - 1].kind = MovePointKind::Accepted;
+    }
+    return false;
+  }
+  // The stretches did not pay off: walk back over their segments (each swept clear on the way
+  // out, so no sweep is needed) to where they began, and go on with plain slides, which only
+  // ever approach the finger. Without this a stretch could carry the proxy over a ridge of the
+  // configuration-space surface into another basin, and the tick ended at a minimum farther from
+  // the finger than where it began (shared bunny probe path, tick 2630: 4.2e-6 m).
+  if (m_moveRecord != nullptr)
+  {
+    m_moveRecord->markLastTrial();
+    for (int k = trials.numTrials() - 1; k >= 0; --k)
+    {
+      m_moveRecord->add(trials.trial(k), MovePointKind::Trial);
+    }
+    m_moveRecord->add(trials.accepted(), MovePointKind::Accepted);
+  }
+  m_proxy = trials.accepted();
+  trials.retraced();
+  tick.stretch.forbid();
+  tick.blocked.forget();
+  return true;
+}
+
+void ProxySolver::solveAtProxy(ProxyTickState& tick, ProxyTickResult& result)
+{
+  gatherPlanesInto(m_proxy, result);
+  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
 }
 
 void ProxySolver::gatherPlanesInto(const Vec3& position, ProxyTickResult& result)
@@ -864,7 +931,7 @@ Vec3 ProxySolver::nextStep(const ProxyTickState& tick) const
 {
   // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
   // surface sends it elsewhere on purpose.
-  if (!tick.stretch.allowed() || tick.shading.used() || m_anyFriction)
+  if (!tick.stretch.allowed() || tick.trials.full() || tick.shading.used() || m_anyFriction)
   {
     return tick.solution.displacement;
   }
@@ -887,7 +954,8 @@ bool ProxySolver::outOfWork(const ProxyTickState& tick, ProxyTickResult& result)
   return false;
 }
 
-double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result)
+double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, bool stretched,
+                              ProxyTickResult& result)
 {
   // Move stage (2.1): sweep toward the goal and stop at the first contact.
   ++result.iterations;
@@ -900,6 +968,10 @@ double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickR
   }
   tick.blocked.moved(goal, before, m_proxy);
   tick.viscous.spend(before, m_proxy);
+  if (m_moveRecord != nullptr)
+  {
+    m_moveRecord->add(m_proxy, stretched ? MovePointKind::Trial : MovePointKind::Accepted);
+  }
   return norm(tick.shading.target() - before);
 }
 
@@ -924,8 +996,7 @@ bool ProxySolver::stopsWithoutProgress(ProxyTickState& tick, double toTarget, do
     return false;
   }
   // The last update stage's planes stand for the contact.
-  gatherPlanesInto(m_proxy, result);
-  tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  solveAtProxy(tick, result);
   return true;
 }
 

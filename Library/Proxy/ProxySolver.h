@@ -10,6 +10,7 @@
 #include "Proxy/CandidateCache.h"
 #include "Proxy/CollisionScene.h"
 #include "Proxy/GoalSolver.h"
+#include "Proxy/MoveRecord.h"
 #include "Proxy/MovingObjects.h"
 #include "Proxy/ProxyParameters.h"
 
@@ -175,6 +176,11 @@ public:
   double reachRadius() const { return m_reachRadius; }
   const Vec3& reachCenter() const { return m_reachCenter; }
 
+  /// Records the chain of segments each update moves the proxy along into `record` (not owned;
+  /// null to stop): a debug mode for oracles, which check every segment and the approach at its
+  /// accepted points. A copy of the solver records into the same record.
+  void recordMoves(MoveRecord* record) { m_moveRecord = record; }
+
   const Vec3& proxy() const { return m_proxy; }
   double radius() const { return m_parameters.radius; }
   double skin() const { return m_skin; }
@@ -197,7 +203,14 @@ private:
   bool outOfWork(const ProxyTickState& tick, ProxyTickResult& result) const;
   /// Move stage (2.1): sweeps toward `goal` and stops at the first contact. Returns how far the
   /// proxy was from the target before the move.
-  double moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result);
+  double moveStage(ProxyTickState& tick, const Vec3& goal, bool stretched, ProxyTickResult& result);
+  /// After a plain move, or at a stop, with stretched slides (trials) since the last accepted
+  /// point: if the proxy is farther from the target than that point, walks back to it along the
+  /// trials' segments, forbids stretching for the rest of the tick and returns true; otherwise
+  /// accepts where the proxy is (TrialChain, ProxyTickState.h).
+  bool retracedUnpaidTrials(ProxyTickState& tick);
+  /// The planes at the proxy and the goal there, for a tick that ends where it is.
+  void solveAtProxy(ProxyTickState& tick, ProxyTickResult& result);
   /// Stop rule: the proxy reached a target that no longer moves.
   bool reachedTarget(ProxyTickState& tick, const ProxyTickResult& result) const;
   /// Stop rule: NoProgress, counted for a move that ended `toTarget` from the target after
@@ -316,6 +329,7 @@ private:
   bool m_startedOutsidePending = false;
   bool m_planesComplete = true;
   Vec3 m_planesPosition;
+  MoveRecord* m_moveRecord = nullptr;
 };
 
 } // namespace proxima

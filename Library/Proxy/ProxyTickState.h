@@ -122,6 +122,8 @@ class StretchTrustRegion
 public:
   /// Whether slides may still be stretched this tick.
   bool allowed() const { return m_allowed; }
+  /// No more stretches this tick (after a retrace: the trials led nowhere nearer).
+  void forbid() { m_allowed = false; }
   /// The cap on a crease's stretch (stretchedCreaseSlide).
   double creaseLimit() const { return m_creaseLimit; }
 
@@ -158,6 +160,53 @@ private:
   double m_distanceBefore = -1.0; // negative: no stretch awaits its payoff
 };
 
+/// The most curvature-stretched slides a tick makes in a row before a plain slide judges them
+/// (TrialChain): a retrace walks back over at most this many points.
+inline constexpr int kMaxTrialChain = 32;
+
+/// The tick's approach to the finger, kept exact in spite of the curvature stretch. A stretched
+/// slide is a trial: it may end farther from the target than it began (it overshoots along the
+/// tangent plane so that the next move falls onto the curved surface). The last accepted point is
+/// where the tick was before the trials; the plain move after them is accepted only if it ends no
+/// farther from the target than that point. Otherwise the proxy walks back along the trials'
+/// segments, which were swept clear, to the accepted point (a retrace): a tick never ends farther
+/// from the finger than it began, and the accepted points approach it monotonically.
+class TrialChain
+{
+public:
+  TrialChain(const Vec3& start, double distanceToTarget)
+    : m_accepted(start)
+    , m_acceptedDistance(distanceToTarget)
+  {}
+
+  bool pending() const { return m_numTrials > 0; }
+  bool full() const { return m_numTrials == kMaxTrialChain; }
+  const Vec3& accepted() const { return m_accepted; }
+  double acceptedDistance() const { return m_acceptedDistance; }
+  int numTrials() const { return m_numTrials; }
+  /// The k-th trial end since the accepted point (0: the first).
+  const Vec3& trial(int k) const { return m_trials[k]; }
+
+  /// A stretched slide ended at `end`.
+  void addTrial(const Vec3& end) { m_trials[m_numTrials++] = end; }
+  /// The proxy is at `position`, `distanceToTarget` from the target, no farther than the
+  /// accepted point: it becomes the accepted point.
+  void accept(const Vec3& position, double distanceToTarget)
+  {
+    m_accepted = position;
+    m_acceptedDistance = distanceToTarget;
+    m_numTrials = 0;
+  }
+  /// The proxy walked back to the accepted point.
+  void retraced() { m_numTrials = 0; }
+
+private:
+  Vec3 m_accepted;
+  double m_acceptedDistance = 0.0;
+  Vec3 m_trials[kMaxTrialChain];
+  int m_numTrials = 0;
+};
+
 /// Stop rule: the last move was blocked at once (the proxy did not move) and the next goal is
 /// the same: repeating it cannot help.
 class RepeatedBlockedMove
@@ -168,6 +217,8 @@ public:
   {}
 
   bool repeats(const Vec3& goal) const { return m_blockedAtOnce && goal == m_previousGoal; }
+  /// The proxy was put back where it had been (a retrace): no move was blocked there.
+  void forget() { m_blockedAtOnce = false; }
   void moved(const Vec3& goal, const Vec3& before, const Vec3& after)
   {
     m_blockedAtOnce = after == before;
@@ -209,6 +260,7 @@ struct ProxyTickState
     , start(proxy)
     , stepTolerance(0.01 * skin)
     , shading(fingerInReach)
+    , trials(proxy, norm(fingerInReach - proxy))
     , blocked(proxy)
   {}
 
@@ -224,6 +276,7 @@ struct ProxyTickState
   ShadedTarget shading;
   ViscousTravel viscous;
   StretchTrustRegion stretch;
+  TrialChain trials;
   RepeatedBlockedMove blocked;
   NoProgress progress;
 };

@@ -671,6 +671,7 @@ TickChecker::TickChecker(const MeshOracle& oracle, const CollisionScene& scene,
   , m_parameters(parameters)
   , m_settings(settings)
   , m_replay(std::make_unique<ProxySolver>())
+  , m_moveRecord(std::make_unique<MoveRecord>(kMaxRecordedPoints))
 {}
 
 void TickChecker::reset(const Vec3& proxy)
@@ -796,51 +797,90 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
     return;
   }
 
-  // The polyline of the tick's move stages.
-  std::vector<Vec3> points{before};
-  if (iterations >= 2)
+  // The chain of the tick's segments, as the solver recorded it replaying the tick from the
+  // previous proxy: stopped by the cap where the live tick stopped (by the cap or its iteration
+  // budget), the budget dropped so that a time budget cannot stop the replay elsewhere.
+  std::vector<MovePoint> points{MovePoint{before, MovePointKind::Accepted}};
+  if (iterations >= 1)
   {
-    // Cap k reproduces the first k move stages; the budget is dropped so that a time budget
-    // cannot stop a replay elsewhere (an iteration budget stops where the cap does anyway).
     ProxyParameters capped = m_parameters;
     capped.tickBudgetIterations = 0;
     capped.tickBudgetSeconds = 0.0;
-    for (int k = 1; k <= iterations; ++k)
+    capped.maxIterations = iterations;
+    m_replay->setScene(&m_scene, capped);
+    m_replay->resetProxy(before);
+    m_replay->recordMoves(m_moveRecord.get());
+    const ProxyTickResult step = m_replay->update(requestedFinger);
+    m_replay->recordMoves(nullptr);
+    if (m_moveRecord->overflowed)
     {
-      capped.maxIterations = k;
-      m_replay->setScene(&m_scene, capped);
-      m_replay->resetProxy(before);
-      const ProxyTickResult step = m_replay->update(requestedFinger);
-      if (k < iterations)
-      {
-        points.push_back(step.proxy);
-      }
-      else
-      {
-        // The replay starts cold; the live solver may answer from its temporal-coherence cache,
-        // which agrees with the trees as a set but not to the bit: allow section 4's accuracy.
-        const double discrepancy = distance(step.proxy, proxy);
-        s.maxReplayDiscrepancy = std::max(s.maxReplayDiscrepancy, discrepancy);
-        if (discrepancy > m_settings.penetrationTolerance)
-        {
-          s.fail(s.replayFailures, where() + ": replayed from a fresh solver the tick ends at " +
-                                     str(step.proxy) + " instead of " + str(proxy));
-        }
-      }
+      s.fail(s.replayFailures,
+             where() + ": the tick moved along more segments than the record holds");
+    }
+    points.assign(m_moveRecord->points.begin() + 1,
+                  m_moveRecord->points.begin() + static_cast<std::ptrdiff_t>(m_moveRecord->count));
+    points.insert(points.begin(), MovePoint{before, MovePointKind::Accepted});
+    // The replay starts cold; the live solver may answer from its temporal-coherence cache,
+    // which agrees with the trees as a set but not to the bit: allow section 4's accuracy.
+    const double discrepancy = distance(step.proxy, proxy);
+    s.maxReplayDiscrepancy = std::max(s.maxReplayDiscrepancy, discrepancy);
+    if (iterations >= 2 && discrepancy > m_settings.penetrationTolerance)
+    {
+      s.fail(s.replayFailures, where() + ": replayed from a fresh solver the tick ends at " +
+                                 str(step.proxy) + " instead of " + str(proxy));
+    }
+    // The chain ends where the live tick ended (a replay that made no move, from a start the live
+    // tick left, ends on a segment of its own: the oracle must see that jump too).
+    if (points.size() == 1)
+    {
+      points.push_back(MovePoint{proxy, MovePointKind::Accepted});
+    }
+    else
+    {
+      points.back().position = proxy;
     }
   }
-  points.push_back(proxy);
+  else
+  {
+    points.push_back(MovePoint{proxy, MovePointKind::Accepted});
+  }
   if (iterations == 0 && proxy != before)
   {
     s.fail(s.replayFailures, where() + ": no move stage but the proxy moved");
+  }
+
+  // (g') The approach along the chain: at every accepted point (the tick's start, the end of a
+  // plain slide, the end of a retrace) the finger is no farther than at the accepted point before
+  // it; only a curvature-stretched trial, or the move that judged it and the walk back from it,
+  // may leave the finger for a moment. The tick ends on an accepted point.
+  double acceptedDistance = distance(before, finger);
+  for (std::size_t k = 1; k < points.size(); ++k)
+  {
+    if (points[k].kind != MovePointKind::Accepted)
+    {
+      continue;
+    }
+    const double d = distance(points[k].position, finger);
+    if (d > acceptedDistance + m_settings.residualTolerance)
+    {
+      s.fail(s.approachFailures, where() + ": segment " + std::to_string(k) + " ends " +
+                                   str(d - acceptedDistance) +
+                                   " m farther from the finger than the accepted point before it");
+    }
+    acceptedDistance = std::min(acceptedDistance, d);
+  }
+  if (points.back().kind != MovePointKind::Accepted)
+  {
+    s.fail(s.approachFailures,
+           where() + ": the tick ended on a stretched trial, not an accepted point");
   }
 
   // (b) No tunnelling: each move segment crosses no triangle and keeps its distance.
   const double cap = 2.0 * radius;
   for (std::size_t k = 1; k < points.size(); ++k)
   {
-    const Vec3& a = points[k - 1];
-    const Vec3& b = points[k];
+    const Vec3& a = points[k - 1].position;
+    const Vec3& b = points[k].position;
     if (a == b)
     {
       continue;

@@ -14,9 +14,11 @@
 #include "Core/Vec3.h"
 #include "Geometry/TriangleMesh.h"
 #include "Proxy/CollisionScene.h"
+#include "Proxy/MoveRecord.h"
 #include "Proxy/ProxyParameters.h"
 #include "Proxy/ProxySolver.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -204,9 +206,10 @@ struct ForceTick
 void checkServoForce(InvariantStats& stats, const std::string& where, const ForceTick& tick,
                      double stiffness, double maxForce);
 
-/// Checks every tick of a proxy run against the oracle. The move segments of a tick are
-/// recovered by replaying it from the previous proxy with the iteration cap set to 1, 2, ...:
-/// the solver is deterministic, so cap k stops exactly after the k-th move stage.
+/// Checks every tick of a proxy run against the oracle. The chain of segments a tick moved along
+/// is recovered by replaying it once from the previous proxy with the solver's move record on
+/// (ProxySolver::recordMoves) and the iteration cap at the live tick's count: the solver is
+/// deterministic, so the replay makes the same moves and stops where the live tick stopped.
 class TickChecker
 {
 public:
@@ -243,6 +246,9 @@ private:
   ProxyParameters m_parameters;
   OracleSettings m_settings;
   std::unique_ptr<ProxySolver> m_replay;
+  /// More points than any tick records: the uncapped replay's 20,000 moves, with their retraces.
+  static constexpr std::size_t kMaxRecordedPoints = 65536;
+  std::unique_ptr<MoveRecord> m_moveRecord;
   Vec3 m_proxy;
   InvariantStats m_stats;
 };

@@ -242,16 +242,13 @@ namespace proxima
 namespace
 {
 // Tick 2630 of the whole bunny probe path (scale 0.4, radius 2 mm), as the run and proxima.check
-// see it: the oracle's approach rule (g) fails there, and SharedProbePaths never sees it, since
-// its window is 1.5 s around 5.08 s. Cap by cap the tick's third move, a curvature-stretched
-// slide of 0.5 mm, ends 8.0e-6 m farther from the finger than it began (0.0140280365 ->
-// 0.0140360474 m), and the seven moves after it win back only 3.8e-6 m: the tick ends 4.2e-6 m
-// farther. Undoing a stretched move that ends farther fixes this tick but stops two found ticks
-// (ProxySolverFound.ConvexEdgeConverges..., FingerAtTheApexOfANarrowConcaveCorner...) from
-// converging within the cap, where the stretch's overshoot is what later pays off. Disabled until
-// the stretch's trust region keeps the tick's end no farther; run it with
-// --gtest_also_run_disabled_tests.
-TEST(SharedProbePathTicks, DISABLED_BunnyTick2630EndsNoFartherFromTheFinger)
+// see it; SharedProbePaths never sees it, since its window is 1.5 s around 5.08 s. Its third move,
+// a curvature-stretched slide of 0.5 mm, ends 8.0e-6 m farther from the finger than it began
+// (0.0140280365 -> 0.0140360474 m), and the seven moves after it won back only 3.8e-6 m: the tick
+// ended 4.2e-6 m farther, failing the approach rule (g). The solver now judges stretched slides as
+// trials and walks back over those that do not pay off (TrialChain); the oracle checks the
+// recorded chain (g') as well as the tick's end.
+TEST(SharedProbePathTicks, BunnyTick2630EndsNoFartherFromTheFinger)
 {
   const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/stanford-bunny.obj";
   if (!std::filesystem::exists(mesh))

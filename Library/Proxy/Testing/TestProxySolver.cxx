@@ -457,6 +457,47 @@ TEST(ProxySolverFound, FingerAtTheApexOfANarrowConcaveCornerConverges)
   rig.expectClean("found-narrow-corner-apex");
 }
 
+TEST(ProxySolverMoveRecord, ChainStartsAtTheProxyEndsAtTheTickAndApproachesAtAcceptedPoints)
+{
+  // The debug record the oracles read (MoveRecord.h): one point per move stage, plus the walk back
+  // over a stretch that did not pay off. Its ends are the tick's, its accepted points approach the
+  // finger, and a solver without a record makes the same tick bit for bit.
+  const TriangleSoup sphere = makeIcosphere(3, 0.04);
+  const Vec3 start{0.016439692163224457, 0, 0.037409688147095096};
+  const Vec3 finger{0.016, 0, 0.036560000000000002};
+  Rig rig(sphere, start);
+  MoveRecord record;
+  rig.solver().recordMoves(&record);
+  const ProxyTickResult recorded = rig.step(finger);
+  rig.solver().recordMoves(nullptr);
+  ASSERT_FALSE(record.overflowed);
+  ASSERT_GE(record.count, static_cast<std::size_t>(recorded.iterations) + 1);
+  EXPECT_EQ(record.points[0].position, start);
+  EXPECT_EQ(record.points[record.count - 1].position, recorded.proxy);
+  EXPECT_EQ(record.points[record.count - 1].kind, MovePointKind::Accepted);
+  std::size_t trials = 0;
+  double accepted = distance(start, finger);
+  for (std::size_t k = 1; k < record.count; ++k)
+  {
+    if (record.points[k].kind == MovePointKind::Trial)
+    {
+      ++trials;
+      continue;
+    }
+    const double d = distance(record.points[k].position, finger);
+    EXPECT_LE(d, accepted + 1e-12) << "accepted point " << k;
+    accepted = std::min(accepted, d);
+  }
+  // This tick crosses a convex edge: the curvature stretch makes trials here.
+  EXPECT_GT(trials, 0u);
+
+  Rig unrecorded(sphere, start);
+  const ProxyTickResult plain = unrecorded.step(finger);
+  EXPECT_EQ(plain.proxy, recorded.proxy);
+  EXPECT_EQ(plain.iterations, recorded.iterations);
+  rig.expectClean("move-record-icosphere");
+}
+
 TEST(ProxySolverFound, AbsurdlyFarFingerNeitherTunnelsNorStrandsTheProxy)
 {
   // Stress suite (StressFingerInput.AbsurdlyFarFiniteFingers): a finger 1e200 m below a 3 cm

@@ -1,0 +1,72 @@
+// The chain of straight segments one ProxySolver::update moved the proxy along, recorded on
+// request (ProxySolver::recordMoves) so that an oracle can check every segment the proxy swept,
+// not only where the tick ended. Off by default: a solver without a record pays one null test per
+// move.
+#pragma once
+
+#include "Core/Vec3.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace proxima
+{
+
+/// What a recorded point is to the tick's approach to the finger.
+enum class MovePointKind : unsigned char
+{
+  /// The tick's start, the end of a plain slide, or the end of a retrace back to where a rejected
+  /// stretch began: the finger distance at these points never increases along the tick.
+  Accepted,
+  /// The end of a curvature-stretched slide (a Newton trial that may overshoot and end farther
+  /// from the finger), or of the move that judged a stretch that did not pay off, or the turning
+  /// point of the retrace after it. Swept clear like every segment, but exempt from the approach.
+  Trial,
+};
+
+struct MovePoint
+{
+  Vec3 position;
+  MovePointKind kind = MovePointKind::Accepted;
+};
+
+/// Filled by ProxySolver::update when given to recordMoves: points[0] is where the tick began, and
+/// each segment points[k-1] -> points[k] was swept clear. The caller sizes `points` (the solver
+/// never allocates); points past its size are dropped and `overflowed` is set.
+struct MoveRecord
+{
+  explicit MoveRecord(std::size_t capacity = 4096)
+    : points(capacity)
+  {}
+
+  std::vector<MovePoint> points;
+  std::size_t count = 0;
+  bool overflowed = false;
+
+  void clear()
+  {
+    count = 0;
+    overflowed = false;
+  }
+  void add(const Vec3& position, MovePointKind kind)
+  {
+    if (count < points.size())
+    {
+      points[count++] = MovePoint{position, kind};
+    }
+    else
+    {
+      overflowed = true;
+    }
+  }
+  /// Marks the last point recorded as a trial (a judging move whose stretch is being undone).
+  void markLastTrial()
+  {
+    if (count > 0)
+    {
+      points[count - 1].kind = MovePointKind::Trial;
+    }
+  }
+};
+
+} // namespace proxima
