@@ -53,22 +53,25 @@ int writeAndReport(const std::string& shape, const TriangleSoup& soup, const std
   return kExitOk;
 }
 
-// Sizes and places of generated shapes: a micrometre to a kilometre, within a thousand
-// kilometres of the origin.
-constexpr ParameterRange kGeneratedSize{0.0, true, 1000.0, " m"};
-constexpr ParameterRange kGeneratedPlace{-1e6, false, 1e6, " m"};
-
 void addOut(CLI::App* app, GenerateArguments& arguments)
 {
+  // The format is checked with the other options, before a shape of millions of triangles is
+  // made only to be refused.
   app->add_option("--out", arguments.out, "Mesh file to write: .obj, .stl, .ply or .vtp")
-    ->required();
+    ->required()
+    ->check(CLI::Validator(
+      [](std::string& input) -> std::string {
+        return isWritableMeshFormat(input) ? std::string()
+                                           : input + ": " + kWritableMeshFormatsMessage;
+      },
+      "MESH"));
 }
 
 void addCenter(CLI::App* app, GenerateArguments& arguments)
 {
   app->add_option("--center", arguments.center, "Centre in metres: X Y Z")
     ->expected(3)
-    ->check(numberIn(kGeneratedPlace))
+    ->check(numberIn(kGeneratedPlaceRange))
     ->capture_default_str();
 }
 } // namespace
@@ -82,10 +85,10 @@ Command addGenerateCommand(CLI::App& parent)
   CLI::App* icosphere = generate->add_subcommand(
     "icosphere", "Subdivided icosahedron: 20 * 4^N triangles, unit normals per point.");
   icosphere->add_option("--subdivisions", arguments->subdivisions, "Subdivision levels N")
-    ->check(CLI::Range(0u, 9u))
+    ->check(wholeNumberIn(kIcosphereSubdivisionsRange))
     ->capture_default_str();
   icosphere->add_option("--radius", arguments->radius, "Radius in metres")
-    ->check(numberIn(kGeneratedSize))
+    ->check(numberIn(kGeneratedSizeRange))
     ->capture_default_str();
   addCenter(icosphere, *arguments);
   addOut(icosphere, *arguments);
@@ -93,7 +96,7 @@ Command addGenerateCommand(CLI::App& parent)
   CLI::App* box = generate->add_subcommand("box", "Axis-aligned box, 12 triangles.");
   box->add_option("--half-extents", arguments->halfExtents, "Half the box's size: X Y Z")
     ->expected(3)
-    ->check(numberIn(kGeneratedSize))
+    ->check(numberIn(kGeneratedSizeRange))
     ->capture_default_str();
   addCenter(box, *arguments);
   addOut(box, *arguments);
@@ -101,26 +104,26 @@ Command addGenerateCommand(CLI::App& parent)
   CLI::App* grid =
     generate->add_subcommand("grid", "Square sheet in a plane z = height: 2 * cells^2 triangles.");
   grid->add_option("--size", arguments->size, "Side length in metres")
-    ->check(numberIn(kGeneratedSize))
+    ->check(numberIn(kGeneratedSizeRange))
     ->capture_default_str();
   grid->add_option("--cells", arguments->cells, "Cells along each side")
-    ->check(CLI::Range(1u, 4096u))
+    ->check(wholeNumberIn(kGridCellsRange))
     ->capture_default_str();
   grid->add_option("--height", arguments->height, "The plane's z in metres")
-    ->check(numberIn(kGeneratedPlace))
+    ->check(numberIn(kGeneratedPlaceRange))
     ->capture_default_str();
   addOut(grid, *arguments);
 
   CLI::App* prism = generate->add_subcommand(
     "prism", "Sides of a regular prism about z (open tube), radial normals per point: Figure 6.");
   prism->add_option("--sides", arguments->sides, "Number of sides")
-    ->check(CLI::Range(3u, 100000u))
+    ->check(wholeNumberIn(kPrismSidesRange))
     ->capture_default_str();
   prism->add_option("--radius", arguments->radius, "Distance of the corners from the axis")
-    ->check(numberIn(kGeneratedSize))
+    ->check(numberIn(kGeneratedSizeRange))
     ->capture_default_str();
   prism->add_option("--height", arguments->prismHeight, "Length along z in metres")
-    ->check(numberIn(kGeneratedSize))
+    ->check(numberIn(kGeneratedSizeRange))
     ->capture_default_str();
   addCenter(prism, *arguments);
   addOut(prism, *arguments);

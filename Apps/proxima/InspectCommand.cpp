@@ -134,18 +134,18 @@ Command addInspectCommand(CLI::App& parent)
   app
     ->add_option("--locations", arguments->locations,
                  "Places listed per kind of defect (the first in the file's triangle order)")
-    ->check(CLI::Range(0, 100000))
+    ->check(wholeNumberIn(kDefectLocationsRange))
     ->capture_default_str();
   app
     ->add_option("--sliver-angle", arguments->sliverAngle,
                  "Degrees: a triangle with a smaller angle (and not degenerate) is a sliver")
-    ->check(numberIn(ParameterRange{0.0, false, 60.0, " degrees"}))
+    ->check(numberIn(kSliverAngleRange))
     ->capture_default_str();
   app
     ->add_option("--weld", arguments->weld,
                  "Also report the counts after welding corners closer than this (metres, after "
                  "--scale), apart from the file's own")
-    ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
+    ->check(numberIn(kWeldDistanceRange));
   app
     ->add_option("--tool-radius", arguments->toolRadius,
                  "Also report where a ball tool of this radius cannot touch the surface (metres, "

@@ -84,17 +84,17 @@ Command addTreeCommand(CLI::App& parent)
     ->add_option("--leaf-size-factor", arguments->tree.leafSizeFactor,
                  "Split triangles longer than this many median edge lengths into several leaf "
                  "spheres; 0 gives one leaf sphere per triangle")
-    ->check(numberIn(ParameterRange{0.0, false, 1e6, ""}))
+    ->check(numberIn(kLeafSizeFactorRange))
     ->capture_default_str();
   app
     ->add_option("--leaf-spheres-per-node", arguments->tree.maxLeafSpheresPerNode,
                  "Leaf spheres grouped under one leaf node (1 is the paper's tree)")
-    ->check(CLI::Range(1u, 1024u))
+    ->check(wholeNumberIn(kLeafSpheresPerNodeRange))
     ->capture_default_str();
   app
     ->add_option("--max-pieces-per-triangle", arguments->tree.maxPiecesPerTriangle,
                  "Upper bound on the leaf spheres of one triangle")
-    ->check(CLI::Range(1u, 1u << 20))
+    ->check(wholeNumberIn(kPiecesPerTriangleRange))
     ->capture_default_str();
   return Command{app, [arguments] { return runTree(*arguments); }};
 }

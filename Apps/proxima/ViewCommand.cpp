@@ -27,6 +27,7 @@
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/Scene/SceneBuilder.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
@@ -42,6 +43,9 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLineSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
@@ -57,6 +61,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -241,6 +246,157 @@ void placeBodyActors(const SceneActors& actors, const BodyPoses& poses)
   }
 }
 
+// A hinge's axis, drawn through its anchor so that the picture shows what the body turns about.
+struct HingeAxis
+{
+  std::uint32_t object = 0;
+  Vec3 anchor;
+  Vec3 direction;
+};
+
+// The hinges of the scene file's own bodies (an MJCF mechanism's joints are its file's).
+std::vector<HingeAxis> sceneHinges(const SceneDescription& description)
+{
+  std::vector<HingeAxis> hinges;
+  for (std::uint32_t object = 0; object < description.objects.size(); ++object)
+  {
+    const SceneObject& item = description.objects[object];
+    const double length = norm(item.body.axis);
+    if (item.hasBody && item.body.mjcfBody.empty() && item.body.joint == SceneJoint::Hinge &&
+        length > 0.0 && std::isfinite(length))
+    {
+      hinges.push_back({object, item.body.anchor, item.body.axis / length});
+    }
+  }
+  return hinges;
+}
+
+// The gap between two boxes (0 when they overlap).
+double gapBetween(const Aabb& a, const Aabb& b)
+{
+  const Vec3 below = componentMax(a.lower - b.upper, Vec3{0.0, 0.0, 0.0});
+  const Vec3 above = componentMax(b.lower - a.upper, Vec3{0.0, 0.0, 0.0});
+  return norm(componentMax(below, above));
+}
+
+// Where `object` is now: its box as placed, moved by its body's pose when it has one.
+Aabb objectBounds(const CollisionScene& scene, std::size_t object, const BodyPoses& poses)
+{
+  const Aabb& placed = scene.objects[object].mesh.bounds();
+  for (int i = 0; i < poses.count; ++i)
+  {
+    if (poses.objects[i] == object)
+    {
+      Aabb moved;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        moved.expand(poses.poses[i].apply({corner & 1 ? placed.upper.x : placed.lower.x,
+                                           corner & 2 ? placed.upper.y : placed.lower.y,
+                                           corner & 4 ? placed.upper.z : placed.lower.z}));
+      }
+      return moved;
+    }
+  }
+  return placed;
+}
+
+// What a picture frames: the object the proxy touches (touching none, the one nearest it), its
+// neighbours (the objects within the touched one's own size of it), each where its body's pose
+// has moved it, the proxy, the finger and the anchors of the framed objects' hinges. The whole
+// scene shrank the proxy to a dot on a large table, and the proxy alone lost the objects it was
+// among.
+Aabb framedBounds(const CollisionScene& scene, const HapticState& state,
+                  const std::vector<HingeAxis>& hinges, const BodyPoses& poses)
+{
+  Aabb proxyBox;
+  proxyBox.expand(state.proxy, state.proxyRadius);
+  std::size_t touched = 0;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t object = 0; object < scene.objects.size(); ++object)
+  {
+    const double gap = gapBetween(objectBounds(scene, object, poses), proxyBox);
+    if (gap < nearest)
+    {
+      nearest = gap;
+      touched = object;
+    }
+  }
+  if (state.numContacts > 0 && state.contactObject >= 0 &&
+      static_cast<std::size_t>(state.contactObject) < scene.objects.size())
+  {
+    touched = static_cast<std::size_t>(state.contactObject);
+  }
+  Aabb framed = proxyBox;
+  framed.expand(state.finger);
+  if (scene.objects.size() == 0)
+  {
+    return framed;
+  }
+  const Aabb touchedBox = objectBounds(scene, touched, poses);
+  for (std::size_t object = 0; object < scene.objects.size(); ++object)
+  {
+    const Aabb box = objectBounds(scene, object, poses);
+    if (object != touched && gapBetween(box, touchedBox) > touchedBox.diagonal())
+    {
+      continue;
+    }
+    framed.expand(box.lower);
+    framed.expand(box.upper);
+    for (const HingeAxis& hinge : hinges)
+    {
+      if (hinge.object == object)
+      {
+        framed.expand(hinge.anchor);
+      }
+    }
+  }
+  return framed;
+}
+
+// Sizes the force arrow for a picture framing `framed`, and widens `framed` to hold the arrow
+// at the clamp in the force's direction (from a proxy at the edge of the framed objects it would
+// leave the picture). The shaft at the clamp is two fifths of the framed radius; the head, a
+// thirteenth of it, keeps its size, so that a force of a few hundredths of the clamp still shows.
+void frameForceArrow(vtkHapticStateRepresentation* representation, Aabb& framed,
+                     const HapticState& state, double maxForce, double forceScaleOption)
+{
+  const double radius = 0.5 * framed.diagonal();
+  const double scale = forceScaleOption > 0.0 ? forceScaleOption : 0.4 * radius / maxForce;
+  const double head = 0.08 * radius;
+  representation->SetForceScale(scale);
+  representation->SetForceArrowHeadLength(head);
+  const double magnitude = norm(state.force);
+  if (magnitude > 0.0 && std::isfinite(magnitude))
+  {
+    framed.expand(state.proxy + state.force * ((maxForce * scale + head) / magnitude));
+  }
+}
+
+// Thin lines along the hinges' axes, through their anchors, as long as the framed diagonal.
+std::vector<vtkSmartPointer<vtkActor>> makeHingeActors(const std::vector<HingeAxis>& hinges,
+                                                       double length)
+{
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (const HingeAxis& hinge : hinges)
+  {
+    const Vec3 from = hinge.anchor - hinge.direction * (0.5 * length);
+    const Vec3 to = hinge.anchor + hinge.direction * (0.5 * length);
+    vtkNew<vtkLineSource> line;
+    line->SetPoint1(from.x, from.y, from.z);
+    line->SetPoint2(to.x, to.y, to.z);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(line->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    // Magenta: no other part of the picture (surfaces, proxy, spring, force, plot) has it.
+    actor->GetProperty()->SetColor(0.95, 0.25, 0.95);
+    actor->GetProperty()->SetLineWidth(3.0);
+    actor->GetProperty()->LightingOff();
+    actors.push_back(actor);
+  }
+  return actors;
+}
+
 // Looks at the proxy from `distance`, from the free side of its contacts (tilted, so that the
 // planes and the cones show in depth), or along the camera's current direction.
 void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
@@ -294,6 +450,7 @@ int view(const ViewOptions& options)
                                      "--screenshot a --path, or take the window's picture");
   }
   LoadedScene loaded = loadScene(shared);
+  const std::vector<HingeAxis> hinges = sceneHinges(loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
   const std::shared_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
   const FingerPath fingerPath = shared.path.empty() ? mouseStartPath(*loaded.scene, shared.radius)
@@ -361,9 +518,6 @@ int view(const ViewOptions& options)
   const SceneActors surface = makeSceneActors(*scene, bodies.get());
 
   vtkNew<vtkHapticStateRepresentation> representation;
-  const double forceScale =
-    options.forceScale > 0.0 ? options.forceScale : 30.0 * shared.radius / shared.maxForce;
-  representation->SetForceScale(forceScale);
   vtkNew<vtkTextActor> status;
   shell::styleHud(status);
   // The last 5 s of force, 0 to the clamp.
@@ -398,6 +552,7 @@ int view(const ViewOptions& options)
   {
     LoopStatistics servo;
     HapticState state;
+    BodyPoses poses;
     const bool lockstep = options.device.device == "sim";
     if (lockstep)
     {
@@ -409,9 +564,7 @@ int view(const ViewOptions& options)
       servo.rate = shared.rate;
       if (bodies != nullptr)
       {
-        BodyPoses poses;
         bodies->poses(poses);
-        placeBodyActors(surface, poses);
       }
     }
     else
@@ -428,8 +581,15 @@ int view(const ViewOptions& options)
       }
       state = haptics->GetState();
       servo = haptics->GetServoStatistics();
-      placeBodyActors(surface, haptics->GetBodyPoses());
+      poses = haptics->GetBodyPoses();
       haptics->Stop();
+    }
+    placeBodyActors(surface, poses);
+    Aabb framed = framedBounds(*scene, state, hinges, poses);
+    frameForceArrow(representation, framed, state, shared.maxForce, options.forceScale);
+    for (const vtkSmartPointer<vtkActor>& axis : makeHingeActors(hinges, framed.diagonal()))
+    {
+      renderer->AddActor(axis);
     }
     representation->SetState(state);
     status->SetInput(statusText(state, servo, nullptr).c_str());
@@ -439,6 +599,13 @@ int view(const ViewOptions& options)
     }
     forcePlot.update();
     aimAtProxy(renderer->GetActiveCamera(), state, distance);
+    if (options.viewDistance <= 0.0)
+    {
+      // From the same side, far enough back for the framed objects to fit.
+      double bounds[6] = {framed.lower.x, framed.upper.x, framed.lower.y,
+                          framed.upper.y, framed.lower.z, framed.upper.z};
+      renderer->ResetCamera(bounds);
+    }
     renderer->ResetCameraClippingRange();
     window->SetOffScreenRendering(1);
     screenshotFile->write(shell::windowPng(window, options.screenshot));
@@ -450,6 +617,18 @@ int view(const ViewOptions& options)
                   state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
     writeStandardOutput(options.screenshot + ": " + line);
     return kExitOk;
+  }
+
+  // The arrow and the hinges sized for the objects around the finger's start.
+  HapticState start;
+  start.proxy = fingerPath.positions.front();
+  start.finger = start.proxy;
+  start.proxyRadius = shared.radius;
+  Aabb framedAtStart = framedBounds(*scene, start, hinges, BodyPoses{});
+  frameForceArrow(representation, framedAtStart, start, shared.maxForce, options.forceScale);
+  for (const vtkSmartPointer<vtkActor>& axis : makeHingeActors(hinges, framedAtStart.diagonal()))
+  {
+    renderer->AddActor(axis);
   }
 
   // Interactive: the path plays in real time, looped by restarting when it ends (the mouse's run
@@ -580,13 +759,13 @@ Command addViewCommand(CLI::App& parent)
     ->check(wholeNumberIn(kWindowSizeRange));
   app
     ->add_option("--view-distance", options->viewDistance,
-                 "Camera distance from the proxy in metres (default: 40 proxy radii for a "
-                 "--screenshot; the whole scene framed in the window)")
+                 "Camera distance from the proxy in metres (default: a --screenshot frames "
+                 "the touched object and its neighbours; the window the whole scene)")
     ->check(numberIn(ParameterRange{0.0, true, 1e6, " m"}));
   app
     ->add_option("--force-scale", options->forceScale,
-                 "Force arrow length in metres per newton (default: 30 proxy radii at "
-                 "--max-force)")
+                 "Force arrow's shaft length in metres per newton (default: at --max-force, "
+                 "two fifths of the radius of what the picture frames)")
     ->check(numberIn(ParameterRange{0.0, true, 1e6, " m/N"}));
   addDeviceOptions(*app, options->device);
   addSceneOptionsAfterPath(*app, options->scene, kRealtimeRateRange);

@@ -175,12 +175,19 @@ void vtkHapticStateRepresentation::UpdateForceArrow()
 {
   const proxima::Vec3& force = m_state.force;
   const double magnitude = proxima::norm(force);
-  const double length = magnitude * this->ForceScale;
-  if (!(length > 0.0) || !std::isfinite(length))
+  const double shaft = magnitude * this->ForceScale;
+  if (!(shaft > 0.0) || !std::isfinite(shaft))
   {
     m_forceActor->VisibilityOff();
     return;
   }
+  // vtkArrowSource's tip and shaft radii are fractions of the scale across the arrow.
+  const double head = this->ForceArrowHeadLength;
+  const double length = head > 0.0 ? shaft + head : shaft;
+  const double across = head > 0.0 ? head : length;
+  m_arrowSource->SetTipLength(head > 0.0 ? head / length : 0.35);
+  m_arrowSource->SetTipRadius(head > 0.0 ? 0.35 : 0.1);
+  m_arrowSource->SetShaftRadius(head > 0.0 ? 0.1 : 0.03);
   // vtkArrowSource points from the origin along +x with unit length: turn +x onto the force.
   const double x[3] = {1.0, 0.0, 0.0};
   const double direction[3] = {force.x / magnitude, force.y / magnitude, force.z / magnitude};
@@ -190,7 +197,7 @@ void vtkHapticStateRepresentation::UpdateForceArrow()
   const double cosine = vtkMath::Dot(x, direction);
   m_arrowTransform->Identity();
   m_arrowTransform->PostMultiply();
-  m_arrowTransform->Scale(length, length, length);
+  m_arrowTransform->Scale(length, across, across);
   if (sine > 1e-12)
   {
     m_arrowTransform->RotateWXYZ(vtkMath::DegreesFromRadians(std::atan2(sine, cosine)), axis);
@@ -255,6 +262,7 @@ void vtkHapticStateRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ContactDiscRadius: " << this->ContactDiscRadius << " (0: four proxy radii)\n";
   os << indent << "FrictionConeHeight: " << this->FrictionConeHeight << " (0: three proxy radii)\n";
   os << indent << "ForceScale: " << this->ForceScale << " m/N\n";
+  os << indent << "ForceArrowHeadLength: " << this->ForceArrowHeadLength << " m (0: grows)\n";
   os << indent << "FingerOpacity: " << this->FingerOpacity << "\n";
   os << indent << "ContactDiscOpacity: " << this->ContactDiscOpacity << "\n";
   os << indent << "State: tick " << m_state.tick << ", " << m_state.numContacts << " contacts"

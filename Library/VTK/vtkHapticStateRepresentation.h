@@ -56,6 +56,15 @@ public:
   ///@}
 
   ///@{
+  /// Length in metres of the force arrow's head, which then keeps its size: the shaft, as thick
+  /// as a fifth of the head is long, is ForceScale per newton long, and the head is drawn beyond
+  /// it, so that a small force still shows as a head. 0 (the default): the whole arrow, head and
+  /// thickness included, grows with the force.
+  vtkSetClampMacro(ForceArrowHeadLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ForceArrowHeadLength, double);
+  ///@}
+
+  ///@{
   /// Opacity of the finger's ghost sphere (default 0.3) and of the contact discs (default 0.4).
   vtkSetClampMacro(FingerOpacity, double, 0.0, 1.0);
   vtkGetMacro(FingerOpacity, double);
@@ -79,6 +88,7 @@ protected:
   double ContactDiscRadius = 0.0;
   double FrictionConeHeight = 0.0;
   double ForceScale = 0.002;
+  double ForceArrowHeadLength = 0.0;
   double FingerOpacity = 0.3;
   double ContactDiscOpacity = 0.4;
 

@@ -54,6 +54,29 @@ inline constexpr ParameterRange kSkinRange{0.0, false, 0.1, " m"};
 inline constexpr ParameterRange kMeshScaleRange{0.0, true, 1e6, ""};
 inline constexpr ParameterRange kFeatureAngleRange{0.0, false, 180.0, " degrees"};
 
+/// Generated shapes (proxima generate): a micrometre to a kilometre across, placed within a
+/// thousand kilometres of the origin.
+inline constexpr ParameterRange kGeneratedSizeRange{0.0, true, 1000.0, " m"};
+inline constexpr ParameterRange kGeneratedPlaceRange{-1e6, false, 1e6, " m"};
+/// An icosphere's subdivision levels: level 9 is 5.2 million triangles, level 10 would be 21 million.
+inline constexpr ParameterRange kIcosphereSubdivisionsRange{0.0, false, 9.0, ""};
+/// A generated grid's cells along a side: 4096 is 33.6 million triangles.
+inline constexpr ParameterRange kGridCellsRange{1.0, false, 4096.0, ""};
+/// A generated prism's sides: fewer than three is no prism.
+inline constexpr ParameterRange kPrismSidesRange{3.0, false, 100000.0, ""};
+
+/// The sphere tree's leaf rule (proxima tree): a triangle longer than this many median edges is
+/// split; 0 splits none.
+inline constexpr ParameterRange kLeafSizeFactorRange{0.0, false, 1e6, ""};
+inline constexpr ParameterRange kLeafSpheresPerNodeRange{1.0, false, 1024.0, ""};
+inline constexpr ParameterRange kPiecesPerTriangleRange{1.0, false, 1e6, ""};
+
+/// Mesh inspection (proxima inspect): places listed per kind of defect, the angle under which a
+/// triangle is a sliver (no triangle has all angles above 60), and the welding distance.
+inline constexpr ParameterRange kDefectLocationsRange{0.0, false, 100000.0, ""};
+inline constexpr ParameterRange kSliverAngleRange{0.0, false, 60.0, " degrees"};
+inline constexpr ParameterRange kWeldDistanceRange{0.0, true, 1e6, " m"};
+
 /// The proxy's work: move/update iterations allowed per tick.
 inline constexpr ParameterRange kMaxIterationsRange{1.0, false, 1000.0, ""};
 

@@ -297,6 +297,12 @@ std::string writeThroughScratchFile(Writer* writer, vtkPolyData* data, const std
 }
 } // namespace
 
+bool isWritableMeshFormat(const std::string& path)
+{
+  const std::optional<MeshFileFormat> format = meshFileFormatFromPath(path);
+  return format && *format != MeshFileFormat::Gltf && *format != MeshFileFormat::Off;
+}
+
 void writeMeshFile(const std::string& path, const TriangleSoup& soup)
 {
   if ((!soup.pointNormals.empty() && soup.pointNormals.size() != soup.points.size()) ||
@@ -312,11 +318,11 @@ void writeMeshFile(const std::string& path, const TriangleSoup& soup)
       throw std::invalid_argument("writeMeshFile: a triangle refers to a point out of range");
     }
   }
-  const std::optional<MeshFileFormat> format = meshFileFormatFromPath(path);
-  if (!format || *format == MeshFileFormat::Gltf || *format == MeshFileFormat::Off)
+  if (!isWritableMeshFormat(path))
   {
-    throw InputError(path, "cannot write this format (write .obj, .stl, .ply or .vtp)");
+    throw InputError(path, kWritableMeshFormatsMessage);
   }
+  const std::optional<MeshFileFormat> format = meshFileFormatFromPath(path);
   // Opened first: a missing folder or a read-only one is said before any work, in the system's
   // words, and nothing reaches the target until every byte is there.
   AtomicOutputFile file(path);

@@ -17,4 +17,12 @@ namespace proxima
 /// full, and std::invalid_argument when the soup's attributes do not match its points.
 void writeMeshFile(const std::string& path, const TriangleSoup& soup);
 
+/// True when writeMeshFile writes `path`'s format (by its extension), so that a command can
+/// refuse another before it makes what it would write.
+bool isWritableMeshFormat(const std::string& path);
+
+/// The words writeMeshFile refuses another format with.
+inline constexpr const char* kWritableMeshFormatsMessage =
+  "cannot write this format (write .obj, .stl, .ply or .vtp)";
+
 } // namespace proxima
