@@ -188,9 +188,11 @@ int main(int argc, char** argv)
     auto next = buildScene(mesh, buildMs);
     const std::uint64_t version = runtime.publishScene(next, parameters, {});
     const double publishMs = millisecondsSince(start);
-    while (runtime.liveSceneVersion() < version)
+    if (!runtime.waitForScene(version, std::chrono::seconds(60)))
     {
-      std::this_thread::sleep_for(std::chrono::microseconds(20));
+      std::cerr << "ServoLoopJitter: the swapped model did not go live within 60 s\n";
+      runtime.stop();
+      return 1;
     }
     swapJson = {{"read_and_build_ms", buildMs},
                 {"publish_ms", publishMs - buildMs},
