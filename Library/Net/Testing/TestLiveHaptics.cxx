@@ -210,7 +210,17 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
     {
       ++pressed;
       EXPECT_EQ(s.shape, 0);
-      EXPECT_GT(s.force.z, 0.0); // out of the sphere
+      // Out of the sphere. A sample the runtime flags as fading (its proxy loop starved for
+      // longer than the watchdog's 5 ms) carries the last force scaled down to exactly 0 at the
+      // fade's end, beside the stale proxy's contact: never into the sphere, but maybe 0.
+      if ((s.flags & kTickForceFading) != 0)
+      {
+        EXPECT_GE(s.force.z, 0.0);
+      }
+      else
+      {
+        EXPECT_GT(s.force.z, 0.0);
+      }
       if (held)
       {
         // Held 5 mm below the top: the spring kp (h + r - z_finger), with the surface's height h
