@@ -190,7 +190,10 @@ int main(int argc, char** argv)
     const double publishMs = millisecondsSince(start);
     if (!runtime.waitForScene(version, std::chrono::seconds(60)))
     {
-      std::cerr << "ServoLoopJitter: the swapped model did not go live within 60 s\n";
+      // The run's --seconds ended before the swap (reading and building the model took longer
+      // than the second half of the run), or the proxy loop never took it.
+      std::cerr << "ServoLoopJitter: the swapped model was not live before the run ended (give "
+                   "more --seconds than twice the model's build time) or within 60 s\n";
       runtime.stop();
       return 1;
     }
