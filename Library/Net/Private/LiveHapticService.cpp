@@ -53,10 +53,17 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
   {
     return {grpc::StatusCode::UNAUTHENTICATED, "the server refused the token (missing or wrong)"};
   }
-  if (!m_ownership.mayChange(*context))
+  switch (m_ownership.mayChange(*context))
   {
-    return {grpc::StatusCode::FAILED_PRECONDITION,
-            "another client owns the model: only it may change it (this client may observe)"};
+    case ModelOwnership::Right::Granted: break;
+    case ModelOwnership::Right::OwnedByAnother:
+      return {grpc::StatusCode::FAILED_PRECONDITION,
+              "another client owns the model: only it may change it (this client may observe)"};
+    case ModelOwnership::Right::OwnershipEnded:
+      return {grpc::StatusCode::FAILED_PRECONDITION,
+              "this client no longer owns the model: its ownership ended when its connection to "
+              "the server dropped or the server restarted; the model is unchanged (connect a new "
+              "client to claim it)"};
   }
   ModelAssembly shapes(m_limits);
   net::SceneBundle sceneBundle;

@@ -76,12 +76,18 @@ protected:
     m_runtime->publishScene(std::make_shared<CollisionScene>(), proxy, {0.0, 0.0, 0.08});
     std::string message;
     ASSERT_TRUE(m_runtime->start(message)) << message;
-    RemoteServerSettings server;
-    server.listen = "127.0.0.1:0";
-    server.runtime = m_runtime.get();
-    server.liveProxy = proxy;
-    m_server = std::make_unique<RemoteRunServer>(server);
+    startServer("127.0.0.1:0");
     m_address = "127.0.0.1:" + std::to_string(m_server->port());
+  }
+
+  // A server on `listen` in front of the fixture's runtime (as proxima serve --device makes one).
+  void startServer(const std::string& listen)
+  {
+    RemoteServerSettings server;
+    server.listen = listen;
+    server.runtime = m_runtime.get();
+    server.liveProxy.radius = kProxyRadius;
+    m_server = std::make_unique<RemoteRunServer>(server);
   }
 
   void TearDown() override
@@ -326,6 +332,35 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
   }
   EXPECT_GT(m_runtime->latestState().tick, tickBefore);
   EXPECT_EQ(m_runtime->latestState().sceneVersion, live);
+}
+
+// The server restarts under an owner (same address, same device and runtime, as a restarted
+// proxima serve): the new server never granted the owner's key, and the owner's next commit is
+// refused in words saying so, not taken as if it still owned the model.
+TEST_F(LiveServer, AnOwnerIsToldPlainlyThatARestartedServerEndedItsOwnership)
+{
+  HapticClient owner(m_address);
+  sphereShape(owner, 2, {});
+  const std::uint64_t live = owner.commit().version;
+  m_server.reset();
+  startServer(m_address);
+  sphereShape(owner, 2, Vec3{0.0, 0.0, -0.01});
+  try
+  {
+    owner.commit();
+    ADD_FAILURE() << "an owner's key from before the restart was taken";
+  }
+  catch (const InputError& error)
+  {
+    std::printf("[ refused  ] %s\n", error.what());
+    EXPECT_NE(std::string(error.what()).find("no longer owns the model"), std::string::npos)
+      << error.what();
+  }
+  EXPECT_EQ(m_runtime->liveSceneVersion(), live);
+  // A client that claims the model now owns it: the restarted server had no owner.
+  HapticClient next(m_address);
+  sphereShape(next, 2, {});
+  EXPECT_GT(next.commit().version, live);
 }
 
 TEST_F(LiveServer, AClientThatStopsReadingLosesSamplesNotTheServersTime)
