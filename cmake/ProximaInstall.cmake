@@ -30,6 +30,13 @@ install(FILES "${PROJECT_BINARY_DIR}/ProximaConfig.cmake"
               "${CMAKE_CURRENT_LIST_DIR}/Install/ProximaInstalledModuleDir.cpp.in"
         DESTINATION "${PROXIMA_CMAKE_DIR}" COMPONENT Kernel)
 
+# The licence and the credits of the shipped data go with every installation, where Debian keeps a
+# package's (share/doc/proxima, not GNUInstallDirs' default share/doc/Proxima): a binary
+# distribution must carry the BSD licence's text, and the meshes' CC BY terms ask for their
+# credits. Kernel is the component every installation has.
+install(FILES "${PROJECT_SOURCE_DIR}/LICENSE" "${PROJECT_SOURCE_DIR}/NOTICE"
+        DESTINATION "${CMAKE_INSTALL_DOCDIR}" COMPONENT Kernel)
+
 # The kernel for builds without CMake: plain C++20 and threads, no third-party package.
 configure_file("${CMAKE_CURRENT_LIST_DIR}/Install/proxima-kernel.pc.in"
                "${PROJECT_BINARY_DIR}/proxima-kernel.pc" @ONLY)

@@ -3,6 +3,12 @@
 set(PROXIMA_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion)
 
 include(GNUInstallDirs)
+# Debian's documentation folder is named for the package in lower case; GNUInstallDirs falls back
+# to the project's name (share/doc/Proxima). A CMAKE_INSTALL_DOCDIR given on the command line (the
+# cache entry is empty otherwise) wins.
+if("$CACHE{CMAKE_INSTALL_DOCDIR}" STREQUAL "")
+  set(CMAKE_INSTALL_DOCDIR "${CMAKE_INSTALL_DATAROOTDIR}/doc/proxima")
+endif()
 
 # The component of find_package(Proxima COMPONENTS ...) a layer belongs to, from its folder
 # (Documentation/Library.md): the real-time kernel (Core, Geometry, Proxy, Runtime), IO, the VTK

@@ -7,10 +7,15 @@
 #include "Runtime/SnapshotChannel.h"
 #include "Runtime/StateStream.h"
 
+#include <linux/futex.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <climits>
 #include <cmath>
+#include <ctime>
 #include <stdexcept>
 #include <thread>
 
@@ -32,6 +37,34 @@ struct SceneSlot
   std::shared_ptr<TickDynamics> dynamics;
   std::unique_ptr<MovingObjectSet> moving;
 };
+
+// The scene event is a futex on the atomic's own storage: waking its sleepers is one system call,
+// with no lock and no allocation, so the proxy thread may raise it; and a sleeper that read the
+// count before an event is not put to sleep after it (the kernel compares the word first).
+static_assert(std::atomic<std::uint32_t>::is_always_lock_free &&
+              sizeof(std::atomic<std::uint32_t>) == sizeof(std::uint32_t));
+
+std::uint32_t* futexWord(std::atomic<std::uint32_t>& word)
+{
+  return reinterpret_cast<std::uint32_t*>(&word);
+}
+
+void wakeAllSleepers(std::atomic<std::uint32_t>& word)
+{
+  syscall(SYS_futex, futexWord(word), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
+}
+
+// Returns when `word` no longer holds `seen`, when woken, or after `limit`; a signal or a
+// spurious wake-up returns early too, so the caller checks its condition again.
+void sleepWhileUnchanged(std::atomic<std::uint32_t>& word, std::uint32_t seen,
+                         std::chrono::nanoseconds limit)
+{
+  const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(limit);
+  timespec relative{};
+  relative.tv_sec = static_cast<time_t>(seconds.count());
+  relative.tv_nsec = static_cast<long>((limit - seconds).count());
+  syscall(SYS_futex, futexWord(word), FUTEX_WAIT_PRIVATE, seen, &relative, nullptr, 0);
+}
 } // namespace
 
 struct ThreadedRuntime::Impl
@@ -65,6 +98,13 @@ struct ThreadedRuntime::Impl
   /// been collected yet (a haptic thread never frees a scene).
   void installPendingScene();
   void collectRetired() { delete retired.exchange(nullptr, std::memory_order_acq_rel); }
+  /// Counts the scene event (a scene installed, or the loops ended) and wakes waitForScene's
+  /// sleepers; after the change it announces is stored.
+  void raiseSceneEvent()
+  {
+    sceneEvents.fetch_add(1, std::memory_order_release);
+    wakeAllSleepers(sceneEvents);
+  }
 
   HapticDevice& device;
   /// Asked once here, so that only the servo thread ever calls the device.
@@ -91,6 +131,8 @@ struct ThreadedRuntime::Impl
   SceneSlot* live = nullptr;
   std::atomic<std::uint64_t> publishedVersions{0};
   std::atomic<std::uint64_t> liveVersion{0};
+  /// How many scene events there have been (wrapping): what waitForScene's sleepers sleep on.
+  mutable std::atomic<std::uint32_t> sceneEvents{0};
 
   std::atomic<bool> stopRequested{false};
   std::atomic<bool> finishedFlag{false};
@@ -147,6 +189,8 @@ void ThreadedRuntime::Impl::installPendingScene()
   liveVersion.store(next->version, std::memory_order_release);
   // Only this thread fills `retired`, and it was empty above: the store loses nothing.
   retired.store(previous, std::memory_order_release);
+  // Once per installed scene, after the install was timed: not part of any proxy update.
+  raiseSceneEvent();
 }
 
 void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
@@ -242,6 +286,8 @@ void ThreadedRuntime::Impl::servoLoop(Nanoseconds start)
     if (settings.duration > 0.0 && time > settings.duration)
     {
       finishedFlag.store(true, std::memory_order_release);
+      // The run is over: no scene goes live any more, so nobody need wait for one.
+      raiseSceneEvent();
       break;
     }
     const TickInput input{tick, time, device.read(time)};
@@ -407,6 +453,7 @@ void ThreadedRuntime::stop()
   impl.servoThread.join();
   impl.proxyThread.join();
   impl.started = false;
+  impl.raiseSceneEvent();
 }
 
 bool ThreadedRuntime::running() const
@@ -432,6 +479,34 @@ HapticState ThreadedRuntime::latestState() const
 std::uint64_t ThreadedRuntime::liveSceneVersion() const
 {
   return m_impl->liveVersion.load(std::memory_order_acquire);
+}
+
+bool ThreadedRuntime::waitForScene(std::uint64_t version, std::chrono::nanoseconds timeout) const
+{
+  Impl& impl = *m_impl;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (true)
+  {
+    // The count first: an event raised after this read changes it, and the sleep below then
+    // returns at once instead of missing the event.
+    const std::uint32_t seen = impl.sceneEvents.load(std::memory_order_acquire);
+    if (impl.liveVersion.load(std::memory_order_acquire) >= version)
+    {
+      return true;
+    }
+    if (impl.stopRequested.load(std::memory_order_acquire) ||
+        impl.finishedFlag.load(std::memory_order_acquire))
+    {
+      return false;
+    }
+    const auto left = deadline - std::chrono::steady_clock::now();
+    if (left <= std::chrono::nanoseconds::zero())
+    {
+      return false;
+    }
+    sleepWhileUnchanged(impl.sceneEvents, seen,
+                        std::chrono::duration_cast<std::chrono::nanoseconds>(left));
+  }
 }
 
 std::int64_t ThreadedRuntime::longestSceneInstallNanoseconds() const

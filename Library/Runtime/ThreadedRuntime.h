@@ -19,6 +19,7 @@
 #include "Runtime/TickBudget.h"
 #include "Runtime/TickDynamics.h"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -109,6 +110,13 @@ public:
   BodyPoses latestBodyPoses() const;
   /// Version of the scene the proxy loop is using (0 before the first is installed).
   std::uint64_t liveSceneVersion() const;
+  /// Blocks the calling thread until the proxy loop is using the scene of `version` or a newer
+  /// one (a scene published before the loop took the one before it replaces that one unseen), and
+  /// returns true; false once `timeout` has passed, or at once when the loops have ended (stop()
+  /// or the run's duration), since no scene goes live after that. The caller sleeps on an event
+  /// the proxy loop raises when it installs a scene, outside its proxy update: the haptic threads
+  /// take no lock for it and nothing is polled. Any thread but the haptic ones.
+  bool waitForScene(std::uint64_t version, std::chrono::nanoseconds timeout) const;
   /// The longest time the proxy loop spent installing a published scene, in nanoseconds: the
   /// whole cost of a model swap on the haptic side.
   std::int64_t longestSceneInstallNanoseconds() const;

@@ -188,9 +188,14 @@ int main(int argc, char** argv)
     auto next = buildScene(mesh, buildMs);
     const std::uint64_t version = runtime.publishScene(next, parameters, {});
     const double publishMs = millisecondsSince(start);
-    while (runtime.liveSceneVersion() < version)
+    if (!runtime.waitForScene(version, std::chrono::seconds(60)))
     {
-      std::this_thread::sleep_for(std::chrono::microseconds(20));
+      // The run's --seconds ended before the swap (reading and building the model took longer
+      // than the second half of the run), or the proxy loop never took it.
+      std::cerr << "ServoLoopJitter: the swapped model was not live before the run ended (give "
+                   "more --seconds than twice the model's build time) or within 60 s\n";
+      runtime.stop();
+      return 1;
     }
     swapJson = {{"read_and_build_ms", buildMs},
                 {"publish_ms", publishMs - buildMs},

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Install.ExamplesAgainstInstall (issue 19): `cmake --install` this build into a prefix, move the
-# prefix elsewhere (an installation must not remember where it was made), configure Examples/
-# against it with find_package(Proxima), build them, and run them:
+# prefix elsewhere (an installation must not remember where it was made), check that it carries
+# the licence and the shipped data's credits (LICENSE and NOTICE in its documentation folder, as
+# the source has them), configure Examples/ against it with find_package(Proxima), build them, and
+# run them:
 #   - probe_mesh on the shared screw and its probe path (an STL icosphere and the bundled
 #     press-and-stroke path without the shared data), read through the VTK readers' module, against the installed `proxima run` on the same files: the proxy and
 #     force columns must be the same numbers, and the module must be the installed one;
@@ -23,6 +25,16 @@ mkdir -p "$work"
 cmake --install "$build" --prefix "$work/made-here" > "$work/install.log"
 mv "$work/made-here" "$work/prefix"
 prefix="$work/prefix"
+
+# A binary distribution must carry the licence's text, and the CC BY meshes their credits, in the
+# build's documentation folder (share/doc/proxima unless CMAKE_INSTALL_DOCDIR moved it).
+docdir="$(sed -n 's/^CMAKE_INSTALL_DOCDIR:PATH=//p' "$build/CMakeCache.txt")"
+for file in LICENSE NOTICE; do
+  if ! cmp -s "$source/$file" "$prefix/${docdir:-share/doc/proxima}/$file"; then
+    echo "the installation has no ${docdir:-share/doc/proxima}/$file equal to the source's $file" >&2
+    exit 1
+  fi
+done
 
 cmake -G Ninja -S "$source/Examples" -B "$work/examples" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" \

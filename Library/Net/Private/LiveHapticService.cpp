@@ -53,10 +53,17 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
   {
     return {grpc::StatusCode::UNAUTHENTICATED, "the server refused the token (missing or wrong)"};
   }
-  if (!m_ownership.mayChange(*context))
+  switch (m_ownership.mayChange(*context))
   {
-    return {grpc::StatusCode::FAILED_PRECONDITION,
-            "another client owns the model: only it may change it (this client may observe)"};
+    case ModelOwnership::Right::Granted: break;
+    case ModelOwnership::Right::OwnedByAnother:
+      return {grpc::StatusCode::FAILED_PRECONDITION,
+              "another client owns the model: only it may change it (this client may observe)"};
+    case ModelOwnership::Right::OwnershipEnded:
+      return {grpc::StatusCode::FAILED_PRECONDITION,
+              "this client no longer owns the model: its ownership ended when its connection to "
+              "the server dropped or the server restarted; the model is unchanged (connect a new "
+              "client to claim it)"};
   }
   ModelAssembly shapes(m_limits);
   net::SceneBundle sceneBundle;
@@ -124,28 +131,19 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
     // loop's first tick (a commit right after the server started) the start given here would
     // count, and the latest state's proxy is not yet known. The server published its empty
     // scene with the device's start before it began to serve: wait until the loop has it.
-    const auto firstTick = Clock::now() + std::chrono::seconds(5);
-    while (m_runtime.liveSceneVersion() == 0 && Clock::now() < firstTick && !m_stopping)
-    {
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
+    m_runtime.waitForScene(1, std::chrono::seconds(5));
     const std::lock_guard<std::mutex> lock(m_publishing);
     version = m_runtime.publishScene(std::move(model.scene), m_proxy, m_runtime.latestState().proxy,
                                      nullptr, std::move(model.dynamics));
   }
   // Live once the proxy loop has installed it (it does at its next tick, unless the runtime has
-  // stopped).
-  const auto deadline = publishStart + std::chrono::seconds(5);
-  while (m_runtime.liveSceneVersion() < version && Clock::now() < deadline && !m_stopping)
-  {
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
+  // stopped; -1 then).
+  const bool live = m_runtime.waitForScene(version, std::chrono::seconds(5));
   receipt->set_version(version);
   receipt->set_shapes(model.shapes);
   receipt->set_triangles(model.triangles);
   receipt->set_build_ms(buildMilliseconds);
-  receipt->set_live_ms(m_runtime.liveSceneVersion() >= version ? millisecondsSince(publishStart)
-                                                               : -1.0);
+  receipt->set_live_ms(live ? millisecondsSince(publishStart) : -1.0);
   return grpc::Status::OK;
 }
 

@@ -52,10 +52,19 @@ void ModelOwnership::release(const std::string& key)
   }
 }
 
-bool ModelOwnership::mayChange(const grpc::ServerContext& context) const
+ModelOwnership::Right ModelOwnership::mayChange(const grpc::ServerContext& context) const
 {
+  const bool carriesKey = context.client_metadata().count(kOwnerMetadata) > 0;
   const std::lock_guard<std::mutex> lock(m_mutex);
-  return m_key.empty() || metadataEquals(context, kOwnerMetadata, m_key);
+  if (!m_key.empty() && metadataEquals(context, kOwnerMetadata, m_key))
+  {
+    return Right::Granted;
+  }
+  if (carriesKey)
+  {
+    return Right::OwnershipEnded;
+  }
+  return m_key.empty() ? Right::Granted : Right::OwnedByAnother;
 }
 
 } // namespace proxima::detail

@@ -76,12 +76,18 @@ protected:
     m_runtime->publishScene(std::make_shared<CollisionScene>(), proxy, {0.0, 0.0, 0.08});
     std::string message;
     ASSERT_TRUE(m_runtime->start(message)) << message;
-    RemoteServerSettings server;
-    server.listen = "127.0.0.1:0";
-    server.runtime = m_runtime.get();
-    server.liveProxy = proxy;
-    m_server = std::make_unique<RemoteRunServer>(server);
+    startServer("127.0.0.1:0");
     m_address = "127.0.0.1:" + std::to_string(m_server->port());
+  }
+
+  // A server on `listen` in front of the fixture's runtime (as proxima serve --device makes one).
+  void startServer(const std::string& listen)
+  {
+    RemoteServerSettings server;
+    server.listen = listen;
+    server.runtime = m_runtime.get();
+    server.liveProxy.radius = kProxyRadius;
+    m_server = std::make_unique<RemoteRunServer>(server);
   }
 
   void TearDown() override
@@ -166,6 +172,8 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
   EXPECT_EQ(receipt.shapes, 1u);
   EXPECT_EQ(receipt.triangles, 1280u);
   EXPECT_GE(receipt.liveMilliseconds, 0.0);
+  // The receipt comes once the proxy loop has the model, not merely once it was handed over.
+  EXPECT_GE(m_runtime->liveSceneVersion(), receipt.version);
   std::printf("[ measured ] 1,280 triangles: built in %.2f ms, live %.2f ms later\n",
               receipt.buildMilliseconds, receipt.liveMilliseconds);
   // The finger presses 5 mm into the sphere: wait for half a second of it held there.
@@ -208,7 +216,17 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
     {
       ++pressed;
       EXPECT_EQ(s.shape, 0);
-      EXPECT_GT(s.force.z, 0.0); // out of the sphere
+      // Out of the sphere. A sample the runtime flags as fading (its proxy loop starved for
+      // longer than the watchdog's 5 ms) carries the last force scaled down to exactly 0 at the
+      // fade's end, beside the stale proxy's contact: never into the sphere, but maybe 0.
+      if ((s.flags & kTickForceFading) != 0)
+      {
+        EXPECT_GE(s.force.z, 0.0);
+      }
+      else
+      {
+        EXPECT_GT(s.force.z, 0.0);
+      }
       if (held)
       {
         // Held 5 mm below the top: the spring kp (h + r - z_finger), with the surface's height h
@@ -314,6 +332,35 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
   }
   EXPECT_GT(m_runtime->latestState().tick, tickBefore);
   EXPECT_EQ(m_runtime->latestState().sceneVersion, live);
+}
+
+// The server restarts under an owner (same address, same device and runtime, as a restarted
+// proxima serve): the new server never granted the owner's key, and the owner's next commit is
+// refused in words saying so, not taken as if it still owned the model.
+TEST_F(LiveServer, AnOwnerIsToldPlainlyThatARestartedServerEndedItsOwnership)
+{
+  HapticClient owner(m_address);
+  sphereShape(owner, 2, {});
+  const std::uint64_t live = owner.commit().version;
+  m_server.reset();
+  startServer(m_address);
+  sphereShape(owner, 2, Vec3{0.0, 0.0, -0.01});
+  try
+  {
+    owner.commit();
+    ADD_FAILURE() << "an owner's key from before the restart was taken";
+  }
+  catch (const InputError& error)
+  {
+    std::printf("[ refused  ] %s\n", error.what());
+    EXPECT_NE(std::string(error.what()).find("no longer owns the model"), std::string::npos)
+      << error.what();
+  }
+  EXPECT_EQ(m_runtime->liveSceneVersion(), live);
+  // A client that claims the model now owns it: the restarted server had no owner.
+  HapticClient next(m_address);
+  sphereShape(next, 2, {});
+  EXPECT_GT(next.commit().version, live);
 }
 
 TEST_F(LiveServer, AClientThatStopsReadingLosesSamplesNotTheServersTime)
@@ -524,11 +571,7 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
 TEST_F(LiveServer, ABundledSceneNamesOnlyItsOwnFiles)
 {
   // The server's empty scene, once the proxy loop has it (at its first tick).
-  const auto deadline = std::chrono::steady_clock::now() + 30s;
-  while (m_runtime->liveSceneVersion() == 0 && std::chrono::steady_clock::now() < deadline)
-  {
-    std::this_thread::sleep_for(1ms);
-  }
+  ASSERT_TRUE(m_runtime->waitForScene(1, 30s));
   const std::uint64_t live = m_runtime->liveSceneVersion();
   ASSERT_EQ(live, 1u);
   const auto bareUpload = [this](const std::string& json, const std::string& mjcf) {

@@ -17,9 +17,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -72,6 +74,15 @@ FingerPath pressAndStroke(double rate)
   press.strokeLength = 0.03;
   press.speed = 0.2;
   return makePressAndStrokePath(press, rate);
+}
+
+// A finger far from every scene, so that only the scene hand-over matters.
+FingerPath restingFarAway()
+{
+  FingerPath path;
+  path.append(0.0, {0.0, 0.0, 1000.0});
+  path.append(1000.0, {0.0, 0.0, 1000.0});
+  return path;
 }
 
 TEST(ThreadedRuntime, AgreesWithLockstepOnTheSamePath)
@@ -337,9 +348,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   }
 
   const auto small = makeSharedScene(makeIcosphere(3, 0.05));
-  FingerPath path; // far outside both models
-  path.append(0.0, {0.0, 0.0, 1000.0});
-  path.append(1000.0, {0.0, 0.0, 1000.0});
+  const FingerPath path = restingFarAway(); // far outside both models
   SimulatedDevice device(path);
   ThreadedRuntime runtime(device, servoParameters(), quietSettings(4000.0));
   runtime.publishScene(small, proxyParameters(), path.positions.front());
@@ -347,7 +356,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   ASSERT_TRUE(runtime.start(message)) << message;
   // Installed in the proxy loop, then seen in a state the servo published (before that, under
   // load, the servo can still be publishing states from before the first proxy update: version 0).
-  ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 1; }, 10s));
+  ASSERT_TRUE(runtime.waitForScene(1, 10s));
   ASSERT_TRUE(waitFor([&] { return runtime.latestState().sceneVersion == 1; }, 10s));
 
   // Sample the published states while the big model is built and swapped in.
@@ -369,7 +378,7 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
                                   .count();
   const std::uint64_t version = runtime.publishScene(big, proxyParameters(), {0.0, 0.0, 1000.0});
   EXPECT_EQ(version, 2u);
-  ASSERT_TRUE(waitFor([&] { return runtime.liveSceneVersion() == 2; }, 10s));
+  ASSERT_TRUE(runtime.waitForScene(2, 10s));
   ASSERT_TRUE(waitFor([&] { return runtime.latestState().sceneVersion == 2; }, 10s));
   sampling = false;
   sampler.join();
@@ -401,6 +410,88 @@ TEST(ThreadedRuntime, ModelSwapWhileRunningInstallsOnlyCompleteScenes)
   RecordProperty("proxy_max_work_ns", static_cast<int>(after.maxWorkNanoseconds));
   RecordProperty("proxy_over_budget_ticks", static_cast<int>(after.overBudgetTicks));
   RecordProperty("skull", haveSkull ? 1 : 0);
+}
+
+// waitForScene's sleeper must be woken by the event it waits for: each wait below is given a
+// minute and must end within half of it, where the event comes in milliseconds. A wait that only
+// ended at its timeout would fail that, however slow the machine.
+TEST(ThreadedRuntime, WaitForSceneReturnsOnceTheCommittedSceneIsLive)
+{
+  const auto scene = makeSharedScene(makeIcosphere(2, 0.05));
+  const FingerPath path = restingFarAway();
+  SimulatedDevice device(path);
+  ThreadedRuntime runtime(device, servoParameters(), quietSettings(1000.0));
+  EXPECT_EQ(runtime.publishScene(scene, proxyParameters(), path.positions.front()), 1u);
+  // Published but not live: no proxy loop runs yet to install it.
+  EXPECT_FALSE(runtime.waitForScene(1, 50ms));
+  EXPECT_EQ(runtime.liveSceneVersion(), 0u);
+
+  // The loops begin 10 ms after start() returns: this thread is asleep by then.
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  auto waitStart = std::chrono::steady_clock::now();
+  ASSERT_TRUE(runtime.waitForScene(1, 60s));
+  EXPECT_LT(std::chrono::steady_clock::now() - waitStart, 30s);
+  EXPECT_GE(runtime.liveSceneVersion(), 1u);
+
+  // A swap the proxy loop takes only after a 0.2 s stall: the wait sleeps through the stall and
+  // is woken by the install.
+  runtime.injectProxyStall(0.2);
+  EXPECT_EQ(runtime.publishScene(scene, proxyParameters(), path.positions.front()), 2u);
+  waitStart = std::chrono::steady_clock::now();
+  ASSERT_TRUE(runtime.waitForScene(2, 60s));
+  const auto waited = std::chrono::steady_clock::now() - waitStart;
+  EXPECT_LT(waited, 30s);
+  EXPECT_EQ(runtime.liveSceneVersion(), 2u);
+  // A version already live (or older) is answered at once.
+  EXPECT_TRUE(runtime.waitForScene(1, 0ms));
+  runtime.stop();
+  std::printf("[ measured ] a wait through a 0.2 s proxy stall ended after %.1f ms\n",
+              std::chrono::duration<double, std::milli>(waited).count());
+}
+
+TEST(ThreadedRuntime, WaitForSceneTimesOutOnAVersionNeverCommitted)
+{
+  const FingerPath path = restingFarAway();
+  SimulatedDevice device(path);
+  ThreadedRuntime runtime(device, servoParameters(), quietSettings(1000.0));
+  runtime.publishScene(makeSharedScene(makeIcosphere(2, 0.05)), proxyParameters(),
+                       path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(runtime.waitForScene(1, 60s));
+  // The loops run on and install nothing new: the wait lasts its whole timeout, then says no.
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(runtime.waitForScene(2, 200ms));
+  EXPECT_GE(std::chrono::steady_clock::now() - start, 200ms);
+  EXPECT_EQ(runtime.liveSceneVersion(), 1u);
+
+  // Stopped loops install nothing more: a wait is told so at once, not at its timeout; what is
+  // live stays live.
+  runtime.stop();
+  const auto afterStop = std::chrono::steady_clock::now();
+  EXPECT_FALSE(runtime.waitForScene(2, 60s));
+  EXPECT_LT(std::chrono::steady_clock::now() - afterStop, 30s);
+  EXPECT_TRUE(runtime.waitForScene(1, 60s));
+}
+
+TEST(ThreadedRuntime, WaitForSceneEndsWhenTheRunEnds)
+{
+  const FingerPath path = restingFarAway();
+  SimulatedDevice device(path);
+  RuntimeSettings settings = quietSettings(1000.0);
+  settings.duration = 0.5;
+  ThreadedRuntime runtime(device, servoParameters(), settings);
+  runtime.publishScene(makeSharedScene(makeIcosphere(2, 0.05)), proxyParameters(),
+                       path.positions.front());
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  // Asleep long before the run's half second is over, and woken when it ends.
+  const auto waitStart = std::chrono::steady_clock::now();
+  EXPECT_FALSE(runtime.waitForScene(2, 60s));
+  EXPECT_LT(std::chrono::steady_clock::now() - waitStart, 30s);
+  EXPECT_TRUE(runtime.finished());
+  runtime.stop();
 }
 
 TEST(ThreadedRuntime, RefusesAServoRateOutsideTheRuleAtConstruction)

@@ -71,22 +71,26 @@ class Follower:
     def __init__(self, server):
         self.client = HapticClient(server, role="observer")
         self.samples = []
+        # Notified at each sample: a test waits for the state it needs, not for a guessed time.
+        self.arrived = threading.Condition()
         self.stopping = False
         self.thread = threading.Thread(target=self._follow)
         self.thread.start()
 
     def _follow(self):
         for sample in self.client.stream(1000.0):
-            self.samples.append(sample)
+            with self.arrived:
+                self.samples.append(sample)
+                self.arrived.notify_all()
             if self.stopping:
                 break
 
     def wait_for(self, predicate, limit=60.0):
-        end = time.monotonic() + limit
-        while time.monotonic() < end:
-            if self.samples and predicate(self.samples[-1]):
+        """The first newest sample that satisfies `predicate`, within `limit` seconds."""
+        with self.arrived:
+            if self.arrived.wait_for(lambda: self.samples and predicate(self.samples[-1]),
+                                     timeout=limit):
                 return self.samples[-1]
-            time.sleep(0.01)
         raise AssertionError("the state never showed what the test waited for")
 
     def stop(self):
@@ -132,8 +136,8 @@ def test_a_client_killed_mid_upload_leaves_the_model_and_the_force(live_server, 
     killed_at = len(follower.samples)
     # A second of the state after the kill, then the next owner: the killed one's ownership
     # ended with its connection.
-    time.sleep(1.0)
-    after = follower.samples[-1]
+    killed_time = follower.samples[killed_at - 1]["t"]
+    after = follower.wait_for(lambda s: s["t"] >= killed_time + 1.0)
     owner = owner_once_free(live_server)
     owner.close()
     follower.stop()
