@@ -595,7 +595,8 @@ std::string InvariantStats::summary(const std::string& name) const
       << crossings << ", tunnel " << tunnels << ", free path " << freePathFailures << ", residual "
       << residualFailures << ", gap " << gapFailures << ", force " << forceFailures << ", coverage "
       << coverageFailures << ", refusal " << refusalFailures << ", replay " << replayFailures
-      << ", approach " << approachFailures << ", non-terminating " << nonTerminating << ")\n";
+      << ", approach " << approachFailures << ", non-terminating " << nonTerminating << ", settle "
+      << settleFailures << "; limited up to " << maxRestingLimitedTick << " ticks into a rest)\n";
   // One row per case for the tables of the closing note: grep '^\[table\]'.
   out << "[table] | " << name << " | " << ticks << " | " << minClearance << " | "
       << minSweepClearance << " | " << maxResidual << " | " << maxGap << " | " << maxFreePathError
@@ -677,6 +678,8 @@ TickChecker::TickChecker(const MeshOracle& oracle, const CollisionScene& scene,
 void TickChecker::reset(const Vec3& proxy)
 {
   m_proxy = proxy;
+  m_restingTicks = 0;
+  m_hasRestingFinger = false;
 }
 
 void TickChecker::check(std::uint64_t tick, const Vec3& finger, const ProxyTickResult& result)
@@ -784,6 +787,21 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
   s.contactTicks += contacts > 0 ? 1 : 0;
   s.capTicks += hitCap ? 1 : 0;
   s.budgetLimitedTicks += budgetLimited ? 1 : 0;
+  // (h) Budgeted ticks settle: a finger at rest is reached within maxRestingLimitedTicks ticks.
+  m_restingTicks =
+    (m_hasRestingFinger && requestedFinger == m_restingFinger) ? m_restingTicks + 1 : 0;
+  m_restingFinger = requestedFinger;
+  m_hasRestingFinger = true;
+  if (budgetLimited && m_restingTicks > 0)
+  {
+    s.maxRestingLimitedTick = std::max(s.maxRestingLimitedTick, m_restingTicks);
+    if (m_restingTicks > static_cast<std::uint64_t>(m_settings.maxRestingLimitedTicks))
+    {
+      s.fail(s.settleFailures, "tick " + std::to_string(tick) + ": still budget-limited " +
+                                 std::to_string(m_restingTicks) +
+                                 " ticks after the finger came to rest at " + str(requestedFinger));
+    }
+  }
   s.overflowTicks += overflow ? 1 : 0;
   s.maxIterations = std::max(s.maxIterations, iterations);
   m_proxy = proxy;

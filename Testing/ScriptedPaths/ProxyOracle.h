@@ -108,6 +108,10 @@ struct OracleSettings
   /// iterations needed, distance from the capped end) from a loop that never terminates
   /// (a failure).
   int uncappedIterations = 20000;
+  /// Budgeted ticks (issue 31): once the finger rests (the same position tick after tick), a run
+  /// must stop being budget-limited within this many ticks, reaching the local minimum that every
+  /// unlimited tick is checked against. A budget-limited tick later than this into a rest fails.
+  int maxRestingLimitedTicks = 20;
 
   static OracleSettings forScene(double diagonal, double skin);
 };
@@ -165,6 +169,10 @@ struct InvariantStats
   std::uint64_t approachFailures = 0;
   /// Ticks whose move/update loop never stops (still moving after uncappedIterations).
   std::uint64_t nonTerminating = 0;
+  /// Budget-limited ticks more than maxRestingLimitedTicks into a rest of the finger.
+  std::uint64_t settleFailures = 0;
+  /// The most ticks into a rest of the finger that a tick was still budget-limited.
+  std::uint64_t maxRestingLimitedTick = 0;
   std::vector<std::string> messages;
   /// Reproducers of the first few capped ticks that do converge (information).
   std::vector<std::string> notes;
@@ -173,7 +181,7 @@ struct InvariantStats
   {
     return penetrations + crossings + tunnels + freePathFailures + residualFailures + gapFailures +
            forceFailures + coverageFailures + refusalFailures + replayFailures + approachFailures +
-           nonTerminating;
+           nonTerminating + settleFailures;
   }
   void fail(std::uint64_t& counter, const std::string& message);
   /// One line per measure, for the test output.
@@ -250,6 +258,10 @@ private:
   static constexpr std::size_t kMaxRecordedPoints = 65536;
   std::unique_ptr<MoveRecord> m_moveRecord;
   Vec3 m_proxy;
+  /// The finger of the previous tick, and how many ticks in a row it has not moved.
+  Vec3 m_restingFinger;
+  std::uint64_t m_restingTicks = 0;
+  bool m_hasRestingFinger = false;
   InvariantStats m_stats;
 };
 

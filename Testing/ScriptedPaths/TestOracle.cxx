@@ -174,6 +174,30 @@ TEST_F(OracleCatches, PenetrationAndTunnel)
   EXPECT_NEAR(checker.stats().minClearance, -0.0005, 1e-15);
 }
 
+TEST_F(OracleCatches, BudgetLimitedTicksLongAfterTheFingerCameToRest)
+{
+  // Rule (h): with the finger still, a budgeted run must stop being limited within
+  // maxRestingLimitedTicks (20) ticks. A moving finger may be limited on every tick.
+  oracle::TickChecker moving(oracle, *scene, parameters, settings);
+  moving.reset({0, 0, 0.01});
+  for (std::uint64_t t = 0; t < 30; ++t)
+  {
+    moving.check(t, {0, 0, 0.01 - 1e-5 * static_cast<double>(t)}, {0, 0, 0.01}, 1, 0, false, false,
+                 false, true);
+  }
+  EXPECT_EQ(moving.stats().settleFailures, 0u);
+
+  oracle::TickChecker resting(oracle, *scene, parameters, settings);
+  resting.reset({0, 0, 0.01});
+  for (std::uint64_t t = 0; t < 25; ++t)
+  {
+    resting.check(t, {0, 0, 0.005}, {0, 0, 0.01}, 1, 0, false, false, false, true);
+  }
+  // Ticks 21 to 24 are 21 to 24 ticks into the rest.
+  EXPECT_EQ(resting.stats().settleFailures, 4u);
+  EXPECT_EQ(resting.stats().maxRestingLimitedTick, 24u);
+}
+
 TEST_F(OracleCatches, StoppedShortAndNotAMinimum)
 {
   oracle::TickChecker checker(oracle, *scene, parameters, settings);
