@@ -15,12 +15,13 @@ namespace proxima
 /// What a recorded point is to the tick's approach to the finger.
 enum class MovePointKind : unsigned char
 {
-  /// The tick's start, the end of a plain slide, or the end of a retrace back to where a rejected
-  /// stretch began: the finger distance at these points never increases along the tick.
+  /// The tick's start, the end of a move that ended no farther from the finger than
+  /// the accepted point before it, or the end of a retrace back to that point: the finger distance
+  /// at these points never increases along the tick.
   Accepted,
-  /// The end of a curvature-stretched slide (a Newton trial that may overshoot and end farther
-  /// from the finger), or of the move that judged a stretch that did not pay off, or the turning
-  /// point of the retrace after it. Swept clear like every segment, but exempt from the approach.
+  /// The end of a move that left the finger (a curvature-stretched slide overshoots on purpose,
+  /// and the moves after it usually win the distance back), or a point the retrace walks back
+  /// over. Swept clear like every segment, but exempt from the approach.
   Trial,
 };
 
@@ -59,7 +60,7 @@ struct MoveRecord
       overflowed = true;
     }
   }
-  /// Marks the last point recorded as a trial (a judging move whose stretch is being undone).
+  /// Marks the last point recorded as a trial (the solver judges a move after recording it).
   void markLastTrial()
   {
     if (count > 0)

@@ -787,9 +787,9 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     updateStage(tick, result);
     if (atLocalMinimum(tick))
     {
-      if (retracedUnpaidTrials(tick))
+      if (retracedTrials(tick))
       {
-        continue; // a stretch led to a minimum farther than where it began: seek on from there
+        continue; // a minimum farther than the last accepted point: seek on from that point
       }
       break;
     }
@@ -798,36 +798,35 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
     const Vec3 goal = m_proxy + step;
     if (tick.blocked.repeats(goal) || outOfWork(tick, result))
     {
-      if (retracedUnpaidTrials(tick))
+      if (retracedTrials(tick))
       {
         solveAtProxy(tick, result); // the contacts are those where the retrace ended
       }
       break;
     }
-    if (stretched && !tick.trials.pending())
-    {
-      tick.trials.accept(m_proxy, norm(tick.shading.target() - m_proxy));
-    }
-    const double distanceBefore = moveStage(tick, goal, stretched, result);
+    const double distanceBefore = moveStage(tick, goal, result);
     if (reachedTarget(tick, result))
     {
-      retracedUnpaidTrials(tick); // at the target: never farther, so this only accepts
+      judgeMove(tick); // at the target: never farther than the accepted point
       break;
+    }
+    if (judgeMove(tick))
+    {
+      continue; // the trial chain filled up without coming nearer: walked back
     }
     if (stretched)
     {
-      tick.trials.addTrial(m_proxy);
       tick.stretch.awaitPayoff(tick.solution.numActive, distanceBefore);
       continue;
     }
     const double toTarget = norm(tick.shading.target() - m_proxy);
     tick.stretch.judgePayoff(toTarget, tick.stepTolerance);
-    if (retracedUnpaidTrials(tick))
-    {
-      continue;
-    }
     if (stopsWithoutProgress(tick, toTarget, distanceBefore, result))
     {
+      if (retracedTrials(tick))
+      {
+        solveAtProxy(tick, result);
+      }
       break;
     }
   }
@@ -835,32 +834,41 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   return result;
 }
 
-bool ProxySolver::retracedUnpaidTrials(ProxyTickState& tick)
+bool ProxySolver::judgeMove(ProxyTickState& tick)
+{
+  TrialChain& trials = tick.trials;
+  const double toTarget = norm(tick.shading.target() - m_proxy);
+  // Shading and friction send the proxy elsewhere than the finger on purpose (and never stretch):
+  // their moves are not judged by the approach. A skin's rounding is no retreat: without it a
+  // slide that ends 1e-18 m farther was walked back, changing traces for nothing.
+  if (!(toTarget > trials.acceptedDistance() + m_skin) || tick.shading.used() || m_anyFriction)
+  {
+    trials.accept(m_proxy, std::min(toTarget, trials.acceptedDistance()));
+    return false;
+  }
+  trials.addTrial(m_proxy);
+  if (m_moveRecord != nullptr)
+  {
+    m_moveRecord->markLastTrial();
+  }
+  return trials.full() && retracedTrials(tick);
+}
+
+bool ProxySolver::retracedTrials(ProxyTickState& tick)
 {
   TrialChain& trials = tick.trials;
   if (!trials.pending())
   {
     return false;
   }
-  const double toTarget = norm(tick.shading.target() - m_proxy);
-  if (!(toTarget > trials.acceptedDistance()))
-  {
-    trials.accept(m_proxy, toTarget);
-    if (m_moveRecord != nullptr && m_moveRecord->count > 0)
-    {
-      m_moveRecord->points[m_moveRecord->count - 1].kind = MovePointKind::Accepted;
-    }
-    return false;
-  }
-  // The stretches did not pay off: walk back over their segments (each swept clear on the way
-  // out, so no sweep is needed) to where they began, and go on with plain slides, which only
-  // ever approach the finger. Without this a stretch could carry the proxy over a ridge of the
-  // configuration-space surface into another basin, and the tick ended at a minimum farther from
-  // the finger than where it began (shared bunny probe path, tick 2630: 4.2e-6 m).
+  // The proxy is farther from the target than the last accepted point: walk back over the
+  // trials' segments (each swept clear on the way out, so no sweep is needed) to that point, and
+  // go on with plain slides. Without this a stretched slide could carry the proxy over a ridge of
+  // the configuration-space surface into another basin, and the tick ended at a minimum farther
+  // from the finger than where it began (shared bunny probe path, tick 2630: 4.2e-6 m).
   if (m_moveRecord != nullptr)
   {
-    m_moveRecord->markLastTrial();
-    for (int k = trials.numTrials() - 1; k >= 0; --k)
+    for (int k = trials.numTrials() - 2; k >= 0; --k)
     {
       m_moveRecord->add(trials.trial(k), MovePointKind::Trial);
     }
@@ -931,7 +939,7 @@ Vec3 ProxySolver::nextStep(const ProxyTickState& tick) const
 {
   // The Newton stretch and the no-progress rule assume the proxy seeks the finger; a shaded
   // surface sends it elsewhere on purpose.
-  if (!tick.stretch.allowed() || tick.trials.full() || tick.shading.used() || m_anyFriction)
+  if (!tick.stretch.allowed() || tick.shading.used() || m_anyFriction)
   {
     return tick.solution.displacement;
   }
@@ -954,8 +962,7 @@ bool ProxySolver::outOfWork(const ProxyTickState& tick, ProxyTickResult& result)
   return false;
 }
 
-double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, bool stretched,
-                              ProxyTickResult& result)
+double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result)
 {
   // Move stage (2.1): sweep toward the goal and stop at the first contact.
   ++result.iterations;
@@ -970,7 +977,7 @@ double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, bool stret
   tick.viscous.spend(before, m_proxy);
   if (m_moveRecord != nullptr)
   {
-    m_moveRecord->add(m_proxy, stretched ? MovePointKind::Trial : MovePointKind::Accepted);
+    m_moveRecord->add(m_proxy, MovePointKind::Accepted); // judgeMove marks a trial
   }
   return norm(tick.shading.target() - before);
 }

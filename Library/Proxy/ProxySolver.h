@@ -203,12 +203,15 @@ private:
   bool outOfWork(const ProxyTickState& tick, ProxyTickResult& result) const;
   /// Move stage (2.1): sweeps toward `goal` and stops at the first contact. Returns how far the
   /// proxy was from the target before the move.
-  double moveStage(ProxyTickState& tick, const Vec3& goal, bool stretched, ProxyTickResult& result);
-  /// After a plain move, or at a stop, with stretched slides (trials) since the last accepted
-  /// point: if the proxy is farther from the target than that point, walks back to it along the
-  /// trials' segments, forbids stretching for the rest of the tick and returns true; otherwise
-  /// accepts where the proxy is (TrialChain, ProxyTickState.h).
-  bool retracedUnpaidTrials(ProxyTickState& tick);
+  double moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickResult& result);
+  /// After a move: accepts the proxy's position if it is no farther from the target than the last
+  /// accepted point, or else adds it to the trial chain (TrialChain, ProxyTickState.h); a full
+  /// chain is walked back at once. Returns true when it walked back.
+  bool judgeMove(ProxyTickState& tick);
+  /// At a stop with trials pending (the proxy farther from the target than the last accepted
+  /// point): walks back along the trials' segments to that point, forbids stretching for the rest
+  /// of the tick and returns true; with none pending, false.
+  bool retracedTrials(ProxyTickState& tick);
   /// The planes at the proxy and the goal there, for a tick that ends where it is.
   void solveAtProxy(ProxyTickState& tick, ProxyTickResult& result);
   /// Stop rule: the proxy reached a target that no longer moves.

@@ -160,17 +160,18 @@ private:
   double m_distanceBefore = -1.0; // negative: no stretch awaits its payoff
 };
 
-/// The most curvature-stretched slides a tick makes in a row before a plain slide judges them
+/// The most moves a tick makes in a row farther from the target than its last accepted point
 /// (TrialChain): a retrace walks back over at most this many points.
 inline constexpr int kMaxTrialChain = 32;
 
 /// The tick's approach to the finger, kept exact in spite of the curvature stretch. A stretched
-/// slide is a trial: it may end farther from the target than it began (it overshoots along the
-/// tangent plane so that the next move falls onto the curved surface). The last accepted point is
-/// where the tick was before the trials; the plain move after them is accepted only if it ends no
-/// farther from the target than that point. Otherwise the proxy walks back along the trials'
-/// segments, which were swept clear, to the accepted point (a retrace): a tick never ends farther
-/// from the finger than it began, and the accepted points approach it monotonically.
+/// slide overshoots along the tangent plane so that the next move falls onto the curved surface,
+/// and may end farther from the target than it began; the moves after it usually win that back.
+/// So a move that ends no farther from the target than the last accepted point is accepted, and
+/// one that ends farther is a trial. If the tick would stop with trials pending, or makes
+/// kMaxTrialChain of them in a row, the proxy walks back along the trials' segments, which were
+/// swept clear, to the accepted point (a retrace) and goes on without stretching: a tick never
+/// ends farther from the finger than it began, and its accepted points approach it monotonically.
 class TrialChain
 {
 public:
@@ -187,10 +188,10 @@ public:
   /// The k-th trial end since the accepted point (0: the first).
   const Vec3& trial(int k) const { return m_trials[k]; }
 
-  /// A stretched slide ended at `end`.
+  /// A move ended at `end`, farther than the accepted point.
   void addTrial(const Vec3& end) { m_trials[m_numTrials++] = end; }
-  /// The proxy is at `position`, `distanceToTarget` from the target, no farther than the
-  /// accepted point: it becomes the accepted point.
+  /// The proxy is at `position`, no farther from the target than the accepted point (within a
+  /// skin's rounding): it becomes the accepted point, `distanceToTarget` away.
   void accept(const Vec3& position, double distanceToTarget)
   {
     m_accepted = position;

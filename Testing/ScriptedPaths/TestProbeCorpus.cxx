@@ -245,9 +245,9 @@ namespace
 // see it; SharedProbePaths never sees it, since its window is 1.5 s around 5.08 s. Its third move,
 // a curvature-stretched slide of 0.5 mm, ends 8.0e-6 m farther from the finger than it began
 // (0.0140280365 -> 0.0140360474 m), and the seven moves after it won back only 3.8e-6 m: the tick
-// ended 4.2e-6 m farther, failing the approach rule (g). The solver now judges stretched slides as
-// trials and walks back over those that do not pay off (TrialChain); the oracle checks the
-// recorded chain (g') as well as the tick's end.
+// ended 4.2e-6 m farther, failing the approach rule (g). The solver now keeps moves that end
+// farther than the last accepted point as trials and walks back over them when the tick would
+// stop there (TrialChain); the oracle checks the recorded chain (g') as well as the tick's end.
 TEST(SharedProbePathTicks, BunnyTick2630EndsNoFartherFromTheFinger)
 {
   const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/stanford-bunny.obj";
@@ -264,7 +264,19 @@ TEST(SharedProbePathTicks, BunnyTick2630EndsNoFartherFromTheFinger)
   ProxySolver solver;
   solver.setScene(&scene, parameters);
   solver.resetProxy(before);
+  MoveRecord record;
+  solver.recordMoves(&record);
   const ProxyTickResult result = solver.update(finger);
+  // The tick walks back over moves that ended farther than where it began (a retrace): the record
+  // holds them as trials, and the tick ends on an accepted point.
+  std::size_t trials = 0;
+  for (std::size_t k = 0; k < record.count; ++k)
+  {
+    trials += record.points[k].kind == MovePointKind::Trial ? 1 : 0;
+  }
+  EXPECT_GT(trials, 0u);
+  EXPECT_EQ(record.points[record.count - 1].kind, MovePointKind::Accepted);
+  EXPECT_EQ(record.points[record.count - 1].position, result.proxy);
   const oracle::MeshOracle meshOracle(scene);
   oracle::TickChecker checker(meshOracle, scene, parameters,
                               oracle::OracleSettings::forScene(scene.diagonal(), solver.skin()));
