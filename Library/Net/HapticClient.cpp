@@ -116,11 +116,19 @@ struct HapticClient::Impl
   // cancels.
   std::unique_ptr<grpc::ClientContext> streamContext;
   mutable std::mutex streamMutex;
-  std::condition_variable streamEnded;
-  bool streamRunning = false;
   std::string streamEnd;
   bool stopAsked = false;
   std::uint32_t streamReconnections = 0;
+
+  // waitForEnd's: the stream's and the ownership's ends are told here, after their own state.
+  std::mutex endMutex;
+  std::condition_variable endChanged;
+  bool interrupted = false;
+  void notifyEnd()
+  {
+    const std::lock_guard<std::mutex> lock(endMutex);
+    endChanged.notify_all();
+  }
 
   void addToken(grpc::ClientContext& context) const
   {
@@ -196,15 +204,18 @@ struct HapticClient::Impl
       callEnding = true;
     }
     const grpc::Status status = ownershipCall->Finish();
-    const std::lock_guard<std::mutex> lock(ownershipMutex);
-    owns = false;
-    if (!releasing && ownershipEnd.empty())
     {
-      ownershipEnd = "its ownership ended when its connection to the server dropped (" +
-                     (status.ok() ? std::string("the server stopped") : status.error_message()) +
-                     "): the server went away or restarted, and a restarted proxima serve starts "
-                     "without the model";
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
+      owns = false;
+      if (!releasing && ownershipEnd.empty())
+      {
+        ownershipEnd = "its ownership ended when its connection to the server dropped (" +
+                       (status.ok() ? std::string("the server stopped") : status.error_message()) +
+                       "): the server went away or restarted, and a restarted proxima serve "
+                       "starts without the model";
+      }
     }
+    notifyEnd();
   }
   void releaseOwnership()
   {
@@ -241,6 +252,7 @@ struct HapticClient::Impl
         ownershipEnd = why;
       }
     }
+    notifyEnd();
     throw OwnershipEnded("--server", "the server at " + server +
                                        ": this client no longer owns the model: " + why +
                                        " (claimOwnership() claims it again, if no other client "
@@ -596,7 +608,6 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
   {
     const std::lock_guard<std::mutex> lock(impl.streamMutex);
     impl.stopAsked = false;
-    impl.streamRunning = true;
     impl.streamEnd.clear();
     impl.streamReconnections = 0;
   }
@@ -722,13 +733,14 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         }
         break;
       }
-      const std::lock_guard<std::mutex> lock(impl.streamMutex);
-      if (!impl.stopAsked)
       {
-        impl.streamEnd = end;
+        const std::lock_guard<std::mutex> lock(impl.streamMutex);
+        if (!impl.stopAsked)
+        {
+          impl.streamEnd = end;
+        }
       }
-      impl.streamRunning = false;
-      impl.streamEnded.notify_all();
+      impl.notifyEnd();
     });
 }
 
@@ -738,11 +750,23 @@ std::string HapticClient::stateStreamEnd() const
   return m_impl->streamEnd;
 }
 
-std::string HapticClient::waitForStateStreamEnd(std::chrono::steady_clock::time_point deadline)
+std::string HapticClient::waitForEnd(std::chrono::steady_clock::time_point deadline)
 {
-  std::unique_lock<std::mutex> lock(m_impl->streamMutex);
-  m_impl->streamEnded.wait_until(lock, deadline, [this] { return !m_impl->streamRunning; });
-  return m_impl->streamEnd;
+  const auto ended = [this] {
+    const std::string stream = stateStreamEnd();
+    return stream.empty() ? ownershipEnd() : stream;
+  };
+  std::unique_lock<std::mutex> lock(m_impl->endMutex);
+  m_impl->endChanged.wait_until(lock, deadline,
+                                [&] { return m_impl->interrupted || !ended().empty(); });
+  return ended();
+}
+
+void HapticClient::interruptWait()
+{
+  const std::lock_guard<std::mutex> lock(m_impl->endMutex);
+  m_impl->interrupted = true;
+  m_impl->endChanged.notify_all();
 }
 
 std::uint32_t HapticClient::stateStreamReconnections() const

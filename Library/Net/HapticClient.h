@@ -200,8 +200,12 @@ public:
   /// Why the stream ended by itself (the server went away, refused the rate...), empty while it
   /// runs or after stopStateStream asked it to end. Any thread.
   std::string stateStreamEnd() const;
-  /// Waits until the stream ends by itself or `deadline` passes; returns stateStreamEnd().
-  std::string waitForStateStreamEnd(std::chrono::steady_clock::time_point deadline);
+  /// Waits until the stream ends by itself, or this owner's ownership ends, or `deadline` passes;
+  /// returns why it ended (stateStreamEnd(), else ownershipEnd()), empty at the deadline.
+  std::string waitForEnd(std::chrono::steady_clock::time_point deadline);
+  /// Makes waitForEnd return now and from then on, as at its deadline (any thread: a thread that
+  /// waits for a stop signal, say).
+  void interruptWait();
   /// How many times the stream has come back after its server went away. Any thread.
   std::uint32_t stateStreamReconnections() const;
   /// Ends the stream and waits for its thread. Returns why it ended if not asked to (the server

@@ -400,7 +400,7 @@ TEST_F(LiveServer, AClientGivesUpOnAServerThatDoesNotComeBack)
   follow(observer, seen, 200.0);
   ASSERT_TRUE(seen.waitFor([](const Collected& c) { return !c.samples.empty(); }));
   m_server->shutdown();
-  const std::string ended = observer.waitForStateStreamEnd(std::chrono::steady_clock::now() + 60s);
+  const std::string ended = observer.waitForEnd(std::chrono::steady_clock::now() + 60s);
   EXPECT_EQ(observer.stopStateStream(), ended);
   std::printf("[ gave up  ] %s\n", ended.c_str());
   EXPECT_NE(ended.find("did not come back within 0.3 s"), std::string::npos) << ended;
