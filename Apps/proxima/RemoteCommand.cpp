@@ -399,7 +399,8 @@ Command addRemoteCommand(CLI::App& parent)
     ->excludes(sceneOption);
   uploadApp
     ->add_option("--follow", options->follow,
-                 "Seconds to stream the server's state after the model is live")
+                 "Seconds to stream the server's state after the model is live (SIGINT or "
+                 "SIGTERM ends it early, with the summary)")
     ->check(numberIn(ParameterRange{0.0, false, 86400.0, " s"}));
   uploadApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
     ->check(numberIn(ParameterRange{1.0, false, 1000.0, " Hz"}));
@@ -407,7 +408,10 @@ Command addRemoteCommand(CLI::App& parent)
   CLI::App* followApp = app->add_subcommand(
     "follow", "Follow the state of a proxima serve --device as an observer (another client may "
               "own its model)");
-  followApp->add_option("--follow", options->follow, "Seconds to stream the server's state")
+  followApp
+    ->add_option("--follow", options->follow,
+                 "Seconds to stream the server's state (SIGINT or SIGTERM ends it early, with the "
+                 "summary)")
     ->required()
     ->check(numberIn(ParameterRange{0.0, true, 86400.0, " s"}));
   followApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
