@@ -689,6 +689,14 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
           const bool answered = reader->Read(&message);
           waiting->TryCancel();
           const grpc::Status status = reader->Finish();
+          if (!answered && status.error_code() == grpc::StatusCode::UNAVAILABLE &&
+              reconnection.failed())
+          {
+            // Refused by a server that is closing its connection: wait for the channel to notice,
+            // then wait for the server again.
+            reconnection.pauseWhileReady();
+            continue;
+          }
           if (!answered)
           {
             end = status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED ||

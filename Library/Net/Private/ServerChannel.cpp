@@ -91,16 +91,21 @@ bool Reconnection::failed()
   return true;
 }
 
-bool Reconnection::waitForServer()
+void Reconnection::pauseWhileReady()
 {
-  const auto now = std::chrono::system_clock::now();
   if (m_channel.GetState(false) == GRPC_CHANNEL_READY)
   {
     // The call failed on a connection that still looks ready (the server was closing it): give
     // the channel until the next backoff to notice, so that calls are not made again at once.
-    m_channel.WaitForStateChange(GRPC_CHANNEL_READY, std::min(now + m_backoff, m_deadline));
+    m_channel.WaitForStateChange(
+      GRPC_CHANNEL_READY, std::min(std::chrono::system_clock::now() + m_backoff, m_deadline));
     m_backoff = std::min(m_backoff * 2, m_policy.maxBackoff);
   }
+}
+
+bool Reconnection::waitForServer()
+{
+  pauseWhileReady();
   // gRPC connects again on its own backoff (connectToServer's channel arguments); this wakes on
   // its state changes, and at the deadline.
   return m_channel.WaitForConnected(m_deadline);

@@ -35,6 +35,10 @@ public:
   /// After failed(): waits until the channel is connected again (true) or the deadline passes
   /// (false: give up).
   bool waitForServer();
+  /// After failed(), for a caller that waits on a call of its own (wait_for_ready): when the
+  /// channel still looks ready (a server that is closing its connection refused the call), waits
+  /// for it to change, at most until the next backoff (50 ms doubling to the policy's maximum).
+  void pauseWhileReady();
   /// A call went through: the next failure starts a new wait.
   void succeeded() { m_waiting = false; }
   /// Whether a wait is under way (a call failed and none has gone through since).

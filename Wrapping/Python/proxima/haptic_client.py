@@ -369,7 +369,7 @@ class _Wait:
     seconds from the first failure until a call goes through."""
 
     def __init__(self, client):
-        self.client, self.deadline = client, None
+        self.client, self.deadline, self.backoff = client, None, FIRST_BACKOFF_MS / 1000.0
 
     @property
     def waiting(self):
@@ -378,14 +378,36 @@ class _Wait:
     def succeeded(self):
         self.deadline = None
 
+    def _pause_while_ready(self, left):
+        """A call refused on a connection that still looks ready (a server closing it): wait for
+        the channel to leave READY, at most the next backoff, so that calls are not made again
+        at once."""
+        known, changed, states = threading.Event(), threading.Event(), []
+
+        def seen(state):  # called at once with the state, then on each change
+            states.append(state)
+            known.set()
+            if state != grpc.ChannelConnectivity.READY:
+                changed.set()
+        self.client._channel.subscribe(seen)
+        try:
+            known.wait(left)
+            if states and states[0] == grpc.ChannelConnectivity.READY:
+                changed.wait(min(self.backoff, left))
+                self.backoff = min(2 * self.backoff, MAX_BACKOFF_MS / 1000.0)
+        finally:
+            self.client._channel.unsubscribe(seen)
+
     def until_ready(self, error):
         client = self.client
         if self.deadline is None:
             self.deadline = time.monotonic() + client.reconnect
         left = self.deadline - time.monotonic()
         if client.reconnect > 0 and left > 0:
+            self._pause_while_ready(left)
             try:
-                grpc.channel_ready_future(client._channel).result(timeout=left)
+                grpc.channel_ready_future(client._channel).result(
+                    timeout=max(self.deadline - time.monotonic(), 0.0))
                 return
             except grpc.FutureTimeoutError:
                 pass
