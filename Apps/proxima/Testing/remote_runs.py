@@ -96,8 +96,14 @@ class HoldingProxy:
         if limit is not None and passed >= limit:
             self.holding.set()
             self.drop.wait()
-            # A reset, as when the server's process dies: the client learns it at once.
-            sink.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, b"\x01\0\0\0\0\0\0\0")
+            # Closed as when the server's process dies. shutdown, not only close: the other
+            # direction's thread still reads from the client, and a socket is not closed while it
+            # does; shutdown ends both directions at once and wakes that thread.
+            for end in (sink, source):
+                try:
+                    end.shutdown(socket.SHUT_RDWR)
+                except OSError:
+                    pass
         for end in (source, sink):
             try:
                 end.close()
