@@ -23,12 +23,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
+
+#include <pthread.h>
+#include <signal.h>
 
 namespace proxima::cli
 {
@@ -39,6 +44,8 @@ struct RemoteOptions
   std::string server;
   std::string tokenFile;
   std::string tlsRoots;
+  // Seconds a client waits for a server that went away to come back (ReconnectPolicy::maxWait).
+  double reconnect = 10.0;
   SceneOptions scene;
   std::string out;
   std::string summary;
@@ -74,14 +81,62 @@ ServerConnection connection(const RemoteOptions& options)
   out.token = options.tokenFile.empty() ? "" : readTokenFile(options.tokenFile);
   out.tlsRootCertificates =
     options.tlsRoots.empty() ? "" : readPemFile(options.tlsRoots, "certificate");
+  out.reconnect.maxWait = std::chrono::milliseconds(std::llround(options.reconnect * 1000.0));
   return out;
 }
 
+// SIGINT and SIGTERM end a --follow early, as its end would (the state and the summary are
+// written): blocked before gRPC starts its threads, which inherit the mask (as proxima serve
+// does), and waited for by a thread of this command's, which interrupts the client's wait.
+class StopSignals
+{
+public:
+  StopSignals()
+  {
+    sigemptyset(&m_signals);
+    sigaddset(&m_signals, SIGINT);
+    sigaddset(&m_signals, SIGTERM);
+    // The command's own signal to the waiting thread that it is done.
+    sigaddset(&m_signals, SIGUSR1);
+    pthread_sigmask(SIG_BLOCK, &m_signals, nullptr);
+  }
+  ~StopSignals() { stopWatching(); }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+  /// Until stopWatching, a stop signal interrupts `client`'s waitForEnd.
+  void watch(HapticClient& client)
+  {
+    m_thread = std::thread([this, &client] {
+      int signal = 0;
+      sigwait(&m_signals, &signal);
+      if (signal != SIGUSR1)
+      {
+        client.interruptWait();
+      }
+    });
+  }
+  void stopWatching()
+  {
+    if (m_thread.joinable())
+    {
+      pthread_kill(m_thread.native_handle(), SIGUSR1);
+      m_thread.join();
+    }
+  }
+
+private:
+  sigset_t m_signals;
+  std::thread m_thread;
+};
+
 // Streams the server's state for --follow seconds into `summary` (samples, dropped, latency,
-// touches) and, with --state-out, the CSV. A server that goes away is an error at once, not after
-// the rest of --follow.
+// touches, reconnections) and, with --state-out, the CSV. A server that goes away is waited for
+// (--reconnect) and followed again when it answers; one that does not come back is an error as
+// soon as the client gives up, not after the rest of --follow. An owner whose ownership ends (its
+// server went away: a restarted server starts without the uploaded model) is told so at once.
 void followState(HapticClient& client, const RemoteOptions& options,
-                 nlohmann::ordered_json& summary)
+                 nlohmann::ordered_json& summary, StopSignals* stopSignals)
 {
   std::mutex mutex;
   std::ostringstream rows;
@@ -91,12 +146,30 @@ void followState(HapticClient& client, const RemoteOptions& options,
   std::vector<double> latencies;
   nlohmann::ordered_json touches = nlohmann::ordered_json::array();
   std::uint64_t dropped = 0;
+  std::uint32_t reconnections = 0;
+  std::int64_t lastReceived = 0;
   if (options.follow > 0.0)
   {
     client.startStateStream(
       options.sampleRate,
       [&](const LiveSample& sample) {
         const std::lock_guard<std::mutex> lock(mutex);
+        // Said on standard error as it happens: a script may wait for these lines.
+        if (samples == 0)
+        {
+          std::cerr << "proxima remote: following the server at " << options.server << "\n";
+        }
+        if (sample.reconnections != reconnections)
+        {
+          reconnections = sample.reconnections;
+          char gap[32];
+          std::snprintf(gap, sizeof gap, "%.3f",
+                        static_cast<double>(sample.receivedNanoseconds - lastReceived) / 1e9);
+          std::cerr << "proxima remote: the server at " << options.server
+                    << " answers again; following on (reconnection " << reconnections << ", " << gap
+                    << " s without samples)\n";
+        }
+        lastReceived = sample.receivedNanoseconds;
         rows << stateRow(sample);
         ++samples;
         latencies.push_back(
@@ -107,16 +180,32 @@ void followState(HapticClient& client, const RemoteOptions& options,
         const std::lock_guard<std::mutex> lock(mutex);
         touches.push_back({{"t", touch.time}, {"shape", touch.shape}, {"touched", touch.touched}});
       });
-    const auto end =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(options.follow);
-    while (std::chrono::steady_clock::now() < end && client.stateStreamEnd().empty())
+    const auto end = std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                       std::chrono::duration<double>(options.follow));
+    if (stopSignals != nullptr)
     {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      stopSignals->watch(client);
+    }
+    client.waitForEnd(end);
+    if (stopSignals != nullptr)
+    {
+      stopSignals->stopWatching();
     }
     const std::string ended = client.stopStateStream();
+    // An upload's model is gone with its ownership (a restarted server starts without it): said
+    // at once, whether or not the stream has come back.
+    if (client.role() == HapticClientRole::Owner && !client.ownsModel())
+    {
+      throw OwnershipEnded("--server",
+                           "the server at " + options.server +
+                             ": this client no longer owns the model: " + client.ownershipEnd());
+    }
     if (!ended.empty())
     {
-      throw InputError("--server", "the server at " + options.server + ": " + ended);
+      throw InputError("--server", ended.rfind("the server at ", 0) == 0
+                                     ? ended
+                                     : "the server at " + options.server + ": " + ended);
     }
   }
   if (!options.stateOut.empty())
@@ -135,6 +224,7 @@ void followState(HapticClient& client, const RemoteOptions& options,
     summary["latency_ms"] = {{"median", at(0.5)}, {"p99", at(0.99)}, {"max", latencies.back()}};
   }
   summary["touches"] = touches;
+  summary["reconnections"] = client.stateStreamReconnections();
 }
 
 void requireFollowForStateOut(const RemoteOptions& options)
@@ -153,6 +243,9 @@ int upload(const RemoteOptions& options)
   {
     throw InputError("--mesh", "upload needs the model: give --mesh FILE or --scene FILE");
   }
+  // Only a --follow ends on SIGINT with its summary; an upload alone ends as any command does.
+  std::unique_ptr<StopSignals> stopSignals =
+    options.follow > 0.0 ? std::make_unique<StopSignals>() : nullptr;
   HapticClient client(connection(options));
   if (!options.uploadScene.empty())
   {
@@ -170,7 +263,7 @@ int upload(const RemoteOptions& options)
   summary["triangles"] = receipt.triangles;
   summary["build_ms"] = receipt.buildMilliseconds;
   summary["live_ms"] = receipt.liveMilliseconds;
-  followState(client, options, summary);
+  followState(client, options, summary, stopSignals.get());
   writeStandardOutput(summary.dump(2) + "\n");
   return kExitOk;
 }
@@ -179,10 +272,11 @@ int upload(const RemoteOptions& options)
 int follow(const RemoteOptions& options)
 {
   requireFollowForStateOut(options);
+  auto stopSignals = std::make_unique<StopSignals>();
   HapticClient client(connection(options), HapticClientRole::Observer);
   nlohmann::ordered_json summary;
   summary["server"] = options.server;
-  followState(client, options, summary);
+  followState(client, options, summary, stopSignals.get());
   writeStandardOutput(summary.dump(2) + "\n");
   return kExitOk;
 }
@@ -203,23 +297,40 @@ int runRemote(const RemoteOptions& options)
   request.maxTicks = options.maxTicks;
   request.traceName = options.out;
   const ServerConnection server = connection(options);
-  TraceWriter trace(options.out);
+  auto trace = std::make_unique<TraceWriter>(options.out);
   // The bodies' poses come back from the server beside the ticks, written here as a local run
   // writes them.
   std::unique_ptr<BodyPoseWriter> poses;
+  const auto startPoses = [&] {
+    if (!options.bodiesOut.empty())
+    {
+      poses = std::make_unique<BodyPoseWriter>(options.bodiesOut);
+    }
+  };
+  startPoses();
   std::function<void(const BodyPoseRow&)> onBodyPose;
-  if (!options.bodiesOut.empty())
+  if (poses != nullptr)
   {
-    poses = std::make_unique<BodyPoseWriter>(options.bodiesOut);
     onBodyPose = [&poses](const BodyPoseRow& row) {
       poses->write(row.tick, row.time, row.object, row.position, row.orientation,
                    &row.jointPosition);
     };
   }
+  // A server that went away mid-run and came back plays the run again from its start: the rows
+  // written so far go (each writer's temporary file is removed), and the run says so.
+  const auto restart = [&] {
+    std::cerr << "proxima remote: the server at " << options.server
+              << " went away mid-run and answers again: playing the run again from its start\n";
+    trace.reset();
+    trace = std::make_unique<TraceWriter>(options.out);
+    poses.reset();
+    startPoses();
+  };
   const std::string summary = runRemotely(
-    server, request, [&trace](const HapticState& state) { trace.write(state); }, onBodyPose);
+    server, request, [&trace](const HapticState& state) { trace->write(state); }, onBodyPose,
+    restart);
   // As a local run: the trace and the poses are put in place last, once the summary is written.
-  trace.finish();
+  trace->finish();
   if (poses != nullptr)
   {
     poses->finish();
@@ -228,7 +339,7 @@ int runRemote(const RemoteOptions& options)
   {
     writeFileAtomically(options.summary, summary);
   }
-  trace.close();
+  trace->close();
   if (poses != nullptr)
   {
     poses->close();
@@ -248,6 +359,14 @@ Command addRemoteCommand(CLI::App& parent)
   app->add_option("--tls-ca", options->tlsRoots,
                   "PEM certificates that sign the server's (proxima serve --tls-cert): connect "
                   "over TLS");
+  app
+    ->add_option("--reconnect", options->reconnect,
+                 "Seconds to wait for a server that went away (a restart) to answer again before "
+                 "giving up (default 10; 0: fail at once). Meanwhile calls are made again as gRPC "
+                 "reconnects, 50 ms after the failure and then at intervals growing to 2 s; a "
+                 "run is played again from its start, a follower follows on, and an owner is "
+                 "told that it no longer owns the model")
+    ->check(numberIn(ParameterRange{0.0, false, 3600.0, " s"}));
   app->require_subcommand(1);
   CLI::App* run = app->add_subcommand(
     "run", "Play a finger path through a mesh or a scene on the server, as proxima run does here");
@@ -280,7 +399,8 @@ Command addRemoteCommand(CLI::App& parent)
     ->excludes(sceneOption);
   uploadApp
     ->add_option("--follow", options->follow,
-                 "Seconds to stream the server's state after the model is live")
+                 "Seconds to stream the server's state after the model is live (SIGINT or "
+                 "SIGTERM ends it early, with the summary)")
     ->check(numberIn(ParameterRange{0.0, false, 86400.0, " s"}));
   uploadApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")
     ->check(numberIn(ParameterRange{1.0, false, 1000.0, " Hz"}));
@@ -288,7 +408,10 @@ Command addRemoteCommand(CLI::App& parent)
   CLI::App* followApp = app->add_subcommand(
     "follow", "Follow the state of a proxima serve --device as an observer (another client may "
               "own its model)");
-  followApp->add_option("--follow", options->follow, "Seconds to stream the server's state")
+  followApp
+    ->add_option("--follow", options->follow,
+                 "Seconds to stream the server's state (SIGINT or SIGTERM ends it early, with the "
+                 "summary)")
     ->required()
     ->check(numberIn(ParameterRange{0.0, true, 86400.0, " s"}));
   followApp->add_option("--rate", options->sampleRate, "State samples per second (1 to 1000)")

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -78,16 +79,26 @@ void throwForStatus(const grpc::Status& status, const std::string& server)
 
 struct HapticClient::Impl
 {
+  ServerConnection connection;
   std::string server;
   std::string token;
   HapticClientRole role = HapticClientRole::Owner;
   std::shared_ptr<grpc::Channel> channel;
   std::unique_ptr<net::HapticServer::Stub> stub;
-  // The ownership call, held open for the client's life (proxima_haptic.proto's HoldOwnership).
+  // The ownership call, held open for the ownership's life (proxima_haptic.proto's
+  // HoldOwnership), and the thread that waits for its end: the server never writes on it after
+  // the grant, so its end (the connection dropped, the server stopped or restarted) is the
+  // moment this client stops owning the model.
   std::unique_ptr<grpc::ClientContext> ownershipContext;
   std::unique_ptr<grpc::ClientReaderWriter<net::OwnershipRequest, net::OwnershipGrant>>
     ownershipCall;
+  std::thread ownershipWatch;
   std::string ownerKey;
+  mutable std::mutex ownershipMutex;
+  bool owns = false;
+  bool releasing = false;
+  bool callEnding = false;
+  std::string ownershipEnd;
 
   std::vector<RigidTransform> stack{RigidTransform{}};
   ShapeMaterialSpec material;
@@ -101,10 +112,23 @@ struct HapticClient::Impl
   TexCoord currentTexCoord;
 
   std::thread streamThread;
+  // The stream's call of the moment (a new one after each reconnection), which stopStateStream
+  // cancels.
   std::unique_ptr<grpc::ClientContext> streamContext;
-  std::mutex streamMutex;
+  mutable std::mutex streamMutex;
   std::string streamEnd;
   bool stopAsked = false;
+  std::uint32_t streamReconnections = 0;
+
+  // waitForEnd's: the stream's and the ownership's ends are told here, after their own state.
+  std::mutex endMutex;
+  std::condition_variable endChanged;
+  bool interrupted = false;
+  void notifyEnd()
+  {
+    const std::lock_guard<std::mutex> lock(endMutex);
+    endChanged.notify_all();
+  }
 
   void addToken(grpc::ClientContext& context) const
   {
@@ -113,7 +137,8 @@ struct HapticClient::Impl
       context.AddMetadata(detail::kTokenMetadata, token);
     }
   }
-  void holdOwnership()
+  // One HoldOwnership call: OK once the server has granted the ownership (and the watch runs).
+  grpc::Status tryHoldOwnership()
   {
     ownershipContext = std::make_unique<grpc::ClientContext>();
     addToken(*ownershipContext);
@@ -121,31 +146,191 @@ struct HapticClient::Impl
     net::OwnershipGrant grant;
     if (ownershipCall->Read(&grant))
     {
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
       ownerKey = grant.key();
-      return;
+      owns = true;
+      releasing = false;
+      callEnding = false;
+      ownershipEnd.clear();
+      ownershipWatch = std::thread([this] { watchOwnership(); });
+      return grpc::Status::OK;
+    }
+    grpc::Status status = ownershipCall->Finish();
+    ownershipCall.reset();
+    return status.ok() ? grpc::Status(grpc::StatusCode::UNKNOWN,
+                                      "the server ended the ownership call at once")
+                       : status;
+  }
+  // Claims the ownership; with `retry`, waits for a server that went away to come back
+  // (connection.reconnect). Throws InputError naming --server when it is refused or the server
+  // does not come back.
+  void holdOwnership(bool retry)
+  {
+    detail::Reconnection reconnection(connection, *channel);
+    for (;;)
+    {
+      const grpc::Status status = tryHoldOwnership();
+      if (status.ok())
+      {
+        return;
+      }
+      if (status.error_code() == grpc::StatusCode::UNAVAILABLE && retry)
+      {
+        if (reconnection.failed() && reconnection.waitForServer())
+        {
+          continue;
+        }
+        throw InputError("--server", reconnection.gaveUp(status.error_message()));
+      }
+      if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION)
+      {
+        throw InputError("--server",
+                         "the server at " + server +
+                           " refused to make this client the owner: " + status.error_message());
+      }
+      throwForStatus(status, server);
+      throw std::runtime_error("the server at " + server + " failed: " + status.error_message());
+    }
+  }
+  // On the watch's thread: returns when the ownership call ends.
+  void watchOwnership()
+  {
+    net::OwnershipGrant more;
+    while (ownershipCall->Read(&more))
+    {}
+    {
+      // From here on releaseOwnership does not touch the call: no WritesDone after Finish.
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
+      callEnding = true;
     }
     const grpc::Status status = ownershipCall->Finish();
-    ownershipCall.reset();
-    if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION)
     {
-      throw InputError("--server", "the server at " + server +
-                                     " refused to make this client the "
-                                     "owner: " +
-                                     status.error_message());
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
+      owns = false;
+      if (!releasing && ownershipEnd.empty())
+      {
+        ownershipEnd = "its ownership ended when its connection to the server dropped (" +
+                       (status.ok() ? std::string("the server stopped") : status.error_message()) +
+                       "): the server went away or restarted, and a restarted proxima serve "
+                       "starts without the model";
+      }
     }
-    throwForStatus(status, server);
-    throw std::runtime_error("the server at " + server + " ended the ownership call at once");
+    notifyEnd();
   }
   void releaseOwnership()
   {
     if (ownershipCall)
     {
-      // Ends this side; the call ends when the server has let go, so that another client may own
-      // the model as soon as this returns (or at once, when the server has gone).
-      ownershipCall->WritesDone();
-      ownershipCall->Finish();
+      {
+        const std::lock_guard<std::mutex> lock(ownershipMutex);
+        releasing = true;
+        if (!callEnding)
+        {
+          // Ends this side; the call ends when the server has let go, so that another client may
+          // own the model as soon as this returns (or at once, when the server has gone).
+          ownershipCall->WritesDone();
+        }
+      }
+      ownershipWatch.join();
       ownershipCall.reset();
     }
+  }
+  bool ownsModel() const
+  {
+    const std::lock_guard<std::mutex> lock(ownershipMutex);
+    return owns;
+  }
+  // Throws OwnershipEnded; from then on this client does not own the model, whatever its watch
+  // has seen yet (the server's refusal of its key can come first).
+  [[noreturn]] void throwOwnershipEnded(const std::string& why)
+  {
+    {
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
+      owns = false;
+      if (ownershipEnd.empty())
+      {
+        ownershipEnd = why;
+      }
+    }
+    notifyEnd();
+    throw OwnershipEnded("--server", "the server at " + server +
+                                       ": this client no longer owns the model: " + why +
+                                       " (claimOwnership() claims it again, if no other client "
+                                       "has; then commit the model again)");
+  }
+  // One UploadModel call with the pending shapes or scene.
+  grpc::Status sendModel(net::ModelReceipt& receipt)
+  {
+    grpc::ClientContext context;
+    addToken(context);
+    {
+      const std::lock_guard<std::mutex> lock(ownershipMutex);
+      context.AddMetadata(detail::kOwnerMetadata, ownerKey);
+    }
+    const auto writer = stub->UploadModel(&context, &receipt);
+    bool open = true;
+    if (scene)
+    {
+      net::ModelUpload upload;
+      *upload.mutable_scene() = *scene;
+      open = writer->Write(upload);
+    }
+    for (std::size_t index = 0; open && index < shapes.size(); ++index)
+    {
+      const PendingShape& shape = shapes[index];
+      const TriangleSoup& soup = shape.soup;
+      const std::size_t parts = std::max<std::size_t>(
+        1, (std::max(soup.points.size(), soup.triangles.size()) + kPartItems - 1) / kPartItems);
+      for (std::size_t p = 0; open && p < parts; ++p)
+      {
+        net::ModelUpload upload;
+        net::ShapePart& part = *upload.mutable_shape();
+        part.set_shape(static_cast<std::uint32_t>(index));
+        if (p == 0)
+        {
+          part.set_name(shape.name);
+          net::ShapeMaterial& sent = *part.mutable_material();
+          sent.set_stiffness(shape.material.stiffness);
+          sent.set_static_friction(shape.material.staticFriction);
+          sent.set_dynamic_friction(shape.material.dynamicFriction);
+          sent.set_viscosity(shape.material.viscosity);
+        }
+        const std::size_t begin = p * kPartItems;
+        for (std::size_t i = begin; i < std::min(soup.points.size(), begin + kPartItems); ++i)
+        {
+          part.add_points(soup.points[i].x);
+          part.add_points(soup.points[i].y);
+          part.add_points(soup.points[i].z);
+          if (!soup.pointNormals.empty())
+          {
+            part.add_normals(soup.pointNormals[i].x);
+            part.add_normals(soup.pointNormals[i].y);
+            part.add_normals(soup.pointNormals[i].z);
+          }
+          if (!soup.texCoords.empty())
+          {
+            part.add_texture_coordinates(soup.texCoords[i].u);
+            part.add_texture_coordinates(soup.texCoords[i].v);
+          }
+        }
+        for (std::size_t i = begin; i < std::min(soup.triangles.size(), begin + kPartItems); ++i)
+        {
+          for (const std::uint32_t corner : soup.triangles[i])
+          {
+            part.add_triangles(corner);
+          }
+        }
+        open = writer->Write(upload);
+      }
+    }
+    if (open)
+    {
+      net::ModelUpload commit;
+      commit.set_commit(true);
+      writer->Write(commit);
+    }
+    writer->WritesDone();
+    return writer->Finish();
   }
   RigidTransform& top() { return stack.back(); }
   void refuseBesideScene(const char* call) const
@@ -174,6 +359,7 @@ HapticClient::HapticClient(const std::string& server, const std::string& token)
 HapticClient::HapticClient(const ServerConnection& connection, HapticClientRole role)
   : m_impl(std::make_unique<Impl>())
 {
+  m_impl->connection = connection;
   m_impl->server = connection.server;
   m_impl->token = connection.token;
   m_impl->role = role;
@@ -181,7 +367,8 @@ HapticClient::HapticClient(const ServerConnection& connection, HapticClientRole 
   m_impl->stub = net::HapticServer::NewStub(m_impl->channel);
   if (role == HapticClientRole::Owner)
   {
-    m_impl->holdOwnership();
+    // The server has just answered: a refusal now is not a restart to wait out.
+    m_impl->holdOwnership(false);
   }
 }
 
@@ -189,6 +376,32 @@ HapticClient::~HapticClient()
 {
   stopStateStream();
   m_impl->releaseOwnership();
+}
+
+bool HapticClient::ownsModel() const
+{
+  return m_impl->ownsModel();
+}
+
+std::string HapticClient::ownershipEnd() const
+{
+  const std::lock_guard<std::mutex> lock(m_impl->ownershipMutex);
+  return m_impl->ownershipEnd;
+}
+
+void HapticClient::claimOwnership()
+{
+  if (m_impl->role == HapticClientRole::Observer)
+  {
+    throw std::logic_error("HapticClient::claimOwnership: this client observes");
+  }
+  if (m_impl->ownsModel())
+  {
+    return;
+  }
+  // The old call has ended (its watch saw it): join its thread before the next call's.
+  m_impl->releaseOwnership();
+  m_impl->holdOwnership(true);
 }
 
 HapticClientRole HapticClient::role() const
@@ -342,74 +555,40 @@ ModelReceiptInfo HapticClient::commit()
     throw std::logic_error("HapticClient::commit: this client observes; only the owner changes "
                            "the model");
   }
-  grpc::ClientContext context;
-  m_impl->addToken(context);
-  context.AddMetadata(detail::kOwnerMetadata, m_impl->ownerKey);
+  if (!m_impl->ownsModel())
+  {
+    m_impl->throwOwnershipEnded(ownershipEnd());
+  }
+  // A server that goes away during the upload (its connection drops) leaves its model as it was;
+  // once it answers again, the upload is made again. A server that restarted has lost this
+  // client's ownership with its connection, and refuses it in words.
+  detail::Reconnection reconnection(m_impl->connection, *m_impl->channel);
   net::ModelReceipt receipt;
-  const auto writer = m_impl->stub->UploadModel(&context, &receipt);
-  bool open = true;
-  if (m_impl->scene)
+  for (;;)
   {
-    net::ModelUpload upload;
-    *upload.mutable_scene() = *m_impl->scene;
-    open = writer->Write(upload);
-  }
-  for (std::size_t index = 0; open && index < m_impl->shapes.size(); ++index)
-  {
-    const PendingShape& shape = m_impl->shapes[index];
-    const TriangleSoup& soup = shape.soup;
-    const std::size_t parts = std::max<std::size_t>(
-      1, (std::max(soup.points.size(), soup.triangles.size()) + kPartItems - 1) / kPartItems);
-    for (std::size_t p = 0; open && p < parts; ++p)
+    const grpc::Status status = m_impl->sendModel(receipt);
+    if (status.error_code() == grpc::StatusCode::UNAVAILABLE)
     {
-      net::ModelUpload upload;
-      net::ShapePart& part = *upload.mutable_shape();
-      part.set_shape(static_cast<std::uint32_t>(index));
-      if (p == 0)
+      if (!reconnection.failed() || !reconnection.waitForServer())
       {
-        part.set_name(shape.name);
-        net::ShapeMaterial& material = *part.mutable_material();
-        material.set_stiffness(shape.material.stiffness);
-        material.set_static_friction(shape.material.staticFriction);
-        material.set_dynamic_friction(shape.material.dynamicFriction);
-        material.set_viscosity(shape.material.viscosity);
+        throw InputError("--server", reconnection.gaveUp(status.error_message()));
       }
-      const std::size_t begin = p * kPartItems;
-      for (std::size_t i = begin; i < std::min(soup.points.size(), begin + kPartItems); ++i)
+      if (!m_impl->ownsModel())
       {
-        part.add_points(soup.points[i].x);
-        part.add_points(soup.points[i].y);
-        part.add_points(soup.points[i].z);
-        if (!soup.pointNormals.empty())
-        {
-          part.add_normals(soup.pointNormals[i].x);
-          part.add_normals(soup.pointNormals[i].y);
-          part.add_normals(soup.pointNormals[i].z);
-        }
-        if (!soup.texCoords.empty())
-        {
-          part.add_texture_coordinates(soup.texCoords[i].u);
-          part.add_texture_coordinates(soup.texCoords[i].v);
-        }
+        // Connected again: the watch has seen the ownership call end with the old connection.
+        m_impl->throwOwnershipEnded(ownershipEnd());
       }
-      for (std::size_t i = begin; i < std::min(soup.triangles.size(), begin + kPartItems); ++i)
-      {
-        for (const std::uint32_t corner : soup.triangles[i])
-        {
-          part.add_triangles(corner);
-        }
-      }
-      open = writer->Write(upload);
+      continue;
     }
+    if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION)
+    {
+      // An owner's upload always carries its key: the server no longer takes it.
+      m_impl->throwOwnershipEnded("the server refused its key (its connection dropped, or the "
+                                  "server restarted, since the server granted it)");
+    }
+    throwForStatus(status, m_impl->server);
+    break;
   }
-  if (open)
-  {
-    net::ModelUpload commit;
-    commit.set_commit(true);
-    writer->Write(commit);
-  }
-  writer->WritesDone();
-  throwForStatus(writer->Finish(), m_impl->server);
   m_impl->shapes.clear();
   m_impl->scene.reset();
   ModelReceiptInfo info;
@@ -426,18 +605,17 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
 {
   stopStateStream();
   Impl& impl = *m_impl;
-  impl.streamContext = std::make_unique<grpc::ClientContext>();
-  impl.addToken(*impl.streamContext);
-  impl.stopAsked = false;
-  impl.streamEnd.clear();
+  {
+    const std::lock_guard<std::mutex> lock(impl.streamMutex);
+    impl.stopAsked = false;
+    impl.streamEnd.clear();
+    impl.streamReconnections = 0;
+  }
   impl.streamThread =
     std::thread([&impl, rateHz, onSample = std::move(onSample), onTouch = std::move(onTouch)] {
       net::StateRequest request;
       request.set_rate_hz(rateHz);
-      const auto reader = impl.stub->StreamState(impl.streamContext.get(), request);
-      net::StateSample message;
-      while (reader->Read(&message))
-      {
+      const auto deliver = [&](const net::StateSample& message, std::uint32_t reconnections) {
         LiveSample sample;
         sample.receivedNanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                        std::chrono::system_clock::now().time_since_epoch())
@@ -463,6 +641,7 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         }
         sample.modelVersion = message.model_version();
         sample.droppedSamples = message.dropped_samples();
+        sample.reconnections = reconnections;
         if (onTouch)
         {
           for (const net::TouchEvent& event : message.events())
@@ -474,14 +653,102 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         {
           onSample(sample);
         }
-      }
-      const grpc::Status status = reader->Finish();
-      const std::lock_guard<std::mutex> lock(impl.streamMutex);
-      if (!impl.stopAsked)
+      };
+      // A new call of the stream, made the one stopStateStream cancels; null once a stop was
+      // asked.
+      const auto newCall = [&impl]() -> grpc::ClientContext* {
+        const std::lock_guard<std::mutex> lock(impl.streamMutex);
+        if (impl.stopAsked)
+        {
+          return nullptr;
+        }
+        impl.streamContext = std::make_unique<grpc::ClientContext>();
+        impl.addToken(*impl.streamContext);
+        return impl.streamContext.get();
+      };
+      detail::Reconnection reconnection(impl.connection, *impl.channel);
+      std::uint32_t reconnections = 0;
+      std::string end;
+      std::string lastError;
+      net::StateSample message;
+      for (;;)
       {
-        impl.streamEnd = status.ok() ? "the server ended the stream"
-                                     : "the stream failed: " + status.error_message();
+        if (reconnection.waiting())
+        {
+          // The server went away: wait for it on a call that waits for the connection (gRPC
+          // reconnects with its backoff) until the policy gives up, or stopStateStream cancels
+          // it. Its first sample says the server answers again.
+          grpc::ClientContext* waiting = newCall();
+          if (waiting == nullptr)
+          {
+            break;
+          }
+          waiting->set_wait_for_ready(true);
+          waiting->set_deadline(reconnection.deadline());
+          const auto reader = impl.stub->StreamState(waiting, request);
+          const bool answered = reader->Read(&message);
+          waiting->TryCancel();
+          const grpc::Status status = reader->Finish();
+          if (!answered && status.error_code() == grpc::StatusCode::UNAVAILABLE &&
+              reconnection.failed())
+          {
+            // Refused by a server that is closing its connection: wait for the channel to notice,
+            // then wait for the server again.
+            reconnection.pauseWhileReady();
+            continue;
+          }
+          if (!answered)
+          {
+            end = status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED ||
+                      status.error_code() == grpc::StatusCode::UNAVAILABLE
+                    ? reconnection.gaveUp(lastError)
+                    : "the stream failed: " + status.error_message();
+            break;
+          }
+          reconnection.succeeded();
+          ++reconnections;
+          {
+            const std::lock_guard<std::mutex> lock(impl.streamMutex);
+            impl.streamReconnections = reconnections;
+          }
+          deliver(message, reconnections);
+        }
+        grpc::ClientContext* context = newCall();
+        if (context == nullptr)
+        {
+          break;
+        }
+        const auto reader = impl.stub->StreamState(context, request);
+        while (reader->Read(&message))
+        {
+          reconnection.succeeded();
+          deliver(message, reconnections);
+        }
+        const grpc::Status status = reader->Finish();
+        lastError = "the stream failed: " + status.error_message();
+        if (status.error_code() == grpc::StatusCode::UNAVAILABLE && reconnection.failed())
+        {
+          continue;
+        }
+        if (status.error_code() == grpc::StatusCode::UNAVAILABLE && reconnection.waiting())
+        {
+          end = reconnection.gaveUp(status.error_message());
+        }
+        else
+        {
+          end = status.ok() ? "the server ended the stream"
+                            : "the stream failed: " + status.error_message();
+        }
+        break;
       }
+      {
+        const std::lock_guard<std::mutex> lock(impl.streamMutex);
+        if (!impl.stopAsked)
+        {
+          impl.streamEnd = end;
+        }
+      }
+      impl.notifyEnd();
     });
 }
 
@@ -489,6 +756,31 @@ std::string HapticClient::stateStreamEnd() const
 {
   const std::lock_guard<std::mutex> lock(m_impl->streamMutex);
   return m_impl->streamEnd;
+}
+
+std::string HapticClient::waitForEnd(std::chrono::steady_clock::time_point deadline)
+{
+  const auto ended = [this] {
+    const std::string stream = stateStreamEnd();
+    return stream.empty() ? ownershipEnd() : stream;
+  };
+  std::unique_lock<std::mutex> lock(m_impl->endMutex);
+  m_impl->endChanged.wait_until(lock, deadline,
+                                [&] { return m_impl->interrupted || !ended().empty(); });
+  return ended();
+}
+
+void HapticClient::interruptWait()
+{
+  const std::lock_guard<std::mutex> lock(m_impl->endMutex);
+  m_impl->interrupted = true;
+  m_impl->endChanged.notify_all();
+}
+
+std::uint32_t HapticClient::stateStreamReconnections() const
+{
+  const std::lock_guard<std::mutex> lock(m_impl->streamMutex);
+  return m_impl->streamReconnections;
 }
 
 std::string HapticClient::stopStateStream()
@@ -500,9 +792,13 @@ std::string HapticClient::stopStateStream()
   }
   {
     const std::lock_guard<std::mutex> lock(impl.streamMutex);
-    impl.stopAsked = impl.streamEnd.empty();
+    // Also stops a thread between two calls (reconnecting): it asks under the same lock.
+    impl.stopAsked = true;
+    if (impl.streamContext)
+    {
+      impl.streamContext->TryCancel();
+    }
   }
-  impl.streamContext->TryCancel();
   impl.streamThread.join();
   return impl.streamEnd;
 }

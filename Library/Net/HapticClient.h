@@ -17,8 +17,10 @@
 
 #include "Core/RigidTransform.h"
 #include "Core/Vec3.h"
+#include "IO/InputChecks/InputError.h"
 #include "Net/ServerConnection.h"
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -81,6 +83,9 @@ struct LiveSample
   /// or synchronised ones).
   std::int64_t sentNanoseconds = 0;
   std::int64_t receivedNanoseconds = 0;
+  /// How many times the stream has come back after its server went away (a restarted server
+  /// starts its ticks and model versions anew).
+  std::uint32_t reconnections = 0;
 };
 
 /// A shape's touch began or ended (seen between two samples).
@@ -99,11 +104,28 @@ enum class HapticClientRole
   Observer
 };
 
+/// An owner learns that it no longer owns the model: its ownership ended with its connection
+/// (the server went away or restarted, and a restarted server has lost the model). An InputError
+/// naming --server; HapticClient::claimOwnership claims the model again.
+class OwnershipEnded : public InputError
+{
+public:
+  using InputError::InputError;
+};
+
+/// A server that goes away and comes back on the same address (a restart) is waited for, by the
+/// connection's ReconnectPolicy: a call that fails because the server is unavailable is made again
+/// once it answers, the state stream goes on (LiveSample::reconnections counts), and only after
+/// the policy's maxWait is it an InputError naming --server and the address. The owner is the
+/// exception: its ownership ends with the connection it was granted on, and it is told so
+/// (OwnershipEnded) rather than claiming the model again behind the application's back, which
+/// would have it believe its model still there; claimOwnership() claims it again on purpose.
 class HapticClient
 {
 public:
   /// Connects to `server` (HOST:PORT) as the owner. Throws InputError naming --server when
-  /// nothing answers, or when another client owns the model.
+  /// nothing answers, or when another client owns the model (no waiting: the first connection is
+  /// not retried).
   explicit HapticClient(const std::string& server, const std::string& token = {});
   /// Connects as `role`, with the connection's token and TLS roots. An owner holds the model
   /// until it is destroyed (or its process ends, or its connection drops); then another client
@@ -147,20 +169,45 @@ public:
   std::size_t pendingShapes() const;
   HapticClientRole role() const;
 
+  /// True while this owner's ownership holds: false for an observer, and once the connection it
+  /// was granted on has dropped (the server went away or restarted). Any thread.
+  bool ownsModel() const;
+  /// Why an owner's ownership ended without its asking (OwnershipEnded's words), empty while it
+  /// holds. Any thread.
+  std::string ownershipEnd() const;
+  /// Claims the model again for an owner whose ownership ended, waiting for a server that went
+  /// away to answer (ReconnectPolicy); nothing while it still owns. Throws InputError naming
+  /// --server when another client owns the model now or the server does not come back,
+  /// std::logic_error for an observer. The model of a server that restarted is empty: commit it
+  /// again.
+  void claimOwnership();
+
   /// Sends the shapes made since the last commit as the server's new model and returns once the
-  /// server has it live; they are then forgotten here. Throws std::invalid_argument with the
-  /// server's words for a model it refuses (the old model stays), InputError naming --server or
-  /// --token-file, std::logic_error for an observer, std::runtime_error otherwise.
+  /// server has it live; they are then forgotten here. A server that goes away meanwhile is waited
+  /// for (ReconnectPolicy). Throws std::invalid_argument with the server's words for a model it
+  /// refuses (the old model stays), OwnershipEnded once this owner's ownership has ended (the
+  /// shapes stay pending), InputError naming --server or --token-file, std::logic_error for an
+  /// observer, std::runtime_error otherwise.
   ModelReceiptInfo commit();
 
   /// Streams the server's state at `rateHz` (1 to 1000) on a thread of this client's, handing
   /// each sample and each touch change to the callbacks there, until stopStateStream (or the
-  /// client's end). One stream at a time.
+  /// client's end). One stream at a time. A server that goes away is waited for and the stream
+  /// goes on from it when it answers again (ReconnectPolicy); after the policy's maxWait the
+  /// stream ends (stateStreamEnd says so).
   void startStateStream(double rateHz, std::function<void(const LiveSample&)> onSample,
                         std::function<void(const TouchChange&)> onTouch = {});
   /// Why the stream ended by itself (the server went away, refused the rate...), empty while it
   /// runs or after stopStateStream asked it to end. Any thread.
   std::string stateStreamEnd() const;
+  /// Waits until the stream ends by itself, or this owner's ownership ends, or `deadline` passes;
+  /// returns why it ended (stateStreamEnd(), else ownershipEnd()), empty at the deadline.
+  std::string waitForEnd(std::chrono::steady_clock::time_point deadline);
+  /// Makes waitForEnd return now and from then on, as at its deadline (any thread: a thread that
+  /// waits for a stop signal, say).
+  void interruptWait();
+  /// How many times the stream has come back after its server went away. Any thread.
+  std::uint32_t stateStreamReconnections() const;
   /// Ends the stream and waits for its thread. Returns why it ended if not asked to (the server
   /// went away, refused the rate...), empty otherwise.
   std::string stopStateStream();

@@ -111,11 +111,16 @@ struct RemoteRunRequest
 
 /// Sends `request` to the server of `connection`, hands each tick to `onTick` as it arrives and
 /// returns the summary. With `onBodyPose` (`--bodies-out`), the server also sends each body's
-/// pose after each tick, handed to it in order (a scene without bodies is refused, as locally). Throws InputError: the server's refusal of the run (the option or the
-/// client's file named, as a local run would), "--server" when no server answers, "--token-file"
-/// when the token is refused.
+/// pose after each tick, handed to it in order (a scene without bodies is refused, as locally).
+/// A server that goes away is waited for (connection.reconnect) and the run played again there
+/// from its start: before any tick was handed out, always; after, only with `onRestart`, called
+/// first to say that the ticks and poses handed out so far are void. Throws InputError: the
+/// server's refusal of the run (the option or the client's file named, as a local run would),
+/// "--server" when no server answers or it does not come back, "--token-file" when the token is
+/// refused.
 std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
                         const std::function<void(const HapticState&)>& onTick,
-                        const std::function<void(const BodyPoseRow&)>& onBodyPose = {});
+                        const std::function<void(const BodyPoseRow&)>& onBodyPose = {},
+                        const std::function<void()>& onRestart = {});
 
 } // namespace proxima

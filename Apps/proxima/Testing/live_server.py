@@ -8,7 +8,10 @@
   force is kp times the spring's stretch.
 - A touch event for shape 0 comes; the model's version is the one the receipt gave.
 - A mesh the server must refuse leaves the model as it was; a server without a device says so.
-- A follower of a server that is killed ends at once with an error naming --server.
+- The server killed and restarted on its address: an observer follows on (and ends on SIGINT
+  with its summary), an owner is told at once that it no longer owns the model; a server killed
+  for good: a follower with --reconnect 0 ends at once, one with --reconnect 1 gives up after
+  1 s, both naming the address.
 - Over TLS (`serve --tls-cert --tls-key`, a certificate made here by openssl): a client with the
   certificate as --tls-ca uploads, follows and runs; a plain client, and one trusting another
   certificate, are refused naming --server; a file that is not PEM is named.
@@ -39,8 +42,20 @@ def fail(message):
     sys.exit(f"live-server: {message}")
 
 
-def start_server(*extra):
-    return serve_process.start_server(proxima, fail, *extra)
+def start_server(*extra, listen="127.0.0.1:0"):
+    return serve_process.start_server(proxima, fail, *extra, listen=listen)
+
+
+def following(*arguments):
+    """`proxima remote ARGUMENTS` that follows the state, started; returns once it follows (its
+    first sample, a line on its standard error)."""
+    process = subprocess.Popen([proxima, "remote", *arguments], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    line = process.stderr.readline()
+    if "proxima remote: following the server at" not in line:
+        process.kill()
+        fail(f"{arguments}: did not follow: {line!r} {process.communicate()}")
+    return process
 
 
 def stop(server):
@@ -115,23 +130,57 @@ try:
     if again.returncode != 0 or json.loads(again.stdout)["model_version"] != 3:
         fail(f"the next upload did not follow: {again.stdout} {again.stderr}")
 
-    # The server killed while a client follows it: a clear error naming --server at once, not a
-    # wait until the end of --follow.
-    follower = subprocess.Popen([proxima, "remote", "--server", address, "upload", "--mesh", sphere,
-                                 "--follow", "60"], stdout=subprocess.PIPE,
-                                stderr=subprocess.PIPE, text=True)
-    time.sleep(1.5)
+    # The server killed (SIGKILL) and started again on the same address while an observer and an
+    # owner follow it: the observer waits for it and follows on, and says so when it answers again;
+    # the owner is told at once that it no longer owns the model (a restarted server starts
+    # without it), status 2. Each step waits for its event: a line, a process's end.
+    observer = following("--server", address, "follow", "--follow", "600", "--rate", "100")
+    owner = following("--server", address, "upload", "--mesh", sphere, "--follow", "600")
     server.kill()
     server.wait(timeout=30)
     killed_at = time.monotonic()
     try:
-        _, error = follower.communicate(timeout=30)
+        _, error = owner.communicate(timeout=60)
     except subprocess.TimeoutExpired:
-        follower.kill()
-        fail("a follower of a killed server did not end within 30 s")
-    waited = time.monotonic() - killed_at
-    if follower.returncode != 2 or "--server" not in error:
-        fail(f"a follower of a killed server: status {follower.returncode}, {error!r}")
+        owner.kill()
+        fail("an owner of a killed server did not end within 60 s")
+    owner_told = time.monotonic() - killed_at
+    if owner.returncode != 2 or "--server" not in error or "no longer owns the model" not in error:
+        fail(f"an owner of a killed server: status {owner.returncode}, {error!r}")
+    server, restarted = start_server("--device", "sim", "--path", path, listen=address)
+    listening_at = time.monotonic()
+    if restarted != address:
+        fail(f"the server restarted on {restarted}, not {address}")
+    answered = observer.stderr.readline()
+    reconnected = time.monotonic() - listening_at
+    if "answers again; following on (reconnection 1" not in answered:
+        observer.kill()
+        fail(f"an observer of a restarted server: {answered!r} {observer.communicate()}")
+    observer.send_signal(signal.SIGINT)
+    followed, error = observer.communicate(timeout=60)
+    observed = json.loads(followed) if observer.returncode == 0 else {}
+    if observer.returncode != 0 or observed.get("reconnections") != 1 or observed["samples"] < 2:
+        fail(f"an observer stopped by SIGINT: status {observer.returncode}, {followed} {error!r}")
+
+    # The server killed for good: with --reconnect 0 a follower ends at once, as before clients
+    # reconnected; with --reconnect 1 it gives up after 1 s, naming the address.
+    at_once = following("--server", address, "--reconnect", "0", "follow", "--follow", "600")
+    patient = following("--server", address, "--reconnect", "1", "follow", "--follow", "600")
+    server.kill()
+    server.wait(timeout=30)
+    killed_at = time.monotonic()
+    for follower, expected in ((at_once, f"the server at {address}"),
+                               (patient, f"the server at {address} went away and did not come "
+                                         "back within 1 s")):
+        try:
+            _, error = follower.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            follower.kill()
+            fail("a follower of a killed server did not end within 60 s")
+        if follower.returncode != 2 or "--server" not in error or expected not in error:
+            fail(f"a follower of a killed server: status {follower.returncode}, {error!r}")
+        if follower is at_once:
+            waited = time.monotonic() - killed_at
 finally:
     if server.poll() is None:
         stop(server)
@@ -168,18 +217,17 @@ try:
     if uploaded.returncode != 0 or json.loads(uploaded.stdout)["triangles"] != 5120:
         fail(f"an upload over TLS: {uploaded.returncode} {uploaded.stderr}")
     # An observer follows over TLS while another client (owning the model) uploads.
-    follower = subprocess.Popen([proxima, "remote", "--server", address, "--tls-ca", certificate,
-                                 "follow", "--follow", "2", "--rate", "100"],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(0.5)
+    follower = following("--server", address, "--tls-ca", certificate, "follow", "--follow",
+                         "600", "--rate", "100")
     second = subprocess.run([proxima, "remote", "--server", address, "--tls-ca", certificate,
                              "upload", "--mesh", sphere, "--scale", "0.5"],
                             capture_output=True, text=True)
+    follower.send_signal(signal.SIGINT)
     followed, error = follower.communicate(timeout=60)
     if second.returncode != 0 or follower.returncode != 0:
         fail(f"an observer beside an owner: {second.stderr} {error}")
     observed = json.loads(followed)
-    if observed["samples"] < 100 or "triangles" in observed:
+    if observed["samples"] < 1 or "triangles" in observed:
         fail(f"the observer's summary: {observed}")
     remote_run = subprocess.run(
         [proxima, "remote", "--server", address, "--tls-ca", certificate, "run", "--mesh",
@@ -202,6 +250,9 @@ finally:
 
 print(f"live server: {len(rows)} samples, {len(held)} held; deepest {deepest:.3g} m; "
       f"model live {receipt['live_ms']:.2f} ms after a {receipt['build_ms']:.2f} ms build; "
-      f"a follower of the killed server ended {waited:.2f} s later; over TLS an owner uploaded "
+      f"after a restart an owner was told {owner_told:.2f} s after the kill that it no longer "
+      f"owns the model, and an observer followed on {reconnected:.2f} s after the server listened "
+      f"again; with --reconnect 0 a follower of the killed server ended {waited:.2f} s later; "
+      f"over TLS an owner uploaded "
       f"and ran, an observer followed ({observed['samples']} samples), plain and untrusting "
       f"clients were refused")

@@ -9,7 +9,9 @@
 - Bad input is refused as a local run refuses it, naming the client's file, and leaves no trace.
 - With --token-file, a wrong token is refused (--token-file) and the right one runs.
 - A path longer than the server's --max-ticks is refused, whatever the client's own limit.
-- A server that is not there, or that stops, is a clear error naming --server.
+- A server that is not there is a clear error naming --server; one killed in the middle of a run
+  and started again on its address plays the run again from its start, and the trace is the
+  same as a local run's.
 - Scene files go with their files (meshes, an MJCF file): the crank's mechanism and the lever's
   hinged plate turn on the server as they do locally, bit for bit, and the spheres on the table
   (three objects) too; a scene that names a missing mesh is refused naming it.
@@ -23,9 +25,12 @@ import csv
 import glob
 import json
 import os
+import shutil
 import signal
+import socket
 import subprocess
 import sys
+import threading
 import time
 import tempfile
 
@@ -43,8 +48,67 @@ def fail(message):
     sys.exit(f"remote-runs: {message}")
 
 
-def start_server(*extra):
-    return serve_process.start_server(proxima, fail, *extra)
+def start_server(*extra, listen="127.0.0.1:0"):
+    return serve_process.start_server(proxima, fail, *extra, listen=listen)
+
+
+class HoldingProxy:
+    """A TCP relay on a free loopback port to the server at `target` ("HOST:PORT"), so that a test
+    knows where a run is when its server is killed: on the first connection it passes `held`
+    bytes from the server to the client, then passes no more (set `holding`) and drops that
+    connection when told; later connections pass everything, to whatever listens at `target`
+    then (a restarted server), or are closed at once when nothing does."""
+
+    def __init__(self, target, held):
+        host, port = target.rsplit(":", 1)
+        self.target, self.held = (host, int(port)), held
+        self.listener = socket.create_server(("127.0.0.1", 0))
+        self.address = f"127.0.0.1:{self.listener.getsockname()[1]}"
+        self.holding, self.drop = threading.Event(), threading.Event()
+        self.connections = 0
+        threading.Thread(target=self._accept, daemon=True).start()
+
+    def _accept(self):
+        while True:
+            client, _ = self.listener.accept()
+            self.connections += 1
+            try:
+                server = socket.create_connection(self.target)
+            except OSError:
+                client.close()
+                continue
+            first = self.connections == 1
+            threading.Thread(target=self._pass, args=(client, server, None), daemon=True).start()
+            threading.Thread(target=self._pass, args=(server, client, self.held if first else None),
+                             daemon=True).start()
+
+    def _pass(self, source, sink, limit):
+        passed = 0
+        try:
+            while limit is None or passed < limit:
+                data = source.recv(65536 if limit is None else min(65536, limit - passed))
+                if not data:
+                    break
+                sink.sendall(data)
+                passed += len(data)
+        except OSError:
+            pass
+        if limit is not None and passed >= limit:
+            self.holding.set()
+            self.drop.wait()
+            # Closed as when the server's process dies. shutdown, not only close: the other
+            # direction's thread still reads from the client, and a socket is not closed while it
+            # does; shutdown ends both directions at once and wakes that thread.
+            for end in (sink, source):
+                try:
+                    end.shutdown(socket.SHUT_RDWR)
+                except OSError:
+                    pass
+        for end in (source, sink):
+            try:
+                end.close()
+            except OSError:
+                pass
 
 
 def run(*arguments):
@@ -231,6 +295,51 @@ for limit, expected in (("499", 0), ("498", 2)):
                           f"run ({limit}, proxima serve --max-ticks)" not in limited.stderr
                           or os.path.exists(limited_trace)):
         fail(f"a server limit of {limit} ticks: {limited.stderr!r}")
+
+# The server killed (SIGKILL) in the middle of a run and started again on its address: the client
+# waits for it, plays the run again from its start there, says so, and writes the same trace as a
+# local run. A relay holds the run's replies after its first megabyte (its first ticks, of about
+# 3 MB), so the kill comes in the middle of the run however loaded the machine is.
+long_path = os.path.join(work, "long-probe.csv")
+made = run("path", "probe", "--mesh", part, "--scale", "0.03", "--radius", "0.001", "--seed", "2",
+           "--duration", "30", "--out", long_path)
+if made.returncode != 0:
+    fail(f"proxima path probe: {made.stderr}")
+long_options = ["--mesh", part, "--scale", "0.03", "--radius", "0.001", "--path", long_path]
+server, address = start_server()
+relay = HoldingProxy(address, 1 << 20)
+client = subprocess.Popen([proxima, "remote", "--server", relay.address, "run", *long_options,
+                           "--out", os.path.join(work, "restarted-remote.csv")],
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+if not relay.holding.wait(timeout=120):
+    client.kill()
+    fail(f"the run's first megabyte never came: {client.communicate()}")
+server.kill()
+server.wait(timeout=30)
+# A killed server cannot remove its run's folder (one that stops does: checked at the end).
+for folder in leftovers() - before:
+    shutil.rmtree(folder)
+relay.drop.set()
+server, restarted = start_server(listen=address)
+try:
+    out, error = client.communicate(timeout=120)
+except subprocess.TimeoutExpired:
+    client.kill()
+    fail("a run whose server restarted did not end within 120 s")
+if client.returncode != 0 or "playing the run again from its start" not in error:
+    fail(f"a run whose server restarted: status {client.returncode}, {error!r}")
+local = run("run", *long_options, "--out", os.path.join(work, "restarted-local.csv"))
+if local.returncode != 0:
+    fail(f"the local run: {local.stderr}")
+if (rows(os.path.join(work, "restarted-local.csv"))
+        != rows(os.path.join(work, "restarted-remote.csv"))):
+    fail("a run played again after a restart differs from the local run")
+if untimed(json.loads(out)) != untimed(json.loads(local.stdout)):
+    fail(f"a run played again after a restart: its summary differs: {out}")
+server.send_signal(signal.SIGTERM)
+server.wait(timeout=30)
+print(f"a run whose server was killed after its first megabyte of ticks and restarted was played "
+      f"again there ({relay.connections} connections to the relay): the same trace as proxima run")
 
 # No server there: refused at the first failed connection, not after the 10 s a slow network gets
 # (8 s allows for a loaded machine; it took the whole 10 s before the client watched the

@@ -62,8 +62,8 @@ grpc::Status LiveHapticService::UploadModel(grpc::ServerContext* context,
     case ModelOwnership::Right::OwnershipEnded:
       return {grpc::StatusCode::FAILED_PRECONDITION,
               "this client no longer owns the model: its ownership ended when its connection to "
-              "the server dropped or the server restarted; the model is unchanged (connect a new "
-              "client to claim it)"};
+              "the server dropped or the server restarted; the model is unchanged (claim the "
+              "ownership again to change it)"};
   }
   ModelAssembly shapes(m_limits);
   net::SceneBundle sceneBundle;
@@ -266,6 +266,11 @@ grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
       next += period * static_cast<long>(missed);
     }
     std::this_thread::sleep_until(next);
+  }
+  if (m_stopping)
+  {
+    // The server is going away (it may come back: a restart); a client waits for it on this code.
+    return {grpc::StatusCode::UNAVAILABLE, "the server stopped"};
   }
   return grpc::Status::OK;
 }

@@ -334,14 +334,21 @@ TEST_F(LiveServer, AnUploadThatDiesOrIsMalformedLeavesTheModelLive)
   EXPECT_EQ(m_runtime->latestState().sceneVersion, live);
 }
 
-// The server restarts under an owner (same address, same device and runtime, as a restarted
-// proxima serve): the new server never granted the owner's key, and the owner's next commit is
-// refused in words saying so, not taken as if it still owned the model.
+// The server restarts under an owner and an observer (same address, same device and runtime, as a
+// restarted proxima serve): the observer's stream waits for the new server and goes on from it;
+// the new server never granted the owner's key, and the owner's next commit is refused in words
+// saying so (OwnershipEnded), not taken as if it still owned the model; the owner claims the
+// model again on purpose, and then commits.
 TEST_F(LiveServer, AnOwnerIsToldPlainlyThatARestartedServerEndedItsOwnership)
 {
   HapticClient owner(m_address);
   sphereShape(owner, 2, {});
   const std::uint64_t live = owner.commit().version;
+  EXPECT_TRUE(owner.ownsModel());
+  HapticClient observer(ServerConnection{m_address, {}, {}}, HapticClientRole::Observer);
+  Collected seen;
+  follow(observer, seen, 200.0);
+  ASSERT_TRUE(seen.waitFor([](const Collected& c) { return !c.samples.empty(); }));
   m_server.reset();
   startServer(m_address);
   sphereShape(owner, 2, Vec3{0.0, 0.0, -0.01});
@@ -350,17 +357,66 @@ TEST_F(LiveServer, AnOwnerIsToldPlainlyThatARestartedServerEndedItsOwnership)
     owner.commit();
     ADD_FAILURE() << "an owner's key from before the restart was taken";
   }
-  catch (const InputError& error)
+  catch (const OwnershipEnded& error)
   {
     std::printf("[ refused  ] %s\n", error.what());
     EXPECT_NE(std::string(error.what()).find("no longer owns the model"), std::string::npos)
       << error.what();
+    EXPECT_NE(std::string(error.what()).find(m_address), std::string::npos) << error.what();
   }
+  EXPECT_FALSE(owner.ownsModel());
+  EXPECT_FALSE(owner.ownershipEnd().empty());
+  EXPECT_EQ(owner.pendingShapes(), 1u);
   EXPECT_EQ(m_runtime->liveSceneVersion(), live);
-  // A client that claims the model now owns it: the restarted server had no owner.
-  HapticClient next(m_address);
-  sphereShape(next, 2, {});
-  EXPECT_GT(next.commit().version, live);
+  // The observer follows the new server: samples after the restart, the stream still running.
+  ASSERT_TRUE(seen.waitFor(
+    [](const Collected& c) { return !c.samples.empty() && c.samples.back().reconnections == 1; }))
+    << observer.stateStreamEnd();
+  EXPECT_EQ(observer.stateStreamEnd(), "");
+  EXPECT_EQ(observer.stateStreamReconnections(), 1u);
+  // Claimed again (the restarted server had no owner), the pending shape is committed.
+  owner.claimOwnership();
+  EXPECT_TRUE(owner.ownsModel());
+  EXPECT_EQ(owner.ownershipEnd(), "");
+  const std::uint64_t next = owner.commit().version;
+  EXPECT_GT(next, live);
+  ASSERT_TRUE(
+    seen.waitFor([next](const Collected& c) { return c.samples.back().modelVersion == next; }));
+  // Another client may not own it meanwhile: the owner holds it again.
+  EXPECT_THROW(HapticClient second(m_address), InputError);
+  EXPECT_EQ(observer.stopStateStream(), "");
+}
+
+// A server that goes away and does not come back within the policy's wait: the stream ends
+// saying so, naming the address, and so does a commit; with no wait at all (maxWait 0) at once,
+// as before clients reconnected.
+TEST_F(LiveServer, AClientGivesUpOnAServerThatDoesNotComeBack)
+{
+  ServerConnection connection{m_address, {}, {}};
+  connection.reconnect.maxWait = 300ms;
+  HapticClient owner(connection);
+  HapticClient observer(connection, HapticClientRole::Observer);
+  Collected seen;
+  follow(observer, seen, 200.0);
+  ASSERT_TRUE(seen.waitFor([](const Collected& c) { return !c.samples.empty(); }));
+  m_server->shutdown();
+  const std::string ended = observer.waitForEnd(std::chrono::steady_clock::now() + 60s);
+  EXPECT_EQ(observer.stopStateStream(), ended);
+  std::printf("[ gave up  ] %s\n", ended.c_str());
+  EXPECT_NE(ended.find("did not come back within 0.3 s"), std::string::npos) << ended;
+  EXPECT_NE(ended.find(m_address), std::string::npos) << ended;
+  sphereShape(owner, 1, {});
+  try
+  {
+    owner.commit();
+    ADD_FAILURE() << "a commit to a server that has gone went through";
+  }
+  catch (const InputError& error)
+  {
+    std::printf("[ gave up  ] %s\n", error.what());
+    EXPECT_EQ(error.path(), "--server");
+    EXPECT_NE(std::string(error.what()).find(m_address), std::string::npos) << error.what();
+  }
 }
 
 TEST_F(LiveServer, AClientThatStopsReadingLosesSamplesNotTheServersTime)
