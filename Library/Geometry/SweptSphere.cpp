@@ -195,6 +195,14 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
     result.t = approaching ? 0.0 : 1.0;
     return result;
   }
+  // The distance from a point moving on a line to a triangle (a convex set) is convex along
+  // the line: a motion that does not approach the closest point at the start never comes nearer
+  // than the start, which is outside the contact radius. Sliding past a neighbour of the surface
+  // under the proxy is this case, most of a crawl's tests.
+  if (dot(motion, start - closest.point) >= 0.0)
+  {
+    return SweepResult{};
+  }
   return sweepFromOutside(start, motion, contactRadius, triangle);
 }
 

@@ -25,34 +25,23 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
     {
       return; // too crowded to help: the trees answer everything
     }
+    // The records made when the object was built (TriangleFilter.h), or made here for an object
+    // built without them.
+    const bool recorded = object.filters.size() == object.mesh.numTriangles();
     for (std::uint32_t i = 0; i < found; ++i)
     {
-      const TriangleCorners& c = object.mesh.corners(m_triangle[m_count]);
-      const Vec3 centroid = (c.a + c.b + c.c) / 3.0;
-      const double radius =
-        std::sqrt(std::max({squaredDistance(centroid, c.a), squaredDistance(centroid, c.b),
-                            squaredDistance(centroid, c.c)}));
-      m_sphereX[m_count] = centroid.x;
-      m_sphereY[m_count] = centroid.y;
-      m_sphereZ[m_count] = centroid.z;
-      // A hair larger, so that the double rounding of the rejection test never drops a
-      // triangle that touches exactly.
-      m_sphereRadius[m_count] = radius * (1.0 + 1e-12) + 1e-300;
-      const Vec3 normalCross = cross(c.b - c.a, c.c - c.a);
-      const double normalLength = norm(normalCross);
-      const Vec3 normal = normalLength > 0.0 ? normalCross / normalLength : Vec3{};
-      const double offset = dot(normal, centroid);
-      const double off =
-        std::max({std::fabs(dot(normal, c.a) - offset), std::fabs(dot(normal, c.b) - offset),
-                  std::fabs(dot(normal, c.c) - offset)});
-      m_normalX[m_count] = normal.x;
-      m_normalY[m_count] = normal.y;
-      m_normalZ[m_count] = normal.z;
-      m_planeOffset[m_count] = offset;
-      // The corners' rounding off the plane, and the rounding of a height measured at any point
-      // near the triangle (coordinates up to |centroid| + radius): generous, as it only widens a
-      // filter that the exact test follows.
-      m_planeSlack[m_count] = 2.0 * off + 1e-12 * (maxAbsComponent(centroid) + radius);
+      const std::uint32_t triangle = m_triangle[m_count];
+      const TriangleFilter filter =
+        recorded ? object.filters[triangle] : makeTriangleFilter(object.mesh.corners(triangle));
+      m_sphereX[m_count] = filter.centroid.x;
+      m_sphereY[m_count] = filter.centroid.y;
+      m_sphereZ[m_count] = filter.centroid.z;
+      m_sphereRadius[m_count] = filter.radius;
+      m_normalX[m_count] = filter.normal.x;
+      m_normalY[m_count] = filter.normal.y;
+      m_normalZ[m_count] = filter.normal.z;
+      m_planeOffset[m_count] = filter.offset;
+      m_planeSlack[m_count] = filter.planeSlack;
       // The edges' half-spaces are made when keepNearEdges first needs them.
       m_edgesMade[m_count] = false;
       m_object[m_count] = objectIndex;

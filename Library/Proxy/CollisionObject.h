@@ -6,6 +6,7 @@
 #include "Geometry/SphereTree.h"
 #include "Geometry/TriangleMesh.h"
 #include "Proxy/SurfaceMaterial.h"
+#include "Proxy/TriangleFilter.h"
 
 #include <memory>
 
@@ -16,7 +17,17 @@ struct CollisionObject
 {
   TriangleMesh mesh;
   SphereTree tree;
+  /// Each triangle's record for the candidate cache's filters, in the mesh's order.
+  std::vector<TriangleFilter> filters;
   SurfaceMaterial material;
+
+  /// Builds what the queries need over `mesh`: the sphere tree and the filter records. Not for
+  /// the haptic thread.
+  void buildQueries(const SphereTreeOptions& options = SphereTreeOptions{})
+  {
+    tree.build(mesh, options);
+    filters = makeTriangleFilters(mesh);
+  }
 };
 
 /// Builds the tree over `mesh` and wraps the object for sharing. Not for the haptic thread.
@@ -26,7 +37,7 @@ inline std::shared_ptr<const CollisionObject> makeCollisionObject(
 {
   auto object = std::make_shared<CollisionObject>();
   object->mesh = std::move(mesh);
-  object->tree.build(object->mesh, options);
+  object->buildQueries(options);
   object->material = material;
   return object;
 }

@@ -107,7 +107,7 @@ CollisionObject buildCollisionObject(vtkPolyData* data, const std::string& name,
 {
   CollisionObject object = prepareCollisionObject(data, name, settings, report);
   const auto buildStart = std::chrono::steady_clock::now();
-  object.tree.build(object.mesh, settings.tree);
+  object.buildQueries(settings.tree);
   if (report)
   {
     report->treeBuildMilliseconds = millisecondsSince(buildStart);

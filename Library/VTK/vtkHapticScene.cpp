@@ -257,7 +257,7 @@ void vtkHapticScene::RunBuild(Build& build)
     for (Build::Staged& staged : build.staged)
     {
       build.failedObject = staged.index;
-      staged.object->tree.build(staged.object->mesh, build.treeOptions);
+      staged.object->buildQueries(build.treeOptions);
     }
     build.failedObject = -1;
     // The new snapshot is a vector of pointers: unchanged objects are shared, not copied.

@@ -690,3 +690,71 @@ TYPED_TEST(SceneQueries, NearestPointMatchesBruteForceOnTheSharedScrew)
 
 } // namespace
 } // namespace proxima
+
+namespace proxima
+{
+namespace
+{
+// The candidate cache reads each triangle's filter record made when the object was built
+// (TriangleFilter.h). A record must bound its triangle, and a cache over an object without
+// records (made then from the corners) must answer every sweep and gather the same, bit for bit.
+TEST(TriangleFilterRecords, BoundTheirTrianglesAndAnswerAsRecordsMadeFromTheCorners)
+{
+  CollisionScene recorded;
+  ASSERT_TRUE(addSoup(recorded, makeSliverCylinder(48, 0.01, 0.05)));
+  const CollisionObject& object = recorded.objects.front();
+  ASSERT_EQ(object.filters.size(), object.mesh.numTriangles());
+  for (std::uint32_t t = 0; t < object.mesh.numTriangles(); ++t)
+  {
+    const TriangleFilter& filter = object.filters[t];
+    const TriangleCorners& c = object.mesh.corners(t);
+    for (const Vec3& corner : {c.a, c.b, c.c})
+    {
+      EXPECT_LE(distance(corner, filter.centroid), filter.radius);
+      EXPECT_LE(std::fabs(dot(filter.normal, corner) - filter.offset), filter.planeSlack);
+    }
+  }
+  auto bare = std::make_shared<CollisionObject>(object);
+  bare->filters.clear();
+  CollisionScene computed;
+  computed.addObject(bare);
+
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> along(-0.03, 0.03);
+  QueryStats stats;
+  SphereTreeScratch scratch;
+  auto withRecords = std::make_unique<CandidateCache>();
+  auto withoutRecords = std::make_unique<CandidateCache>();
+  int hits = 0;
+  for (int k = 0; k < 400; ++k)
+  {
+    const Vec3 center{along(random) * 0.5, along(random) * 0.5, along(random)};
+    withRecords->rebuild(recorded, center, 0.006, scratch, stats);
+    withoutRecords->rebuild(computed, center, 0.006, scratch, stats);
+    ASSERT_EQ(withRecords->valid(), withoutRecords->valid());
+    ASSERT_EQ(withRecords->size(), withoutRecords->size());
+    if (!withRecords->valid())
+    {
+      continue;
+    }
+    SweepQuery query;
+    query.start = center;
+    query.end = center + Vec3{along(random), along(random), along(random)} * 0.1;
+    query.radius = 0.002;
+    query.skin = 1e-7;
+    const double covered = withRecords->coveredFraction(query.start, query.end, 0.0021);
+    if (covered <= 0.0)
+    {
+      continue;
+    }
+    const SceneContact a = withRecords->firstContact(recorded, query, covered, stats);
+    const SceneContact b = withoutRecords->firstContact(computed, query, covered, stats);
+    EXPECT_EQ(a.hit, b.hit);
+    EXPECT_EQ(a.t, b.t);
+    EXPECT_EQ(a.triangle, b.triangle);
+    hits += a.hit ? 1 : 0;
+  }
+  EXPECT_GT(hits, 10); // the sweeps met the cylinder, not only empty space
+}
+} // namespace
+} // namespace proxima
