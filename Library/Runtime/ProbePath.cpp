@@ -38,7 +38,7 @@ private:
   std::mt19937_64 m_engine;
 };
 
-Vec3 anyPerpendicular(const Vec3& v)
+Vec3 unitPerpendicular(const Vec3& v)
 {
   const Vec3 helper = std::fabs(v.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   return normalizedOrZero(cross(v, helper));
@@ -201,7 +201,7 @@ public:
       {
         continue;
       }
-      const Vec3 e1 = anyPerpendicular(site.outward);
+      const Vec3 e1 = unitPerpendicular(site.outward);
       const Vec3 e2 = cross(site.outward, e1);
       const Vec3 heading = e1 * std::cos(angle) + e2 * std::sin(angle);
       const Vec3 start = site.point + site.outward * standoff;
@@ -458,7 +458,7 @@ private:
     // Nearly opposite directions have no unique great circle: go by a perpendicular one.
     if (angle > 3.0)
     {
-      arcOnOuterSphere(m_center + anyPerpendicular(u0) * m_outerRadius, speed);
+      arcOnOuterSphere(m_center + unitPerpendicular(u0) * m_outerRadius, speed);
       arcOnOuterSphere(to, speed);
       return;
     }
@@ -541,7 +541,7 @@ private:
     const double speed = m_random.between(m_options.strokeSpeedMin, m_options.strokeSpeedMax);
     const double dwell = m_random.between(m_options.dwellMin, m_options.dwellMax);
     const double angle = m_random.between(0.0, 2.0 * 3.14159265358979323846);
-    const Vec3 e1 = anyPerpendicular(site.outward);
+    const Vec3 e1 = unitPerpendicular(site.outward);
     const Vec3 e2 = cross(site.outward, e1);
     const Vec3 tangent = e1 * std::cos(angle) + e2 * std::sin(angle);
 

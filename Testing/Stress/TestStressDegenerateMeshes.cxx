@@ -12,13 +12,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace proxima::stress
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 // A fan around a centre raised by `lift` over a polygon of side 2 * half in z = 0. Around the
 // boundary, some neighbouring points are only `gap` apart (needles at the centre), and some
 // boundary edges carry a cap: a third point `gap` outside the edge's midpoint.
@@ -30,7 +29,7 @@ TriangleSoup sliverFan(Random& random, double half, double lift, int* worstAspec
   double worst = 1.0;
   for (int i = 0; i < sides; ++i)
   {
-    const double angle = 2.0 * kPi * i / sides;
+    const double angle = 2.0 * std::numbers::pi * i / sides;
     const Vec3 p{half * std::cos(angle), half * std::sin(angle), 0.0};
     soup.points.push_back(p);
     if (random.uniform() < 0.5)

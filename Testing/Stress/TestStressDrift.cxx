@@ -17,13 +17,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <numbers>
 
 namespace proxima::stress
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
 {
   const char* text = std::getenv("PROXIMA_DRIFT_TICKS");
@@ -35,7 +34,7 @@ TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
   const double sphere = 0.04;
   const double depth = 0.002;
   // Latitude 35 degrees: the circle crosses facet edges and corners of every kind.
-  const double latitude = 35.0 * kPi / 180.0;
+  const double latitude = 35.0 * std::numbers::pi / 180.0;
 
   TriangleSoup soup = makeIcosphere(4, sphere);
   soup.pointNormals.clear();
@@ -50,7 +49,7 @@ TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
   const oracle::TickChecker checker(oracle, *scene, parameters, settings);
 
   auto fingerAt = [&](std::uint64_t tick) {
-    const double angle = 2.0 * kPi * static_cast<double>(tick % kPeriod) / kPeriod;
+    const double angle = 2.0 * std::numbers::pi * static_cast<double>(tick % kPeriod) / kPeriod;
     const double r = sphere - depth;
     return Vec3{r * std::cos(latitude) * std::cos(angle), r * std::cos(latitude) * std::sin(angle),
                 r * std::sin(latitude)};

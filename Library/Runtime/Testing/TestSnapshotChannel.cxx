@@ -12,15 +12,15 @@ namespace proxima
 {
 namespace
 {
-struct Wide
+struct WideValue
 {
   std::uint64_t words[40];
 };
 
 TEST(SnapshotChannel, StartsAtTheDefaultValue)
 {
-  SnapshotChannel<Wide> channel;
-  const Wide value = channel.read();
+  SnapshotChannel<WideValue> channel;
+  const WideValue value = channel.read();
   for (const std::uint64_t word : value.words)
   {
     EXPECT_EQ(word, 0u);
@@ -30,11 +30,11 @@ TEST(SnapshotChannel, StartsAtTheDefaultValue)
 
 TEST(SnapshotChannel, ConcurrentReadsAreNeverTornAndNeverGoBack)
 {
-  SnapshotChannel<Wide> channel;
+  SnapshotChannel<WideValue> channel;
   constexpr std::uint64_t kWrites = 200000;
   std::atomic<bool> done{false};
   std::thread writer([&] {
-    Wide value{};
+    WideValue value{};
     for (std::uint64_t i = 1; i <= kWrites; ++i)
     {
       for (std::uint64_t& word : value.words)
@@ -51,7 +51,7 @@ TEST(SnapshotChannel, ConcurrentReadsAreNeverTornAndNeverGoBack)
   std::uint64_t last = 0;
   while (!done.load() || reads == 0)
   {
-    const Wide value = channel.read();
+    const WideValue value = channel.read();
     for (const std::uint64_t word : value.words)
     {
       torn += word != value.words[0] ? 1 : 0;
