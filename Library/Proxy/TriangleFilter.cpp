@@ -10,9 +10,9 @@ TriangleFilter makeTriangleFilter(const TriangleCorners& c)
 {
   TriangleFilter filter;
   filter.centroid = (c.a + c.b + c.c) / 3.0;
-  const double radius =
-    std::sqrt(std::max({squaredDistance(filter.centroid, c.a), squaredDistance(filter.centroid, c.b),
-                        squaredDistance(filter.centroid, c.c)}));
+  const double radius = std::sqrt(
+    std::max({squaredDistance(filter.centroid, c.a), squaredDistance(filter.centroid, c.b),
+              squaredDistance(filter.centroid, c.c)}));
   // A hair larger, so that the double rounding of the rejection tests never drops a triangle
   // that touches exactly.
   filter.radius = radius * (1.0 + 1e-12) + 1e-300;
