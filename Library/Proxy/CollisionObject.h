@@ -9,6 +9,7 @@
 #include "Proxy/TriangleFilter.h"
 
 #include <memory>
+#include <vector>
 
 namespace proxima
 {

@@ -17,6 +17,15 @@ std::uint64_t ticksCovering(double start, double end, double rate)
   return static_cast<std::uint64_t>(std::floor((end - start) * rate + 1e-9)) + 1;
 }
 
+LockstepSettings lockstepCovering(const FingerPath& path, double rate)
+{
+  LockstepSettings settings;
+  settings.rate = rate;
+  settings.startTime = path.startTime();
+  settings.numTicks = ticksCovering(path.startTime(), path.endTime(), rate);
+  return settings;
+}
+
 void runLockstep(const LockstepSettings& settings, ProxySolver& solver, HapticDevice& device,
                  const ServoParameters& parameters,
                  const std::function<void(const HapticState&)>& onTick, TickDynamics* dynamics)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "Proxy/ProxySolver.h"
+#include "Runtime/FingerPath.h"
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
 #include "Runtime/ServoParameters.h"
@@ -26,6 +27,9 @@ struct LockstepSettings
 
 /// Number of servo ticks that cover [start, end] at `rate` (both ends included).
 std::uint64_t ticksCovering(double start, double end, double rate);
+
+/// The lockstep run that plays all of `path` at `rate`: from its first sample to its last.
+LockstepSettings lockstepCovering(const FingerPath& path, double rate);
 
 /// Runs settings.numTicks ticks and hands each tick's state to `onTick`, in order; with
 /// `dynamics`, each tick ends with its bodies' step.

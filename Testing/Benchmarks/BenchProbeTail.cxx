@@ -338,10 +338,7 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius,
   solver->setScene(&scene, parameters);
   solver->resetProxy(path.positions.front());
   auto replay = std::make_unique<TickReplay>(repeats);
-  LockstepSettings settings;
-  settings.rate = kRate;
-  settings.startTime = path.startTime();
-  settings.numTicks = ticksCovering(path.startTime(), path.endTime(), kRate);
+  const LockstepSettings settings = lockstepCovering(path, kRate);
   SimulatedDevice device(path);
   const ServoParameters servo;
   Ticks ticks;

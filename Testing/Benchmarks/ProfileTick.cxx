@@ -49,10 +49,7 @@ int main(int argc, char** argv)
   solver->resetProxy(path.positions.front());
   auto start = std::make_unique<ProxySolver>(*solver);
   auto replica = std::make_unique<ProxySolver>(*solver);
-  LockstepSettings settings;
-  settings.rate = kRate;
-  settings.startTime = path.startTime();
-  settings.numTicks = ticksCovering(path.startTime(), path.endTime(), kRate);
+  const LockstepSettings settings = lockstepCovering(path, kRate);
   SimulatedDevice device(path);
   const ServoParameters servo;
   long tick = 0;

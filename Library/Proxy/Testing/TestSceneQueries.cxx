@@ -697,7 +697,7 @@ namespace
 {
 // The candidate cache reads each triangle's filter record made when the object was built
 // (TriangleFilter.h). A record must bound its triangle, and a cache over an object without
-// records (made then from the corners) must answer every sweep and gather the same, bit for bit.
+// records (made then from the corners) must answer every sweep the same, bit for bit.
 TEST(TriangleFilterRecords, BoundTheirTrianglesAndAnswerAsRecordsMadeFromTheCorners)
 {
   CollisionScene recorded;
