@@ -206,13 +206,27 @@ TEST(ThreadedRuntime, StreamsEveryServoTickToAReaderWhileRunning)
   // One state per servo tick, in order: the servo's own count, and tick numbers that only rise
   // (a late servo skips the ticks it missed).
   EXPECT_EQ(streamed.size(), runtime.servoStatistics().ticks);
-  std::uint64_t contactTicks = 0;
   for (std::size_t i = 1; i < streamed.size(); ++i)
   {
     ASSERT_GT(streamed[i].tick, streamed[i - 1].tick);
-    contactTicks += streamed[i].numContacts > 0 ? 1 : 0;
   }
-  EXPECT_GT(contactTicks, 100u);
+  // The stream carries the contacts, tick by tick. How many ticks a starved servo ran is not
+  // known in advance (a late one skips ticks), so each streamed tick is checked on its own: where
+  // the proxy step's finger was well inside the sphere offset by the proxy radius, the tick is in
+  // contact. The proxy step read the finger `proxyAge` earlier, when it was at most the path's
+  // speed times that age from this tick's finger; 1 mm covers the facets' sag (22 um here).
+  const double offset = 0.05 + proxyParameters().radius;
+  std::uint64_t deepTicks = 0;
+  for (const HapticState& state : streamed)
+  {
+    const double depth = offset - norm(state.finger) - 0.2 * state.proxyAge;
+    if (depth > 1e-3 && !state.proxyStale)
+    {
+      ++deepTicks;
+      EXPECT_GT(state.numContacts, 0) << "tick " << state.tick << " at depth " << depth;
+    }
+  }
+  EXPECT_GT(deepTicks, 0u) << "the press must have been streamed";
   // The last streamed state is the one the runtime published last.
   const HapticState latest = runtime.latestState();
   EXPECT_EQ(streamed.back().tick, latest.tick);
