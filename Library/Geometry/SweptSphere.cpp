@@ -148,8 +148,13 @@ SweepResult sweepSphereTriangle(const Vec3& start, const Vec3& motion, double ra
   return sweepSphereTriangleWithSkin(start, motion, radius, 0.0, triangle);
 }
 
-SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
-                                        double skin, const TriangleCorners& triangle)
+namespace
+{
+// The contact rule of sweepSphereTriangleWithSkin; `closestToStart` gives the triangle's closest
+// point to the start (closestPointOnTriangle), asked for only when the plane does not settle it.
+template <typename ClosestToStart>
+SweepResult sweepWithSkin(const Vec3& start, const Vec3& motion, double radius, double skin,
+                          const TriangleCorners& triangle, const ClosestToStart& closestToStart)
 {
   const double freshRadius = radius + skin;
   // The distance to the plane bounds the distance to the triangle from below: a start farther
@@ -165,8 +170,7 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
       return sweepFromOutside(start, motion, freshRadius, triangle);
     }
   }
-  const ClosestPointResult closest =
-    closestPointOnTriangle(start, triangle.a, triangle.b, triangle.c);
+  const KnownClosestPoint closest = closestToStart();
   const double startDistance = std::sqrt(closest.squaredDistance);
   double contactRadius = freshRadius;
   if (startDistance < radius + 1.5 * skin)
@@ -205,6 +209,24 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
     return SweepResult{};
   }
   return sweepFromOutside(start, motion, contactRadius, triangle);
+}
+} // namespace
+
+SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
+                                        double skin, const TriangleCorners& triangle)
+{
+  return sweepWithSkin(start, motion, radius, skin, triangle, [&] {
+    const ClosestPointResult closest =
+      closestPointOnTriangle(start, triangle.a, triangle.b, triangle.c);
+    return KnownClosestPoint{closest.point, closest.squaredDistance};
+  });
+}
+
+SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
+                                        double skin, const TriangleCorners& triangle,
+                                        const KnownClosestPoint& closestToStart)
+{
+  return sweepWithSkin(start, motion, radius, skin, triangle, [&] { return closestToStart; });
 }
 
 } // namespace proxima

@@ -34,4 +34,19 @@ SweepResult sweepSphereTriangle(const Vec3& start, const Vec3& motion, double ra
 SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
                                         double skin, const TriangleCorners& triangle);
 
+/// A triangle's closest point to a point and its squared distance, as closestPointOnTriangle
+/// gives them.
+struct KnownClosestPoint
+{
+  Vec3 point;
+  double squaredDistance = 0.0;
+};
+
+/// The same, for a caller that already has the triangle's closest point to `start` (the contact
+/// planes of the update stage are gathered where the next sweep starts): the answer is the same,
+/// bit for bit, without asking for that point again.
+SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, double radius,
+                                        double skin, const TriangleCorners& triangle,
+                                        const KnownClosestPoint& closestToStart);
+
 } // namespace proxima

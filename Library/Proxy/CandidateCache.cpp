@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace proxima
 {
@@ -52,6 +53,17 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
   m_reach = reach;
   m_valid = true;
   m_lastBlocker = -1;
+  forgetClosestPoints();
+}
+
+void CandidateCache::forgetClosestPoints() const
+{
+  if (++m_closestGeneration == 0)
+  {
+    // The counter wrapped (after four billion ticks): wipe the stamps so none can match.
+    std::fill(m_closestStamp, m_closestStamp + kCapacity, 0u);
+    m_closestGeneration = 1;
+  }
 }
 
 namespace
@@ -289,6 +301,11 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
 {
   std::uint32_t found = 0;
   const double maxDistanceSquared = maxDistance * maxDistance;
+  if (std::memcmp(&point, &m_closestFrom, sizeof point) != 0)
+  {
+    forgetClosestPoints();
+    m_closestFrom = point;
+  }
   int near[kCapacity];
   const int numNear = keepNearEdges(scene, point, Vec3{}, maxDistance, near,
                                     trianglesNearPoint(point, maxDistance, near));
@@ -298,6 +315,8 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
     ++stats.trianglesTested;
     const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
     const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
+    m_closestStamp[i] = m_closestGeneration;
+    m_closestToStart[i] = KnownClosestPoint{closest.point, closest.squaredDistance};
     if (closest.squaredDistance <= maxDistanceSquared)
     {
       if (found < capacity)
@@ -350,6 +369,8 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   const double motionSquared = dot(motion, motion);
   const double beyond = query.radius + query.skin;
   int blocker = -1;
+  // The gather at the sweep's start found closest points this sweep can take.
+  const bool fromGathered = std::memcmp(&query.start, &m_closestFrom, sizeof query.start) == 0;
   auto test = [&](int i) {
     // Only the part of the path before the best contact so far (or the covered part) can give
     // an earlier one.
@@ -361,7 +382,10 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
     ++stats.trianglesTested;
     const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
     const SweepResult hit =
-      sweepSphereTriangleWithSkin(query.start, motion, query.radius, query.skin, c);
+      fromGathered && m_closestStamp[i] == m_closestGeneration
+        ? sweepSphereTriangleWithSkin(query.start, motion, query.radius, query.skin, c,
+                                      m_closestToStart[i])
+        : sweepSphereTriangleWithSkin(query.start, motion, query.radius, query.skin, c);
     const bool earlier =
       !best.hit || hit.t < best.t ||
       (hit.t == best.t && (m_object[i] < best.object ||

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "Geometry/SphereTree.h"
+#include "Geometry/SweptSphere.h"
 #include "Proxy/CollisionScene.h"
 
 #include <cstdint>
@@ -57,8 +58,15 @@ public:
     return m_valid && norm(point - m_center) + distance <= m_reach;
   }
 
+  /// Forgets the closest points that gatherWithin keeps for the next sweep (the geometry may
+  /// have moved since: the solver calls it when a tick begins).
+  void forgetClosestPoints() const;
+
   /// Every cached triangle within `maxDistance` of `point`; returns the count, writes at most
-  /// `capacity`. Call only when coversBall(point, maxDistance).
+  /// `capacity`. Call only when coversBall(point, maxDistance). The closest points it finds are
+  /// kept until the next gather elsewhere, forgetClosestPoints or rebuild: a sweep from `point`
+  /// (the update stage gathers the contact planes where the move stage's sweep starts) takes
+  /// them instead of asking again, with the same answer bit for bit.
   std::uint32_t gatherWithin(const CollisionScene& scene, const Vec3& point, double maxDistance,
                              NearbyTriangle* out, std::uint32_t* outObjects, std::uint32_t capacity,
                              QueryStats& stats) const;
@@ -137,6 +145,14 @@ private:
   /// The cached triangle of the last sweep's contact, or -1 (a hint for the next sweep's order:
   /// mutable, as it changes no answer).
   mutable int m_lastBlocker = -1;
+  // The closest point of cached triangle i to m_closestFrom where m_closestStamp[i] is
+  // m_closestGeneration: what the last gather there found, for a sweep from that point. A
+  // fan of slivers around a vertex puts a hundred triangles or more in contact, and each was
+  // asked for its closest point twice an iteration. Mutable, as it changes no answer.
+  mutable Vec3 m_closestFrom;
+  mutable std::uint32_t m_closestGeneration = 1;
+  mutable std::uint32_t m_closestStamp[kCapacity] = {};
+  mutable KnownClosestPoint m_closestToStart[kCapacity];
 };
 
 } // namespace proxima

@@ -210,6 +210,8 @@ void ProxySolver::followMovingObjects(ProxyTickResult& result)
 
 void ProxySolver::refreshCache(QueryStats& stats)
 {
+  // The geometry may have moved since the last tick's gathers.
+  m_cache.forgetClosestPoints();
   if (!cacheNeedsRebuild())
   {
     return;

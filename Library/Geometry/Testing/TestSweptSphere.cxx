@@ -26,6 +26,7 @@
 // tol / |d'(t)| when the distances move by tol, hence the t tolerance; for paths crossing the
 // surface at more than 1/1000 of their length per unit t that is below 1e-9 * S / |motion|, the
 // 1e-9 relative asked of t; the tests print the worst |t_k - t_oracle| they saw.
+#include "Geometry/ClosestPoint.h"
 #include "Geometry/SweptSphere.h"
 
 #include "GeometryTestSupport.h"
@@ -36,6 +37,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace proxima::test
@@ -375,6 +377,35 @@ TEST(SweepSphereTriangleWithSkin, FollowsItsDocumentedRuleOnDegenerateTriangles)
                        {TriangleShape::Needle, TriangleShape::Cap, TriangleShape::Collinear,
                         TriangleShape::Coincident},
                        12.0, true);
+}
+
+// A caller that already has the triangle's closest point to the start (the candidate cache, from
+// the gather at the same point) gets the same sweep, bit for bit, on every kind of triangle and
+// start, in contact or not.
+TEST(SweepSphereTriangleWithSkin, GivenTheClosestPointAnswersBitForBitAsWithout)
+{
+  Random random(0x5ee90006);
+  const TriangleShape shapes[] = {TriangleShape::Fat, TriangleShape::Needle, TriangleShape::Cap,
+                                  TriangleShape::Collinear, TriangleShape::Coincident};
+  int hits = 0;
+  for (int trial = 0; trial < 6000; ++trial)
+  {
+    const TriangleShape shape = shapes[trial % std::size(shapes)];
+    const Scale scale = kScales[(trial / std::size(shapes)) % std::size(kScales)];
+    SweepCase c = makeSweepCase(random, shape, scale.size, random.direction() * scale.offset,
+                                random.logUniform(0.0, 12.0), trial % 4);
+    c.skin = c.radius * random.logUniform(-4.0, -0.5);
+    const TriangleCorners& t = c.triangle;
+    const ClosestPointResult closest = closestPointOnTriangle(c.start, t.a, t.b, t.c);
+    const SweepResult asked = sweepSphereTriangleWithSkin(c.start, c.motion, c.radius, c.skin, t);
+    const SweepResult given =
+      sweepSphereTriangleWithSkin(c.start, c.motion, c.radius, c.skin, t,
+                                  KnownClosestPoint{closest.point, closest.squaredDistance});
+    ASSERT_EQ(asked.hit, given.hit) << describe(c);
+    ASSERT_EQ(std::memcmp(&asked.t, &given.t, sizeof asked.t), 0) << describe(c);
+    hits += asked.hit ? 1 : 0;
+  }
+  EXPECT_GT(hits, 600); // the trials reach hits as well as misses
 }
 
 /// Axis-aligned setups whose answers are known in closed form and whose tangencies are exact in
