@@ -371,11 +371,16 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   int blocker = -1;
   // The gather at the sweep's start found closest points this sweep can take.
   const bool fromGathered = std::memcmp(&query.start, &m_closestFrom, sizeof query.start) == 0;
+  // The bound the filter pass below applied: a triangle it kept passes mayReachSegment at that
+  // bound (the pass makes the same tests, term for term), so only a bound that has shrunk since
+  // is worth testing again (negative: no pass yet).
+  double filtered = -1.0;
   auto test = [&](int i) {
     // Only the part of the path before the best contact so far (or the covered part) can give
     // an earlier one.
     const double bound = best.hit ? best.t : covered;
-    if (!mayReachSegment(i, query.start, motion * bound, motionSquared * bound * bound, beyond))
+    if (bound != filtered &&
+        !mayReachSegment(i, query.start, motion * bound, motionSquared * bound * bound, beyond))
     {
       return;
     }
@@ -410,6 +415,7 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   const int numNear =
     keepNearEdges(scene, query.start, motion * bound, beyond, near,
                   trianglesNearSegment(query.start, motion * bound, beyond, near));
+  filtered = bound;
   for (int k = 0; k < numNear; ++k)
   {
     if (near[k] != first)
