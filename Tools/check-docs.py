@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails on a damaged or broken Markdown page (issue 14, item 7): a page over 200 KB, a block of
+"""Fails on a damaged or broken Markdown page: a page over 200 KB, a block of
 three or more lines repeated more than 50 times (a hand edit once pasted a table between every
 character of a 136-line page), or a relative link to a file that does not exist. Reads the pages
 git tracks; prints one line per defect naming the page, and exits 1 if there is any.

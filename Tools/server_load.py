@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The live server under load (issue 16; Documentation/Server.md): `proxima serve --device sim`
+"""The live server under load (Documentation/Server.md): `proxima serve --device sim`
 holding a still finger at 1 kHz for RUN_SECONDS, once with no client (the floor of the same
 server), once with a client following the state at 1 kHz (the stream's latency), once with
 that client and another uploading the shared 1.5M-triangle skull, and once with that client and

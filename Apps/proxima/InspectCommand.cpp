@@ -1,4 +1,4 @@
-// `proxima inspect`: the defect report of a mesh (issue 18; Documentation/CadInspector.md): is it
+// `proxima inspect`: the defect report of a mesh (Documentation/CadInspector.md): is it
 // closed, its holes, non-manifold and misoriented edges, degenerate and duplicate triangles and
 // pieces, each counted with the places of the first few, written as JSON. Counts are of the file's
 // own geometry: corners merge only where their coordinates are identical. With a tool radius, also

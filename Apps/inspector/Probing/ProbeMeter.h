@@ -1,4 +1,4 @@
-// Clearance by touch (issue 18, Documentation/CadInspector.md): what a probing session measured,
+// Clearance by touch (Documentation/CadInspector.md): what a probing session measured,
 // tick by tick, with the proxy at the tool's radius as the probe. The proxy never enters the part,
 // so it answers by itself whether a point is reachable; the meter records
 //   - markers: the touched surface point (the contact nearest the proxy's centre) when asked;

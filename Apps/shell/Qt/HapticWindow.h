@@ -1,5 +1,4 @@
-// The applications' Qt main window (issue 17; the surgical trainer's, and the CAD inspector's to
-// come): VTK's Qt widget showing a scene through the vtkHaptic* classes with the threaded runtime
+// The applications' Qt main window (the surgical trainer's and the CAD inspector's): VTK's Qt widget showing a scene through the vtkHaptic* classes with the threaded runtime
 // behind it, and around it what every haptic application needs:
 //   - a Device menu: the mouse (the default: the cursor aims the finger, the wheel or a held
 //     space bar presses, Backspace lifts), a SpaceMouse, a Falcon, or a recorded session replayed;

@@ -1,5 +1,5 @@
-// What a CAD engineer asks of a mesh before it goes to a printer or a simulator (issue 18,
-// `proxima inspect`): is it closed, where are its holes, its non-manifold and misoriented edges,
+// What a CAD engineer asks of a mesh before it goes to a printer or a simulator
+// (`proxima inspect`): is it closed, where are its holes, its non-manifold and misoriented edges,
 // its degenerate and duplicate triangles, how many pieces it has. Counts are of the file's own
 // geometry: corners are the same vertex only where their coordinates are identical (bit for bit,
 // but for the sign of zero), as an STL file repeats them; nothing is welded at a tolerance.

@@ -1,4 +1,4 @@
-// Where a ball tool of radius R cannot touch a part (issue 18, `proxima inspect --tool-radius`):
+// Where a ball tool of radius R cannot touch a part (`proxima inspect --tool-radius`):
 // the floors of gaps and pockets narrower than the tool, and the strips along inner corners that
 // a ball rounds over. A ball-ended probe, a ball-nose cutter or the haptic proxy itself touches a
 // point p of a face only with the ball tangent there, centred at p + R n on the face's free side
