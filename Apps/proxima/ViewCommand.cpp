@@ -612,9 +612,10 @@ int view(const ViewOptions& options)
     screenshotFile->commit();
     device.finish();
     char line[512];
-    std::snprintf(line, sizeof line, "%dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n",
-                  options.width, options.height, state.time, lockstep ? "lockstep" : "real time",
-                  state.numContacts, state.stuck ? " (sticking)" : "", norm(state.force));
+    std::snprintf(
+      line, sizeof line, "%dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n", options.width,
+      options.height, state.time, lockstep ? "lockstep" : "real time", state.numContacts,
+      state.conditions.has(TickCondition::stuck) ? " (sticking)" : "", norm(state.force));
     writeStandardOutput(options.screenshot + ": " + line);
     return kExitOk;
   }

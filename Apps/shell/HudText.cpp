@@ -31,9 +31,10 @@ std::string hapticStatusText(const HapticState& state, const LoopStatistics& ser
   char text[400];
   std::snprintf(text, sizeof text,
                 "t %.3f s   %s%s%s\nforce %.3f N\nservo %.0f Hz   p99 jitter %.1f us   missed %llu",
-                state.time, touched, state.stuck ? "   sticking" : "",
-                state.fading ? "   FADING" : "", norm(state.force), servo.rate,
-                servo.jitterQuantileNanoseconds(0.99) / 1000.0,
+                state.time, touched,
+                state.conditions.has(TickCondition::stuck) ? "   sticking" : "",
+                state.conditions.has(TickCondition::forceFading) ? "   FADING" : "",
+                norm(state.force), servo.rate, servo.jitterQuantileNanoseconds(0.99) / 1000.0,
                 static_cast<unsigned long long>(servo.missedDeadlines));
   return text;
 }

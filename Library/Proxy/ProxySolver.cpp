@@ -195,7 +195,7 @@ void ProxySolver::followMovingObjects(ProxyTickResult& result)
     {
       const Vec3 stopped = query.start + (query.end - query.start) * contact.t;
       m_proxy = moving.pose.apply(stopped);
-      result.pushedByObject = true;
+      result.conditions.set(TickCondition::pushedByObject);
     }
     moving.mesh.placeAs(object.mesh, moving.pose);
     moving.applied = moving.pose;
@@ -764,11 +764,11 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
 {
   ProxyTickResult result;
   result.proxy = m_proxy;
-  result.startedOutside = m_startedOutsidePending;
+  result.conditions.set(TickCondition::startedOutside, m_startedOutsidePending);
   m_startedOutsidePending = false;
   if (!isFinite(requestedFinger))
   {
-    result.refusedFinger = true;
+    result.conditions.set(TickCondition::fingerRefused);
     return result;
   }
   if (m_moving != nullptr)
@@ -891,7 +891,10 @@ void ProxySolver::solveAtProxy(ProxyTickState& tick, ProxyTickResult& result)
 
 void ProxySolver::gatherPlanesInto(const Vec3& position, ProxyTickResult& result)
 {
-  result.contactOverflow = !gatherPlanes(position, result.queries) || result.contactOverflow;
+  if (!gatherPlanes(position, result.queries))
+  {
+    result.conditions.set(TickCondition::contactOverflow);
+  }
 }
 
 void ProxySolver::updateStage(ProxyTickState& tick, ProxyTickResult& result)
@@ -917,7 +920,10 @@ void ProxySolver::applyFriction(ProxyTickState& tick, ProxyTickResult& result) c
   // Paper 4.1: inside a static friction cone the subgoal is the proxy itself.
   if (insideStaticCone(tick.finger - m_proxy))
   {
-    result.stuck = result.stuck || result.iterations == 0; // held where the tick began
+    if (result.iterations == 0)
+    {
+      result.conditions.set(TickCondition::stuck); // held where the tick began
+    }
     solution.displacement = Vec3{};
     return;
   }
@@ -925,7 +931,7 @@ void ProxySolver::applyFriction(ProxyTickState& tick, ProxyTickResult& result) c
   const double allowed = frictionLimitedTravel(solution, travel, tick.viscous.budget);
   if (allowed < travel)
   {
-    result.frictionLimited = true;
+    result.conditions.set(TickCondition::frictionLimited);
     solution.displacement = solution.displacement * (allowed / travel);
   }
 }
@@ -953,12 +959,12 @@ bool ProxySolver::outOfWork(const ProxyTickState& tick, ProxyTickResult& result)
 {
   if (result.iterations == m_parameters.maxIterations)
   {
-    result.hitIterationCap = true;
+    result.conditions.set(TickCondition::hitIterationCap);
     return true;
   }
   if (tick.budget.spent(result.iterations))
   {
-    result.budgetLimited = true;
+    result.conditions.set(TickCondition::budgetLimited);
     return true;
   }
   return false;

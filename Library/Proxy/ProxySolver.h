@@ -5,6 +5,7 @@
 #pragma once
 
 #include "Core/RigidTransform.h"
+#include "Core/TickConditions.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SphereTree.h"
 #include "Proxy/CandidateCache.h"
@@ -59,29 +60,17 @@ struct ProxyTickResult
   ContactPlane contacts[3];
   /// Move stages run this tick.
   int iterations = 0;
-  /// The iteration cap ended the tick before the proxy stopped moving.
-  bool hitIterationCap = false;
-  /// The tick's work budget (ProxyParameters::tickBudget*) ended it before the proxy stopped.
-  bool budgetLimited = false;
-  /// A moving object (setObjectPose) came into the proxy at the tick's start and pushed it along
-  /// (paper section 6) before the proxy sought the finger.
-  bool pushedByObject = false;
-  /// The finger position was not finite: the tick was refused and the proxy held.
-  bool refusedFinger = false;
-  /// The first update after resetProxyOutside: the proxy began this tick outside the closed
-  /// object the finger is in, not at the finger.
-  bool startedOutside = false;
-  /// More primitives were within reach than the fixed buffers hold (planes were dropped).
-  bool contactOverflow = false;
-  /// The exact fallback answered the goal problem at least once this tick.
+  /// The conditions the update met: of TickConditions, the solver sets budgetLimited,
+  /// hitIterationCap, pushedByObject (a moving object, setObjectPose, pushed the proxy at the
+  /// tick's start), fingerRefused (the finger was not finite: the tick was refused and the proxy
+  /// held), startedOutside (the first update after resetProxyOutside), contactOverflow, stuck and
+  /// frictionLimited.
+  TickConditions conditions;
+  /// Diagnostics, not conditions of the tick (the trace does not record them): the exact fallback
+  /// answered the goal problem at least once, and a shaded plane took part in the update stage
+  /// (two passes, paper section 3).
   bool usedExactFallback = false;
-  /// A shaded plane took part in the update stage this tick (two passes, paper section 3).
   bool usedShading = false;
-  /// Static friction held the proxy where the tick began: the finger was inside a contact's
-  /// friction cone (4.1).
-  bool stuck = false;
-  /// Dynamic or viscous friction shortened a slide this tick (4.2).
-  bool frictionLimited = false;
   /// The factor on the servo's stiffness from stiffness maps at the contacts, weighted by their
   /// depths (1 without contact or maps).
   double stiffnessScale = 1.0;

@@ -7,6 +7,7 @@
 // so a copy is a snapshot.
 #pragma once
 
+#include "Core/TickConditions.h"
 #include "Core/Vec3.h"
 #include "Runtime/HapticDevice.h"
 
@@ -67,25 +68,8 @@ struct HapticState
   double stiffnessScale = 1.0;
   /// Wall time of the proxy update in nanoseconds: the one field that is not deterministic.
   std::int64_t solveNanoseconds = 0;
-  /// A moving body came into the proxy at the tick's start and pushed it (paper section 6).
-  bool pushedByObject = false;
   /// Wall time of the dynamics step (TickDynamics.h) in nanoseconds; 0 in a scene without bodies.
   std::int64_t dynamicsNanoseconds = 0;
-  /// The sample held no usable finger (invalid, device lost, or not finite): the proxy held.
-  bool fingerRefused = false;
-  bool hitIterationCap = false;
-  /// More primitives were within reach than the solver's fixed buffers hold.
-  bool contactOverflow = false;
-  /// Static friction held the proxy (the finger is inside a cone: sticking); dynamic or viscous
-  /// friction shortened its slide.
-  bool stuck = false;
-  bool frictionLimited = false;
-  /// The tick's work budget (ProxyParameters::tickBudget*) stopped the proxy before it settled:
-  /// feasible, but not yet at the constrained minimum; the next tick goes on from there.
-  bool budgetLimited = false;
-  /// The proxy began this tick at a start moved out of the closed object that held the finger
-  /// (ProxyStart.h), at the start of the run or at a scene install: the force ramps in.
-  bool startedOutside = false;
   /// Version of the scene the proxy step ran on (ThreadedRuntime::publishScene).
   std::uint64_t sceneVersion = 0;
   /// Seconds between this tick and the finger sample the proxy was computed from: 0 in
@@ -95,38 +79,25 @@ struct HapticState
   // The force step (ServoForce.h).
   /// Force commanded to the device (on the finger), after clamping, rate limiting and fading.
   Vec3 force;
-  bool forceClamped = false;
-  /// The force was fading (proxy loop stalled, device lost, or coming back after either), the
-  /// device was lost, the proxy state was older than the watchdog allows, or the force's rate of
-  /// change was limited after a scene change.
-  bool fading = false;
-  bool deviceLost = false;
+  /// The proxy loop's state was older than the watchdog allows (ServoParameters::watchdogTimeout),
+  /// so the force faded. Not a condition of the tick: the trace records the fade (forceFading).
   bool proxyStale = false;
-  bool rateLimited = false;
+
+  /// What the tick met: the proxy step's conditions (kProxyStepConditions, passed on from the
+  /// solver) and the force step's (kForceStepConditions). `conditions.bits()` is the trace's
+  /// `flags` column.
+  TickConditions conditions;
 };
 
-/// The bits of trace v2's `flags` column (Documentation/CommandLine.md). Values are part of the
-/// file format: append new bits, never renumber.
-enum TickFlag : std::uint32_t
-{
-  kTickBudgetLimited = 1u << 0,
-  kTickIterationCap = 1u << 1,
-  kTickForceClamped = 1u << 2,
-  kTickForceFading = 1u << 3,
-  kTickDeviceLost = 1u << 4,
-  kTickFingerRefused = 1u << 5,
-  kTickStuck = 1u << 6,
-  kTickFrictionLimited = 1u << 7,
-  kTickContactOverflow = 1u << 8,
-  kTickForceRateLimited = 1u << 9,
-  kTickStartedOutside = 1u << 10,
-  kTickPushedByObject = 1u << 11,
-};
-
-/// The state's conditions as a TickFlag bitmask.
-std::uint32_t tickFlags(const HapticState& state);
-/// Sets the state's conditions from a TickFlag bitmask (the inverse of tickFlags): for a state
-/// rebuilt from a trace row or a remote run's stream.
-void setTickFlags(HapticState& state, std::uint32_t flags);
+/// The conditions the proxy step (HapticStep.h: stepProxy) reports: the solver's, and
+/// fingerRefused for a sample it did not give the solver.
+inline constexpr TickConditions kProxyStepConditions =
+  TickCondition::budgetLimited | TickCondition::hitIterationCap | TickCondition::fingerRefused |
+  TickCondition::stuck | TickCondition::frictionLimited | TickCondition::contactOverflow |
+  TickCondition::startedOutside | TickCondition::pushedByObject;
+/// The conditions the force step (ServoForce.h) reports.
+inline constexpr TickConditions kForceStepConditions =
+  TickCondition::forceClamped | TickCondition::forceFading | TickCondition::deviceLost |
+  TickCondition::forceRateLimited;
 
 } // namespace proxima

@@ -22,7 +22,6 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
     std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
   state.proxy = solver.proxy();
   state.proxyRadius = solver.radius();
-  state.fingerRefused = !usable || result.refusedFinger;
 
   state.numContacts = result.numContacts < 3 ? result.numContacts : 3;
   for (int i = 0; i < state.numContacts; ++i)
@@ -41,13 +40,13 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
   state.iterations = result.iterations;
   state.trianglesTested = result.queries.trianglesTested;
   state.stiffnessScale = result.stiffnessScale;
-  state.hitIterationCap = result.hitIterationCap;
-  state.contactOverflow = result.contactOverflow;
-  state.stuck = result.stuck;
-  state.frictionLimited = result.frictionLimited;
-  state.budgetLimited = result.budgetLimited;
-  state.startedOutside = result.startedOutside;
-  state.pushedByObject = result.pushedByObject;
+  // The proxy step's conditions are the solver's, and a refused sample's; the force step's are
+  // left as they are for ServoForce to set.
+  state.conditions = state.conditions.without(kProxyStepConditions) | result.conditions;
+  if (!usable)
+  {
+    state.conditions.set(TickCondition::fingerRefused);
+  }
 }
 
 HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,

@@ -48,18 +48,18 @@ void RunSummary::add(const HapticState& record)
   m_contactTicks += record.numContacts > 0 ? 1 : 0;
   m_totalIterations += static_cast<std::uint64_t>(record.iterations);
   m_maxIterations = std::max(m_maxIterations, record.iterations);
-  m_capTicks += record.hitIterationCap ? 1 : 0;
-  m_refusedTicks += record.fingerRefused ? 1 : 0;
-  m_overflowTicks += record.contactOverflow ? 1 : 0;
-  m_clampedTicks += record.forceClamped ? 1 : 0;
-  m_fadingTicks += record.fading ? 1 : 0;
-  m_deviceLostTicks += record.deviceLost ? 1 : 0;
-  m_stuckTicks += record.stuck ? 1 : 0;
-  m_frictionLimitedTicks += record.frictionLimited ? 1 : 0;
-  m_startedOutsideTicks += record.startedOutside ? 1 : 0;
+  m_capTicks += record.conditions.has(TickCondition::hitIterationCap) ? 1 : 0;
+  m_refusedTicks += record.conditions.has(TickCondition::fingerRefused) ? 1 : 0;
+  m_overflowTicks += record.conditions.has(TickCondition::contactOverflow) ? 1 : 0;
+  m_clampedTicks += record.conditions.has(TickCondition::forceClamped) ? 1 : 0;
+  m_fadingTicks += record.conditions.has(TickCondition::forceFading) ? 1 : 0;
+  m_deviceLostTicks += record.conditions.has(TickCondition::deviceLost) ? 1 : 0;
+  m_stuckTicks += record.conditions.has(TickCondition::stuck) ? 1 : 0;
+  m_frictionLimitedTicks += record.conditions.has(TickCondition::frictionLimited) ? 1 : 0;
+  m_startedOutsideTicks += record.conditions.has(TickCondition::startedOutside) ? 1 : 0;
   m_trianglesTested += record.trianglesTested;
   m_maxForce = std::max(m_maxForce, norm(record.force));
-  if (record.budgetLimited)
+  if (record.conditions.has(TickCondition::budgetLimited))
   {
     ++m_budgetLimitedTicks;
     ++m_limitedRun;
@@ -72,7 +72,7 @@ void RunSummary::add(const HapticState& record)
   }
   m_solveNanoseconds.push_back(record.solveNanoseconds);
   m_sorted = false;
-  m_pushedTicks += record.pushedByObject ? 1 : 0;
+  m_pushedTicks += record.conditions.has(TickCondition::pushedByObject) ? 1 : 0;
   if (record.dynamicsNanoseconds > 0)
   {
     m_dynamicsNanoseconds.push_back(record.dynamicsNanoseconds);

@@ -35,13 +35,13 @@ public:
   /// Quantile q in [0, 1] of the per-tick solve time in nanoseconds (nearest rank).
   double solveNanosecondsQuantile(double q) const;
   double meanTrianglesTested() const;
-  /// Ticks a moving body pushed the proxy (HapticState::pushedByObject).
+  /// Ticks a moving body pushed the proxy (TickCondition::pushedByObject).
   std::uint64_t pushedTicks() const { return m_pushedTicks; }
   /// Quantile q in [0, 1] of the dynamics step's time per tick (ticks of a scene with bodies; 0
   /// without).
   double dynamicsNanosecondsQuantile(double q) const;
 
-  /// Ticks the work budget stopped before the proxy settled (HapticState::budgetLimited).
+  /// Ticks the work budget stopped before the proxy settled (TickCondition::budgetLimited).
   std::uint64_t budgetLimitedTicks() const { return m_budgetLimitedTicks; }
   /// The distance in metres between where a budget-limited tick ended and where the same tick
   /// ends without a budget (measured by the caller, e.g. BudgetResidualProbe); one per call.

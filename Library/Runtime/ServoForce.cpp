@@ -19,9 +19,9 @@ ServoForce::ServoForce(const ServoParameters& parameters, const DeviceLimits& li
 void ServoForce::step(const TickInput& input, HapticState& state)
 {
   // Only this stage sets these; a state handed in twice must not keep the last tick's.
-  state.forceClamped = false;
-  state.fading = false;
-  state.rateLimited = false;
+  state.conditions.clear(TickCondition::forceClamped);
+  state.conditions.clear(TickCondition::forceFading);
+  state.conditions.clear(TickCondition::forceRateLimited);
   const double dt = m_started ? std::max(0.0, input.time - m_lastTime) : 0.0;
   m_started = true;
   m_lastTime = input.time;
@@ -36,19 +36,20 @@ void ServoForce::step(const TickInput& input, HapticState& state)
   m_sceneVersion = state.sceneVersion;
   // A proxy moved out of the object that holds the finger is far from it, a full clamped force
   // at once: ramp it in at the scene change's rate instead (from the last force, 0 at a start).
-  if (state.startedOutside)
+  if (state.conditions.has(TickCondition::startedOutside))
   {
     m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
   }
 
-  state.deviceLost = !input.sample.connected;
+  const bool deviceLost = !input.sample.connected;
+  state.conditions.set(TickCondition::deviceLost, deviceLost);
   state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;
   Vec3 force;
   // The spring's extension (proxy minus finger): the direction of a force whose magnitude
   // overflowed.
   Vec3 stretch;
   bool held = false;
-  if (state.deviceLost || state.proxyStale)
+  if (deviceLost || state.proxyStale)
   {
     // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
     // far from it while the proxy loop was stuck.
@@ -64,12 +65,12 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     force = m_fadeFrom * m_fadeLevel;
     // Once the fault clears, the spring comes back from the level the fade reached.
     m_gain = m_fadeLevel;
-    state.fading = true;
+    state.conditions.set(TickCondition::forceFading);
   }
   else
   {
     m_faulted = false;
-    const bool usable = input.sample.valid && !state.fingerRefused;
+    const bool usable = input.sample.valid && !state.conditions.has(TickCondition::fingerRefused);
     if (usable)
     {
       // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
@@ -81,7 +82,7 @@ void ServoForce::step(const TickInput& input, HapticState& state)
         m_gain = m_gain + gainStep;
         m_gain = m_gain < 1.0 - kGainRounding ? m_gain : 1.0;
         force = force * m_gain;
-        state.fading = m_gain < 1.0;
+        state.conditions.set(TickCondition::forceFading, m_gain < 1.0);
       }
     }
     else
@@ -107,7 +108,7 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     force = std::isfinite(magnitude)
               ? force * (m_maxForce / magnitude)
               : overflowSafeDirection(isFinite(stretch) ? stretch : force) * m_maxForce;
-    state.forceClamped = true;
+    state.conditions.set(TickCondition::forceClamped);
   }
   if (input.time < m_rateLimitUntil)
   {
@@ -117,7 +118,7 @@ void ServoForce::step(const TickInput& input, HapticState& state)
     if (changeMagnitude > allowed)
     {
       force = m_lastForce + change * (allowed / changeMagnitude);
-      state.rateLimited = true;
+      state.conditions.set(TickCondition::forceRateLimited);
     }
   }
   m_lastForce = force;

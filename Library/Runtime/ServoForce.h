@@ -22,8 +22,9 @@ class ServoForce
 public:
   explicit ServoForce(const ServoParameters& parameters, const DeviceLimits& limits = {});
 
-  /// The force for the tick `input` from the proxy half of `state` (proxy, stiffnessScale,
-  /// fingerRefused, proxyAge, sceneVersion): sets the state's force fields.
+  /// The force for the tick `input` from the proxy half of `state` (proxy, stiffnessScale, its
+  /// fingerRefused and startedOutside conditions, proxyAge, sceneVersion): sets the state's force
+  /// fields and the force step's conditions (kForceStepConditions).
   void step(const TickInput& input, HapticState& state);
 
   const ServoParameters& parameters() const { return m_parameters; }

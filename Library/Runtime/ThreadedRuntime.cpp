@@ -251,9 +251,10 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       updated.tick = post.tick;
       updated.time = post.time;
       updated.finger = post.sample.position;
-      updated.fingerRefused = !(post.sample.valid && post.sample.connected);
-      updated.proxy = updated.fingerRefused ? solver->proxy() : post.sample.position;
-      if (!updated.fingerRefused)
+      const bool refused = !(post.sample.valid && post.sample.connected);
+      updated.conditions.set(TickCondition::fingerRefused, refused);
+      updated.proxy = refused ? solver->proxy() : post.sample.position;
+      if (!refused)
       {
         solver->resetProxy(post.sample.position);
       }

@@ -236,7 +236,8 @@ void vtkHapticStateRepresentation::UpdateContact(int i)
   // The cone of forces friction can hold, apex at the contact, around the normal into free
   // space: half-angle atan(mu_s) while sticking (the finger is inside it), atan(mu_d) while
   // slipping (the finger rides its rim). The force arrow lies inside a closed (sticking) cone.
-  const double mu = m_state.stuck ? contact.staticFriction : contact.dynamicFriction;
+  const double mu = m_state.conditions.has(proxima::TickCondition::stuck) ? contact.staticFriction
+                                                                          : contact.dynamicFriction;
   const double shown = mu > 0.0 ? mu : std::max(contact.staticFriction, contact.dynamicFriction);
   if (!(shown > 0.0))
   {
@@ -250,8 +251,9 @@ void vtkHapticStateRepresentation::UpdateContact(int i)
   m_coneSources[i]->SetDirection(-n.x, -n.y, -n.z);
   m_coneSources[i]->SetCenter(p.x + 0.5 * height * n.x, p.y + 0.5 * height * n.y,
                               p.z + 0.5 * height * n.z);
-  m_coneSources[i]->SetCapping(m_state.stuck ? 1 : 0);
-  const double* color = m_state.stuck ? kStickColor : kSlipColor;
+  m_coneSources[i]->SetCapping(m_state.conditions.has(proxima::TickCondition::stuck) ? 1 : 0);
+  const double* color =
+    m_state.conditions.has(proxima::TickCondition::stuck) ? kStickColor : kSlipColor;
   m_coneActors[i]->GetProperty()->SetColor(color[0], color[1], color[2]);
   m_coneActors[i]->VisibilityOn();
 }
@@ -266,5 +268,5 @@ void vtkHapticStateRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FingerOpacity: " << this->FingerOpacity << "\n";
   os << indent << "ContactDiscOpacity: " << this->ContactDiscOpacity << "\n";
   os << indent << "State: tick " << m_state.tick << ", " << m_state.numContacts << " contacts"
-     << (m_state.stuck ? ", stuck" : "") << "\n";
+     << (m_state.conditions.has(proxima::TickCondition::stuck) ? ", stuck" : "") << "\n";
 }

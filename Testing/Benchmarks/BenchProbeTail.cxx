@@ -350,7 +350,7 @@ Ticks play(const CollisionScene& scene, const FingerPath& path, double radius,
     // remembered before it.
     summary.add(record);
     const auto work = static_cast<double>(replay->workNanoseconds(record.finger));
-    if (record.budgetLimited)
+    if (record.conditions.has(TickCondition::budgetLimited))
     {
       const ProxyTickResult settled = replay->settledWithoutBudget(record.finger);
       addForceError(ticks, record.finger, record.proxy, settled.proxy, servo.stiffness);

@@ -105,7 +105,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Vec3 finger{fingerCoordinate(bytes.word()), fingerCoordinate(bytes.word()),
                       fingerCoordinate(bytes.word())};
     const ProxyTickResult result = solver.update(finger);
-    if (result.refusedFinger != !isFinite(finger))
+    if (result.conditions.has(TickCondition::fingerRefused) != !isFinite(finger))
     {
       finding("a finite finger was refused, or a non-finite one taken", tick);
     }

@@ -684,8 +684,11 @@ void TickChecker::reset(const Vec3& proxy)
 
 void TickChecker::check(std::uint64_t tick, const Vec3& finger, const ProxyTickResult& result)
 {
-  check(tick, finger, result.proxy, result.iterations, result.numContacts, result.refusedFinger,
-        result.hitIterationCap, result.contactOverflow, result.budgetLimited);
+  check(tick, finger, result.proxy, result.iterations, result.numContacts,
+        result.conditions.has(TickCondition::fingerRefused),
+        result.conditions.has(TickCondition::hitIterationCap),
+        result.conditions.has(TickCondition::contactOverflow),
+        result.conditions.has(TickCondition::budgetLimited));
 }
 
 double TickChecker::residual(const Vec3& proxy, const Vec3& finger, double* slide) const
@@ -966,7 +969,7 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
     const ProxyTickResult converged = m_replay->update(requestedFinger);
     const double lag = distance(converged.proxy, proxy);
     s.maxCapLag = std::max(s.maxCapLag, lag);
-    if (converged.hitIterationCap)
+    if (converged.conditions.has(TickCondition::hitIterationCap))
     {
       s.fail(s.nonTerminating,
              where() + ": the move/update loop does not terminate (still moving " + "after " +

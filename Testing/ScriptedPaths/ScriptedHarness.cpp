@@ -118,8 +118,10 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
   Vec3 previousForce;
   runLockstep(lockstep, solver, device, c.servo, [&](const HapticState& record) {
     checker.check(record.tick, record.finger, record.proxy, record.iterations, record.numContacts,
-                  record.fingerRefused, record.hitIterationCap, record.contactOverflow,
-                  record.budgetLimited);
+                  record.conditions.has(TickCondition::fingerRefused),
+                  record.conditions.has(TickCondition::hitIterationCap),
+                  record.conditions.has(TickCondition::contactOverflow),
+                  record.conditions.has(TickCondition::budgetLimited));
     // (e) Force: kp (proxy - finger) clamped to the device limit, or the last force held.
     const std::string where = "tick " + std::to_string(record.tick);
     const auto overridden = c.fingerOverrides.find(record.tick);
@@ -128,7 +130,7 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
       (overridden != c.fingerOverrides.end() &&
        !(std::isfinite(overridden->second.x) && std::isfinite(overridden->second.y) &&
          std::isfinite(overridden->second.z)));
-    if (nanTick != record.fingerRefused)
+    if (nanTick != record.conditions.has(TickCondition::fingerRefused))
     {
       stats.fail(stats.refusalFailures, where + ": finger " + oracle::str(record.finger) +
                                           (nanTick ? " was not refused" : " was refused"));
@@ -138,9 +140,10 @@ ScriptedOutcome runScriptedCase(const ScriptedCase& c)
     force.finger = record.finger;
     force.force = record.force;
     force.previousForce = previousForce;
-    force.refused = record.fingerRefused;
-    force.clamped = record.forceClamped;
-    force.ramped = record.rateLimited || record.fading;
+    force.refused = record.conditions.has(TickCondition::fingerRefused);
+    force.clamped = record.conditions.has(TickCondition::forceClamped);
+    force.ramped = record.conditions.has(TickCondition::forceRateLimited) ||
+                   record.conditions.has(TickCondition::forceFading);
     force.inContact = record.numContacts > 0;
     oracle::checkServoForce(stats, where, force, c.servo.stiffness, c.servo.maxForce);
     previousForce = record.force;

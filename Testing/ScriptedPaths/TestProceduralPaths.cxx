@@ -346,7 +346,8 @@ TEST(ScriptedProcedural, IterationBudgetStaysFeasibleAndCatchesUp)
     budgeted.trace.size() - static_cast<std::size_t>(kHoldSeconds * kRate / 2.0);
   for (std::size_t i = settledFrom; i < budgeted.trace.size(); ++i)
   {
-    EXPECT_FALSE(budgeted.trace[i].budgetLimited) << "tick " << i << " still budget-limited";
+    EXPECT_FALSE(budgeted.trace[i].conditions.has(TickCondition::budgetLimited))
+      << "tick " << i << " still budget-limited";
   }
   const double apart = distance(budgeted.trace.back().proxy, unbudgeted.trace.back().proxy);
   RecordProperty("end_distance_from_unbudgeted_m", oracle::str(apart));

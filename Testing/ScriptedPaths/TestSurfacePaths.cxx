@@ -67,7 +67,7 @@ RunOutcome runThroughKernel(const CollisionScene& scene, const FingerPath& path,
   runLockstep(settings, *solver, device, servo, [&](const HapticState& state) {
     ++ticks;
     contacts += state.numContacts > 0 ? 1 : 0;
-    outcome.clampedTicks += state.forceClamped ? 1 : 0;
+    outcome.clampedTicks += state.conditions.has(TickCondition::forceClamped) ? 1 : 0;
     outcome.maxForce = std::max(outcome.maxForce, norm(state.force));
   });
   outcome.contactShare = ticks > 0 ? static_cast<double>(contacts) / static_cast<double>(ticks) : 0;

@@ -67,7 +67,7 @@ TEST(StressDrift, LongRunComesBackToTheSamePlaceEveryPeriod)
   {
     const Vec3 finger = fingerAt(tick);
     const ProxyTickResult result = solver.update(finger);
-    capTicks += result.hitIterationCap ? 1 : 0;
+    capTicks += result.conditions.has(TickCondition::hitIterationCap) ? 1 : 0;
     if (tick % kPeriod == 0 && tick >= 2 * kPeriod)
     {
       if (tick == 2 * kPeriod)

@@ -236,7 +236,8 @@ py::dict traceColumns(const std::vector<HapticState>& ticks)
     column<std::int64_t>(ticks, [](const HapticState& s) { return s.solveNanoseconds; });
   trace["object"] =
     column<std::int32_t>(ticks, [](const HapticState& s) { return s.contactObject; });
-  trace["flags"] = column<std::uint32_t>(ticks, [](const HapticState& s) { return tickFlags(s); });
+  trace["flags"] =
+    column<std::uint32_t>(ticks, [](const HapticState& s) { return s.conditions.bits(); });
   return trace;
 }
 

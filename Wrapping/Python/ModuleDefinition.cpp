@@ -3,6 +3,7 @@
 // proxima.InputError, a ValueError, with the same one-line message as the command line's.
 #include "Bindings.h"
 
+#include "Core/TickConditions.h"
 #include "IO/InputChecks/InputError.h"
 #include "IO/Output/OutputError.h"
 
@@ -15,6 +16,13 @@ PYBIND11_MODULE(_proxima, module)
   python::addRunBindings(module);
   python::addPathBindings(module);
   python::addSessionBindings(module);
+  // The bit of each tick condition in a trace's and a message's `flags`, by name.
+  pybind11::dict conditions;
+  for (const proxima::TickConditionName& entry : proxima::kTickConditionNames)
+  {
+    conditions[entry.name] = static_cast<std::uint32_t>(entry.condition);
+  }
+  module.attr("tick_conditions") = conditions;
 #if PROXIMA_PYTHON_ORACLE
   python::addOracleBindings(module);
 #endif

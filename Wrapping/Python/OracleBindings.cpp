@@ -170,19 +170,21 @@ void addOracleBindings(py::module_& module)
                            " s with the finger at " + oracle::str(sampled));
           }
           ++index;
-          const bool refused = (row.flags & kTickFingerRefused) != 0;
+          const TickConditions conditions(row.flags);
+          const bool refused = conditions.has(TickCondition::fingerRefused);
           checker.check(row.tick, row.finger, row.proxy, row.iterations, row.contacts, refused,
-                        (row.flags & kTickIterationCap) != 0,
-                        (row.flags & kTickContactOverflow) != 0,
-                        (row.flags & kTickBudgetLimited) != 0);
+                        conditions.has(TickCondition::hitIterationCap),
+                        conditions.has(TickCondition::contactOverflow),
+                        conditions.has(TickCondition::budgetLimited));
           oracle::ForceTick force;
           force.proxy = row.proxy;
           force.finger = row.finger;
           force.force = row.force;
           force.previousForce = previousForce;
           force.refused = refused;
-          force.clamped = (row.flags & kTickForceClamped) != 0;
-          force.ramped = (row.flags & (kTickForceRateLimited | kTickForceFading)) != 0;
+          force.clamped = conditions.has(TickCondition::forceClamped);
+          force.ramped =
+            conditions.hasAny(TickCondition::forceRateLimited | TickCondition::forceFading);
           force.knownStiffness = knownStiffness;
           force.inContact = row.contacts > 0;
           oracle::checkServoForce(checked, where, force, servo.stiffness, servo.maxForce);

@@ -45,7 +45,7 @@ py::dict stateDict(const HapticState& state)
   tick["iterations"] = state.iterations;
   tick["solve_ns"] = state.solveNanoseconds;
   tick["object"] = state.contactObject;
-  tick["flags"] = tickFlags(state);
+  tick["flags"] = state.conditions.bits();
   return tick;
 }
 

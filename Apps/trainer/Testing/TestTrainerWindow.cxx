@@ -90,7 +90,8 @@ double disturbedSeconds(const std::vector<HapticState>& ticks, double from, doub
     const double skipped =
       i > 0 ? static_cast<double>(tick.tick - ticks[i - 1].tick - 1) * period : 0.0;
     seconds += skipped;
-    if (tick.budgetLimited || tick.fading || tick.proxyStale)
+    if (tick.conditions.has(TickCondition::budgetLimited) ||
+        tick.conditions.has(TickCondition::forceFading) || tick.proxyStale)
     {
       seconds += period;
     }
@@ -356,7 +357,8 @@ private slots:
     QCOMPARE(window->deviceSpec(), "replay:" + file);
     QVERIFY(waitUntil([&] { return window->ticksSeen() > 100; }, 30.0));
     // Past its end the replay is a device gone: the finger is refused, the proxy holds.
-    QVERIFY(waitUntil([&] { return window->latestState().fingerRefused; }, 30.0));
+    QVERIFY(waitUntil(
+      [&] { return window->latestState().conditions.has(TickCondition::fingerRefused); }, 30.0));
   }
 };
 

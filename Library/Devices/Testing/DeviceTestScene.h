@@ -134,7 +134,7 @@ inline void expectFadeOut(const std::vector<HapticState>& records, std::size_t l
   for (std::size_t i = lostTick; i < records.size(); ++i)
   {
     const HapticState& record = records[i];
-    EXPECT_TRUE(record.deviceLost) << i;
+    EXPECT_TRUE(record.conditions.has(TickCondition::deviceLost)) << i;
     EXPECT_TRUE(isFinite(record.force)) << i;
     const double magnitude = norm(record.force);
     EXPECT_LE(magnitude, previous + 1e-12) << i;
@@ -150,7 +150,7 @@ inline void expectFadeOut(const std::vector<HapticState>& records, std::size_t l
   }
   for (std::size_t i = 0; i < lostTick; ++i)
   {
-    EXPECT_FALSE(records[i].deviceLost) << i;
+    EXPECT_FALSE(records[i].conditions.has(TickCondition::deviceLost)) << i;
   }
 }
 

@@ -101,7 +101,7 @@ TEST(DevicesDriveTheSolver, FalconOnItsEmulatorAndItsMotorCommands)
   std::size_t compared = 0;
   for (std::size_t i = 0; i < trace.size(); ++i)
   {
-    if (trace[i].fingerRefused)
+    if (trace[i].conditions.has(TickCondition::fingerRefused))
     {
       continue; // homing
     }
@@ -120,7 +120,7 @@ TEST(DevicesDriveTheSolver, FalconOnItsEmulatorAndItsMotorCommands)
   std::size_t nonZero = 0;
   for (std::size_t i = 0; i < trace.size(); ++i)
   {
-    if (trace[i].fingerRefused)
+    if (trace[i].conditions.has(TickCondition::fingerRefused))
     {
       continue;
     }

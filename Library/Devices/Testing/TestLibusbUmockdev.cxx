@@ -166,7 +166,7 @@ TEST_F(LibusbUmockdev, ScriptedPathDrivesTheSolverAndForcesReachTheMotors)
   std::size_t nonZero = 0;
   for (std::size_t i = 0; i < trace.size(); ++i)
   {
-    if (trace[i].fingerRefused)
+    if (trace[i].conditions.has(TickCondition::fingerRefused))
     {
       continue; // homing
     }

@@ -37,7 +37,9 @@ void expectSameTrace(const std::vector<HapticState>& a, const std::vector<Haptic
     EXPECT_EQ(a[i].force, b[i].force) << i;
     EXPECT_EQ(a[i].numContacts, b[i].numContacts) << i;
     EXPECT_EQ(a[i].iterations, b[i].iterations) << i;
-    EXPECT_EQ(a[i].fingerRefused, b[i].fingerRefused) << i;
+    EXPECT_EQ(a[i].conditions.has(TickCondition::fingerRefused),
+              b[i].conditions.has(TickCondition::fingerRefused))
+      << i;
   }
 }
 

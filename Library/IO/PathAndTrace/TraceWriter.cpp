@@ -24,7 +24,7 @@ void TraceWriter::write(const HapticState& r)
     static_cast<unsigned long long>(r.tick), r.time, r.finger.x, r.finger.y, r.finger.z, r.proxy.x,
     r.proxy.y, r.proxy.z, r.force.x, r.force.y, r.force.z, r.numContacts, r.iterations,
     static_cast<long long>(r.solveNanoseconds), r.contactObject,
-    static_cast<unsigned>(tickFlags(r)));
+    static_cast<unsigned>(r.conditions.bits()));
   m_file.write(std::string_view(row, static_cast<std::size_t>(length)));
 }
 

@@ -3,7 +3,7 @@
 // iterations,solve_ns,object,flags
 // v1's columns first and in v1's order, so that a v1 reader (by name or by position) keeps
 // working; `object` is the object of the first active contact (-1 free), `flags` the tick's
-// TickFlag bits (Documentation/CommandLine.md).
+// conditions, TickConditions::bits() (Documentation/CommandLine.md).
 #pragma once
 
 #include "IO/Output/AtomicOutputFile.h"

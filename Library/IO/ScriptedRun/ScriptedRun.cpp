@@ -66,7 +66,7 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
     [&](const HapticState& record) {
       onTick(record);
       outcome.summary.add(record);
-      if (record.budgetLimited && bodies == nullptr)
+      if (record.conditions.has(TickCondition::budgetLimited) && bodies == nullptr)
       {
         // (With bodies the replay would need their motion too: no residual is measured.)
         const auto replayStart = std::chrono::steady_clock::now();

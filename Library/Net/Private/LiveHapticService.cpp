@@ -221,7 +221,7 @@ grpc::Status LiveHapticService::StreamState(grpc::ServerContext* context,
     setVector(state.force, sample.mutable_force());
     sample.set_contacts(state.numContacts);
     sample.set_shape(state.contactObject);
-    sample.set_flags(tickFlags(state));
+    sample.set_flags(state.conditions.bits());
     sample.set_model_version(state.sceneVersion);
     const std::uint64_t now = touchedShapes(state);
     for (int shape = 0; shape < 64; ++shape)

@@ -22,7 +22,7 @@ void appendTick(const HapticState& state, net::TickColumns& columns)
   columns.add_iterations(state.iterations);
   columns.add_solve_ns(state.solveNanoseconds);
   columns.add_object(state.contactObject);
-  columns.add_flags(tickFlags(state));
+  columns.add_flags(state.conditions.bits());
 }
 
 void forEachTick(const net::TickColumns& columns, const std::function<void(const HapticState&)>& f)
@@ -48,7 +48,7 @@ void forEachTick(const net::TickColumns& columns, const std::function<void(const
     state.iterations = columns.iterations(i);
     state.solveNanoseconds = columns.solve_ns(i);
     state.contactObject = columns.object(i);
-    setTickFlags(state, columns.flags(i));
+    state.conditions = TickConditions(columns.flags(i));
     f(state);
   }
 }

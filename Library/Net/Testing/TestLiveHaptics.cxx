@@ -187,7 +187,8 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
     }
     // Not fading: the runtime fades the force while its proxy loop is starved (a loaded machine).
     return live >= 0.0 && s.modelVersion == receipt.version && s.contacts > 0 &&
-           s.time > std::max(1.05, live + 0.2) && (s.flags & kTickForceFading) == 0;
+           s.time > std::max(1.05, live + 0.2) &&
+           !TickConditions(s.flags).has(TickCondition::forceFading);
   };
   ASSERT_TRUE(collected.waitFor([&](const Collected& c) {
     live = -1.0;
@@ -219,7 +220,7 @@ TEST_F(LiveServer, AnUploadedShapeIsTouchedAndNeverEntered)
       // Out of the sphere. A sample the runtime flags as fading (its proxy loop starved for
       // longer than the watchdog's 5 ms) carries the last force scaled down to exactly 0 at the
       // fade's end, beside the stale proxy's contact: never into the sphere, but maybe 0.
-      if ((s.flags & kTickForceFading) != 0)
+      if (TickConditions(s.flags).has(TickCondition::forceFading))
       {
         EXPECT_GE(s.force.z, 0.0);
       }
@@ -571,10 +572,10 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
     int held = 0;
     for (const LiveSample& s : c.samples)
     {
-      held +=
-        (s.modelVersion == receipt.version && s.time > 2.5 && (s.flags & kTickForceFading) == 0)
-          ? 1
-          : 0;
+      held += (s.modelVersion == receipt.version && s.time > 2.5 &&
+               !TickConditions(s.flags).has(TickCondition::forceFading))
+                ? 1
+                : 0;
     }
     return held >= 50;
   }));
@@ -582,7 +583,8 @@ TEST_F(LiveServer, ASceneFileIsUploadedWithItsFilesAndItsBodiesMove)
   int checked = 0;
   for (const LiveSample& s : collected.samples)
   {
-    if (s.modelVersion == receipt.version && s.time > 2.5 && (s.flags & kTickForceFading) == 0)
+    if (s.modelVersion == receipt.version && s.time > 2.5 &&
+        !TickConditions(s.flags).has(TickCondition::forceFading))
     {
       ++checked;
       EXPECT_EQ(s.shape, 0);

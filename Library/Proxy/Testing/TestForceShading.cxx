@@ -96,7 +96,7 @@ CircleRun runCircle(bool shading, double fingerRadius, int ticksPerTurn)
     run.loopWork += dot(onFinger, finger - previousFinger);
     run.meanSpringEnergy += 0.5 * kStiffness * squaredNorm(r.proxy - finger) / ticksPerTurn;
     previousFinger = finger;
-    run.capTicks += r.hitIterationCap ? 1 : 0;
+    run.capTicks += r.conditions.has(TickCondition::hitIterationCap) ? 1 : 0;
     run.shadedTicks += r.usedShading ? 1 : 0;
     run.minClearance = std::min(run.minClearance, exact.distance(r.proxy, 2.0 * kRadius) - kRadius);
     const Vec3 force = r.proxy - finger; // the force on the finger is kp times this

@@ -79,12 +79,12 @@ TEST(StaticFriction, ProxyHoldsInsideTheConeAndSlipsOutside)
     const ProxyTickResult r =
       rig.step({offset * std::cos(angle), offset * std::sin(angle), kFingerZ});
     ASSERT_EQ(r.proxy, rest) << "tick " << i << ": the proxy moved inside the friction cone";
-    ASSERT_TRUE(r.stuck);
+    ASSERT_TRUE(r.conditions.has(TickCondition::stuck));
   }
   // Out of the cone (1.6 mm > 1.5 mm): it slips, and without dynamic friction all the way.
   const Vec3 out{0.0016, 0.0, kFingerZ};
   const ProxyTickResult r = rig.step(out);
-  EXPECT_FALSE(r.stuck);
+  EXPECT_FALSE(r.conditions.has(TickCondition::stuck));
   EXPECT_NEAR(r.proxy.x, out.x, 1e-9);
   EXPECT_NEAR(r.proxy.y, 0.0, 1e-9);
 }
@@ -163,7 +163,7 @@ TEST(Friction, StickThenSlipWithStaticAboveDynamic)
   ProxyTickResult r = rig.step({0.0017, 0.0, kFingerZ});
   EXPECT_EQ(r.proxy, rest);
   r = rig.step({0.0019, 0.0, kFingerZ});
-  EXPECT_FALSE(r.stuck);
+  EXPECT_FALSE(r.conditions.has(TickCondition::stuck));
   EXPECT_NEAR(0.0019 - r.proxy.x, 0.3 * kDepth, 1e-9);
   const Vec3 slipped = r.proxy;
   for (int i = 0; i < 10; ++i)
@@ -176,8 +176,8 @@ TEST(Friction, SurfaceWithoutFrictionTakesNoFrictionTest)
 {
   FrictionRig rig{SurfaceMaterial{}};
   const ProxyTickResult r = rig.step({0.001, 0.0, kFingerZ});
-  EXPECT_FALSE(r.stuck);
-  EXPECT_FALSE(r.frictionLimited);
+  EXPECT_FALSE(r.conditions.has(TickCondition::stuck));
+  EXPECT_FALSE(r.conditions.has(TickCondition::frictionLimited));
   EXPECT_NEAR(r.proxy.x, 0.001, 1e-12);
 }
 

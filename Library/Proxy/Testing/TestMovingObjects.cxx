@@ -138,7 +138,7 @@ TEST(MovingObjects, ASphereMovingIntoTheProxyPushesItAndNeverHoldsIt)
     pose = turnAbout(Vec3{0.0, 1.0, 0.0}, 0.01 * s, Vec3{0.0002 * s * 0.3, 0.0, 0.0002 * s});
     solver->setObjectPose(0, pose);
     const ProxyTickResult result = solver->update(finger);
-    pushed += result.pushedByObject ? 1 : 0;
+    pushed += result.conditions.has(TickCondition::pushedByObject) ? 1 : 0;
     const double clearance = sphere.distance(pose.applyInverse(result.proxy), 2.0 * kRadius);
     deepest = std::max(deepest, kRadius - clearance);
   }
@@ -169,7 +169,7 @@ TEST(MovingObjects, AnObjectMovingAwayLeavesTheProxyFree)
   const ProxyTickResult result = solver->update(finger);
   EXPECT_EQ(result.numContacts, 0);
   EXPECT_EQ(result.proxy, finger);
-  EXPECT_FALSE(result.pushedByObject);
+  EXPECT_FALSE(result.conditions.has(TickCondition::pushedByObject));
 }
 
 TEST(MovingObjects, IdentityPosesChangeNoTick)

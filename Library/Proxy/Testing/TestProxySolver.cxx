@@ -397,14 +397,14 @@ TEST(ProxySolverInput, NonFiniteFingerIsRefused)
   for (const Vec3& bad : {Vec3{std::nan(""), 0, 0}, Vec3{0, inf, 0}, Vec3{0, 0, -inf}})
   {
     const ProxyTickResult r = rig.step(bad);
-    EXPECT_TRUE(r.refusedFinger);
+    EXPECT_TRUE(r.conditions.has(TickCondition::fingerRefused));
     EXPECT_EQ(r.proxy, held);
     EXPECT_EQ(rig.solver().proxy(), held);
     EXPECT_EQ(r.numContacts, 0);
   }
   // And the next good finger carries on from the held proxy.
   const ProxyTickResult r = rig.step({0.002, 0.0, -0.002});
-  EXPECT_FALSE(r.refusedFinger);
+  EXPECT_FALSE(r.conditions.has(TickCondition::fingerRefused));
   EXPECT_NEAR(r.proxy.x, 0.002, 1e-12);
   rig.expectClean("nan-finger");
 }
@@ -421,7 +421,7 @@ TEST(ProxySolverFound, LoopTerminatesOneKilometreFromTheOrigin)
   Rig rig(scenes::translate(scenes::makeVGroove(60.0, 0.05, 0.04), offset),
           {1000.008222173818, 1000.0106370659917, 1000.0204239388526});
   const ProxyTickResult r = rig.step({1000.0081718289953, 1000.0160381174354, 1000.0173205080757});
-  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_FALSE(r.conditions.has(TickCondition::hitIterationCap)) << "iterations " << r.iterations;
   rig.expectClean("found-livelock-1km");
 }
 
@@ -433,7 +433,7 @@ TEST(ProxySolverFound, ConvexEdgeConvergesWithinTheIterationCap)
   // (hovering 2e-9 m off the surface, which the oracle sees as a free step toward the finger).
   Rig rig(makeIcosphere(3, 0.04), {0.016439692163224457, 0, 0.037409688147095096});
   const ProxyTickResult r = rig.step({0.016, 0, 0.036560000000000002});
-  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_FALSE(r.conditions.has(TickCondition::hitIterationCap)) << "iterations " << r.iterations;
   rig.expectClean("found-zigzag-icosphere");
 }
 
@@ -452,7 +452,7 @@ TEST(ProxySolverFound, FingerAtTheApexOfANarrowConcaveCornerConverges)
   Rig rig(corner, {-0.0012556588587140172, -0.00068060738288177138, -0.0019432438991826028});
   const ProxyTickResult r =
     rig.step({-1.0777595127525665e-07, 2.0409831476357046e-06, 4.7842233758979384e-06});
-  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_FALSE(r.conditions.has(TickCondition::hitIterationCap)) << "iterations " << r.iterations;
   EXPECT_LE(r.iterations, 16);
   rig.expectClean("found-narrow-corner-apex");
 }
@@ -552,7 +552,7 @@ TEST(ProxySolverFound, SheetsCrossingAtATinyAngleAreTwoPlanes)
   Rig rig(soup, {0.0050445016476208197, -0.0071224523150369848, 0.0096624751975080986});
   const ProxyTickResult r =
     rig.step({0.0042323920805787205, -0.010614414223410255, 0.0073350757347480046});
-  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_FALSE(r.conditions.has(TickCondition::hitIterationCap)) << "iterations " << r.iterations;
   rig.expectClean("found-crossing-planes-8e-11-rad");
 }
 
@@ -597,7 +597,7 @@ TEST(ProxySolverFound, StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide)
   Rig rig(fan, {-0.022827663512652936, 0.27721059655127489, 0.079505884813446767});
   const ProxyTickResult r =
     rig.step({-0.022243077317040279, 0.27712438269938672, 0.079372737804346741});
-  EXPECT_FALSE(r.hitIterationCap) << "iterations " << r.iterations;
+  EXPECT_FALSE(r.conditions.has(TickCondition::hitIterationCap)) << "iterations " << r.iterations;
   rig.expectClean("found-liver-corner");
 }
 
@@ -611,7 +611,7 @@ TEST(ProxySolverLimits, IterationCapIsReported)
   rig.solver().setScene(&rig.scene(), capped);
   const ProxyTickResult r = rig.solver().update({0.01, -0.01, -0.01});
   EXPECT_EQ(r.iterations, 1);
-  EXPECT_TRUE(r.hitIterationCap);
+  EXPECT_TRUE(r.conditions.has(TickCondition::hitIterationCap));
 }
 
 } // namespace

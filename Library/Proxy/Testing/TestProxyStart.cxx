@@ -217,13 +217,13 @@ TEST(ProxyStart, TheSolverReportsTheMovedStartOnItsNextUpdateOnly)
   const ProxyStartPlacement placement = placeProxyStart(*scene, parameters(), {});
   resetProxyTo(solver, placement);
   EXPECT_EQ(solver.proxy(), placement.position);
-  EXPECT_TRUE(solver.update({}).startedOutside);
-  EXPECT_FALSE(solver.update({}).startedOutside);
+  EXPECT_TRUE(solver.update({}).conditions.has(TickCondition::startedOutside));
+  EXPECT_FALSE(solver.update({}).conditions.has(TickCondition::startedOutside));
   // The proxy stayed outside with the finger at the centre: it is not trapped, it is pressing.
   EXPECT_FALSE(insideAny(*scene, solver.proxy()));
   // A plain reset reports nothing.
   solver.resetProxy({0.0, 0.0, 0.09});
-  EXPECT_FALSE(solver.update({0.0, 0.0, 0.09}).startedOutside);
+  EXPECT_FALSE(solver.update({0.0, 0.0, 0.09}).conditions.has(TickCondition::startedOutside));
 }
 
 } // namespace

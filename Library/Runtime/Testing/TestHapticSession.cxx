@@ -71,7 +71,7 @@ TEST(HapticSession, FingerPressedIntoAFloorFeelsTheSpringAboveIt)
     // kp (proxy - finger) = 1000 N/m x 3 mm = 3 N straight up; 5 mm would be 5 N.
     EXPECT_NEAR(last.force.z, 1000.0 * (kProxyRadius + depth), 1e-6);
     EXPECT_NEAR(last.force.x, 0.0, 1e-9);
-    EXPECT_FALSE(last.forceClamped);
+    EXPECT_FALSE(last.conditions.has(TickCondition::forceClamped));
   }
 }
 
@@ -81,7 +81,7 @@ TEST(HapticSession, ForceIsClampedToTheServoLimit)
   s.servo.maxForce = 2.0;
   HapticSession session(sceneOf(makeGrid(0.1, 10)), s);
   const HapticState last = session.run(press(0.004)).back();
-  EXPECT_TRUE(last.forceClamped);
+  EXPECT_TRUE(last.conditions.has(TickCondition::forceClamped));
   EXPECT_NEAR(std::sqrt(dot(last.force, last.force)), 2.0, 1e-12);
   EXPECT_GT(last.force.z, 0.0);
 }
@@ -106,7 +106,7 @@ TEST(HapticSession, AFingerInsideAClosedObjectStartsTheProxyOutside)
   EXPECT_GE(nearest, kProxyRadius);
   EXPECT_LT(nearest, 2.0 * kProxyRadius); // moved out to the surface, not far beyond
   const HapticState first = session.step({0.0, 0.0, 0.01});
-  EXPECT_TRUE(first.startedOutside);
+  EXPECT_TRUE(first.conditions.has(TickCondition::startedOutside));
   EXPECT_LE(std::sqrt(dot(first.force, first.force)), settings().servo.maxForce);
 }
 

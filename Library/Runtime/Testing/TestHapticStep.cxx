@@ -175,8 +175,8 @@ TEST_F(HapticStepTest, ForceIsStiffnessTimesProxyMinusFinger)
   EXPECT_NEAR(r.force.y, expected.y, 1e-15 * norm(expected));
   EXPECT_NEAR(r.force.z, expected.z, 1e-15 * norm(expected));
   EXPECT_GT(r.force.z, 0.0); // pushes the finger out of the floor
-  EXPECT_FALSE(r.forceClamped);
-  EXPECT_FALSE(r.fingerRefused);
+  EXPECT_FALSE(r.conditions.has(TickCondition::forceClamped));
+  EXPECT_FALSE(r.conditions.has(TickCondition::fingerRefused));
   EXPECT_EQ(r.numContacts, 1);
   EXPECT_GE(r.iterations, 1);
   EXPECT_GE(r.solveNanoseconds, 0);
@@ -210,7 +210,7 @@ TEST_F(HapticStepTest, ClampedToTheDeviceLimitKeepingDirection)
   const HapticState r = hapticStep(0, 0.0, *solver, device, stage);
   const Vec3 spring = (r.proxy - r.finger) * servo.stiffness;
   ASSERT_GT(norm(spring), servo.maxForce);
-  EXPECT_TRUE(r.forceClamped);
+  EXPECT_TRUE(r.conditions.has(TickCondition::forceClamped));
   EXPECT_NEAR(norm(r.force), 3.0, 1e-14);
   EXPECT_NEAR(dot(normalizedOrZero(r.force), normalizedOrZero(spring)), 1.0, 1e-15);
   EXPECT_EQ(device.forces.back(), r.force);
@@ -232,24 +232,24 @@ TEST_F(HapticStepTest, NonFiniteFingerIsRefusedAndTheForceHeld)
     device.next = DeviceSample{bad, true};
     const HapticState r = hapticStep(tick, tick * 0.001, *solver, device, stage);
     ++tick;
-    EXPECT_TRUE(r.fingerRefused);
+    EXPECT_TRUE(r.conditions.has(TickCondition::fingerRefused));
     EXPECT_EQ(r.force, pressed.force);
     EXPECT_EQ(device.forces.back(), pressed.force);
     EXPECT_EQ(stage.lastForce(), pressed.force);
     EXPECT_EQ(r.proxy, proxy);
     EXPECT_EQ(solver->proxy(), proxy);
-    EXPECT_FALSE(r.forceClamped);
+    EXPECT_FALSE(r.conditions.has(TickCondition::forceClamped));
   }
   // An invalid sample (device read error) is refused the same way, whatever it holds.
   device.next = DeviceSample{{0.0, 0.0, -0.5}, false};
   const HapticState invalid = hapticStep(tick, tick * 0.001, *solver, device, stage);
-  EXPECT_TRUE(invalid.fingerRefused);
+  EXPECT_TRUE(invalid.conditions.has(TickCondition::fingerRefused));
   EXPECT_EQ(invalid.force, pressed.force);
   EXPECT_EQ(solver->proxy(), proxy);
   // A good sample again: the spring law resumes.
   device.next = DeviceSample{{0.001, 0.0, -0.003}, true};
   const HapticState again = hapticStep(tick + 1, 0.01, *solver, device, stage);
-  EXPECT_FALSE(again.fingerRefused);
+  EXPECT_FALSE(again.conditions.has(TickCondition::fingerRefused));
   const Vec3 expected = (again.proxy - again.finger) * servo.stiffness;
   EXPECT_NEAR(distance(again.force, expected), 0.0, 1e-15 * norm(expected));
 }

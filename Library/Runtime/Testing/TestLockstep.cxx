@@ -92,10 +92,18 @@ TEST_F(LockstepTest, SameInputSameTraceBitForBit)
       ASSERT_TRUE(sameBits(x.force, y.force)) << kind << " tick " << i;
       ASSERT_EQ(x.numContacts, y.numContacts) << kind << " tick " << i;
       ASSERT_EQ(x.iterations, y.iterations) << kind << " tick " << i;
-      ASSERT_EQ(x.fingerRefused, y.fingerRefused) << kind << " tick " << i;
-      ASSERT_EQ(x.hitIterationCap, y.hitIterationCap) << kind << " tick " << i;
-      ASSERT_EQ(x.contactOverflow, y.contactOverflow) << kind << " tick " << i;
-      ASSERT_EQ(x.forceClamped, y.forceClamped) << kind << " tick " << i;
+      ASSERT_EQ(x.conditions.has(TickCondition::fingerRefused),
+                y.conditions.has(TickCondition::fingerRefused))
+        << kind << " tick " << i;
+      ASSERT_EQ(x.conditions.has(TickCondition::hitIterationCap),
+                y.conditions.has(TickCondition::hitIterationCap))
+        << kind << " tick " << i;
+      ASSERT_EQ(x.conditions.has(TickCondition::contactOverflow),
+                y.conditions.has(TickCondition::contactOverflow))
+        << kind << " tick " << i;
+      ASSERT_EQ(x.conditions.has(TickCondition::forceClamped),
+                y.conditions.has(TickCondition::forceClamped))
+        << kind << " tick " << i;
       ASSERT_EQ(x.trianglesTested, y.trianglesTested) << kind << " tick " << i;
     }
     // The runs touched the sphere: determinism was tested where it matters.

@@ -19,7 +19,7 @@ RunSummary summaryOf(std::initializer_list<bool> limited)
   {
     HapticState record;
     record.tick = tick++;
-    record.budgetLimited = budgetLimited;
+    record.conditions.set(TickCondition::budgetLimited, budgetLimited);
     summary.add(record);
   }
   return summary;

@@ -60,7 +60,7 @@ TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
   ServoForce stage(testParameters(), limits);
   EXPECT_EQ(stage.maxForce(), 1.5);
   const HapticState output = step(stage, pressing(0));
-  EXPECT_TRUE(output.forceClamped);
+  EXPECT_TRUE(output.conditions.has(TickCondition::forceClamped));
   EXPECT_NEAR(output.force.z, 1.5, 1e-15);
   EXPECT_EQ(output.force.x, 0.0);
 
@@ -68,7 +68,7 @@ TEST(ServoForce, SpringLawAndClampToTheSmallerLimit)
   ForceTick input = pressing(0);
   input.proxy.stiffnessScale = 0.5;
   const HapticState spring = step(unclamped, input);
-  EXPECT_FALSE(spring.forceClamped);
+  EXPECT_FALSE(spring.conditions.has(TickCondition::forceClamped));
   EXPECT_NEAR(spring.force.z, 1000.0 * 0.5 * 0.002, 1e-15);
 }
 
@@ -85,7 +85,7 @@ TEST(ServoForce, TheClampCannotOverflowForAFingerFarAway)
       given.input.sample.position = direction * far;
       const HapticState state = step(stage, given);
       ASSERT_TRUE(isFinite(state.force)) << far;
-      EXPECT_TRUE(state.forceClamped) << far;
+      EXPECT_TRUE(state.conditions.has(TickCondition::forceClamped)) << far;
       EXPECT_NEAR(norm(state.force), 10.0, 1e-12) << far;
       // Towards the proxy at the origin, that is against the finger's direction.
       EXPECT_NEAR(dot(state.force, direction), -10.0, 1e-12) << far;
@@ -101,7 +101,7 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
   {
     const HapticState output = step(stage, pressing(tick));
     EXPECT_NEAR(output.force.z, 2.0, 1e-15);
-    EXPECT_FALSE(output.fading);
+    EXPECT_FALSE(output.conditions.has(TickCondition::forceFading));
   }
   // The proxy loop stops publishing: the proxy state's age grows past the 5 ms timeout.
   double lastZ = 2.0;
@@ -114,7 +114,7 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
     input.input.sample.position.z = -0.002 - 0.001 * stalled;
     const HapticState output = step(stage, input);
     EXPECT_TRUE(output.proxyStale);
-    EXPECT_TRUE(output.fading);
+    EXPECT_TRUE(output.conditions.has(TickCondition::forceFading));
     // Ten ticks of 1 ms over a 10 ms fade: 2 N less 0.2 N a tick, from the force at the fault.
     const double expected = std::max(0.0, 2.0 * (1.0 - (stalled + 1) * 0.1));
     EXPECT_NEAR(output.force.z, expected, 1e-12) << "stalled tick " << stalled;
@@ -130,7 +130,8 @@ TEST(ServoForce, StaleProxyFadesLinearlyToZeroThenFadesBackIn)
     const HapticState output = step(stage, pressing(tick));
     const double gain = std::min(1.0, (fresh + 1) * 0.1);
     EXPECT_NEAR(output.force.z, 2.0 * gain, 1e-12) << "fresh tick " << fresh;
-    EXPECT_EQ(output.fading, gain < 1.0 - 1e-12) << "fresh tick " << fresh;
+    EXPECT_EQ(output.conditions.has(TickCondition::forceFading), gain < 1.0 - 1e-12)
+      << "fresh tick " << fresh;
   }
 }
 
@@ -141,10 +142,10 @@ TEST(ServoForce, LostDeviceFadesAndIsReported)
   ForceTick input = pressing(1);
   input.input.sample.connected = false;
   input.input.sample.valid = false;
-  input.proxy.fingerRefused = true;
+  input.proxy.conditions.set(TickCondition::fingerRefused);
   const HapticState output = step(stage, input);
-  EXPECT_TRUE(output.deviceLost);
-  EXPECT_TRUE(output.fading);
+  EXPECT_TRUE(output.conditions.has(TickCondition::deviceLost));
+  EXPECT_TRUE(output.conditions.has(TickCondition::forceFading));
   EXPECT_NEAR(output.force.z, 1.8, 1e-12);
   for (std::uint64_t tick = 2; tick < 20; ++tick)
   {
@@ -162,7 +163,7 @@ TEST(ServoForce, UnusableSampleHoldsTheLastForce)
   input.input.sample.valid = false;
   input.input.sample.position = {std::nan(""), 0.0, 0.0};
   const HapticState output = step(stage, input);
-  EXPECT_FALSE(output.fading);
+  EXPECT_FALSE(output.conditions.has(TickCondition::forceFading));
   EXPECT_NEAR(output.force.z, 2.0, 1e-15);
 }
 
@@ -174,7 +175,7 @@ TEST(ServoForce, AHeldClampedForceIsTheSameToTheLastBit)
   ForceTick input = pressing(0);
   input.input.sample.position = {0.010392003859619449, 0.012572030410805402, -0.04344711407601869};
   const HapticState clamped = step(stage, input);
-  EXPECT_TRUE(clamped.forceClamped);
+  EXPECT_TRUE(clamped.conditions.has(TickCondition::forceClamped));
   for (std::uint64_t tick = 1; tick <= 20; ++tick)
   {
     ForceTick refused = pressing(tick);
@@ -207,12 +208,12 @@ TEST(ServoForce, SceneChangeLimitsTheForceRateForTheWindow)
     if (changed.input.time < 0.002 + 0.02)
     {
       expected = std::min(8.0, expected + 0.1);
-      EXPECT_TRUE(output.rateLimited) << "tick " << tick;
+      EXPECT_TRUE(output.conditions.has(TickCondition::forceRateLimited)) << "tick " << tick;
     }
     else
     {
       expected = 8.0;
-      EXPECT_FALSE(output.rateLimited) << "tick " << tick;
+      EXPECT_FALSE(output.conditions.has(TickCondition::forceRateLimited)) << "tick " << tick;
     }
     EXPECT_NEAR(output.force.z, expected, 1e-9) << "tick " << tick;
   }

@@ -101,7 +101,7 @@ TEST(StartInside, TheFlagMarksTheFirstTickOnly)
   RunSummary summary;
   for (const HapticState& record : run.records)
   {
-    EXPECT_EQ((tickFlags(record) & kTickStartedOutside) != 0, record.tick == 0)
+    EXPECT_EQ(record.conditions.has(TickCondition::startedOutside), record.tick == 0)
       << "tick " << record.tick;
     summary.add(record);
   }

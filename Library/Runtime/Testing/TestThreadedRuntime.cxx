@@ -279,17 +279,18 @@ TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
   const double spring = 800.0 * (0.003 + 0.002);
   ASSERT_TRUE(waitFor([&] { return std::abs(runtime.latestState().force.z - spring) < 1e-6; }, 10s))
     << runtime.latestState().force.z;
-  EXPECT_FALSE(runtime.latestState().fading);
+  EXPECT_FALSE(runtime.latestState().conditions.has(TickCondition::forceFading));
 
   runtime.injectProxyStall(0.4);
-  ASSERT_TRUE(waitFor([&] { return runtime.latestState().fading; }, 10s));
+  ASSERT_TRUE(
+    waitFor([&] { return runtime.latestState().conditions.has(TickCondition::forceFading); }, 10s));
   // Faded to nothing while the proxy loop is still asleep, never above the force it had.
   double largest = 0.0;
   const bool faded = waitFor(
     [&] {
       const HapticState state = runtime.latestState();
       largest = std::max(largest, norm(state.force));
-      return state.fading && state.force == Vec3{};
+      return state.conditions.has(TickCondition::forceFading) && state.force == Vec3{};
     },
     10s);
   EXPECT_TRUE(faded) << runtime.latestState().force.z;
@@ -298,7 +299,8 @@ TEST(ThreadedRuntime, WatchdogFadesTheForceWhenTheProxyLoopStallsAndRecovers)
   ASSERT_TRUE(waitFor(
     [&] {
       const HapticState state = runtime.latestState();
-      return !state.fading && std::abs(state.force.z - spring) < 1e-6;
+      return !state.conditions.has(TickCondition::forceFading) &&
+             std::abs(state.force.z - spring) < 1e-6;
     },
     10s))
     << runtime.latestState().force.z;
@@ -333,7 +335,8 @@ TEST(ThreadedRuntime, LostDeviceFadesTheForceAndIsReported)
   ASSERT_TRUE(waitFor(
     [&] {
       const HapticState state = runtime.latestState();
-      return state.deviceLost && state.fading && state.force == Vec3{};
+      return state.conditions.has(TickCondition::deviceLost) &&
+             state.conditions.has(TickCondition::forceFading) && state.force == Vec3{};
     },
     10s));
   runtime.stop();

@@ -79,7 +79,7 @@ TEST(ThreadedStartInside, FirstSceneWithTheFingerInsideStartsOutside)
   int flagged = 0;
   for (const HapticState& record : records)
   {
-    flagged += (tickFlags(record) & kTickStartedOutside) != 0 ? 1 : 0;
+    flagged += record.conditions.has(TickCondition::startedOutside) ? 1 : 0;
   }
   EXPECT_EQ(flagged, 1);
 }
@@ -113,7 +113,7 @@ TEST(ThreadedStartInside, ASwapThatPutsTheProxyInsideMovesItOut)
   // The finger is inside and the proxy on the surface: pressed, the force at the clamp by now,
   // unless the watchdog is fading it (a slow machine, or ThreadSanitizer, can stall the loop).
   EXPECT_LE(norm(state.force), ServoParameters{}.maxForce * (1.0 + 1e-12));
-  if (!state.fading)
+  if (!state.conditions.has(TickCondition::forceFading))
   {
     EXPECT_NEAR(norm(state.force), ServoParameters{}.maxForce, 1e-9);
   }

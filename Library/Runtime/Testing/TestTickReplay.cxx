@@ -91,7 +91,7 @@ TEST_F(TickReplayTest, LimitedTickReplayedWithoutBudgetSettlesAsAnUnbudgetedSolv
     unbudgeted->setTickBudget(0, 0.0);
     replay->remember(*budgeted);
     const ProxyTickResult limited = budgeted->update(finger);
-    if (!limited.budgetLimited)
+    if (!limited.conditions.has(TickCondition::budgetLimited))
     {
       continue;
     }
@@ -99,7 +99,7 @@ TEST_F(TickReplayTest, LimitedTickReplayedWithoutBudgetSettlesAsAnUnbudgetedSolv
     const ProxyTickResult settled = replay->settledWithoutBudget(finger);
     const ProxyTickResult expected = unbudgeted->update(finger);
     ASSERT_TRUE(sameBits(settled.proxy, expected.proxy));
-    EXPECT_FALSE(settled.budgetLimited);
+    EXPECT_FALSE(settled.conditions.has(TickCondition::budgetLimited));
     EXPECT_GT(settled.iterations, limited.iterations);
     // The loop only brings the proxy nearer the finger: the settled end is at least as near.
     EXPECT_LE(distance(settled.proxy, finger), distance(limited.proxy, finger) + 1e-12);

@@ -142,7 +142,7 @@ TEST(RepresentationImages, StickingContactShowsAClosedCone)
   const FingerPath path = linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.0004, 0, -0.002}}, 0.2);
   const HapticState state = stateWhere(scene, path, [](const HapticState&) { return false; });
   ASSERT_EQ(state.numContacts, 1);
-  EXPECT_TRUE(state.stuck);
+  EXPECT_TRUE(state.conditions.has(TickCondition::stuck));
   StateImage image(scene, state, {0.012, -0.022, 0.012}, {0, 0, 0});
   expectMatches(image.window(), "sticking-contact");
 }
@@ -155,11 +155,11 @@ TEST(RepresentationImages, SlippingContactShowsAnOpenCone)
   // drag's second half.
   const FingerPath path = linearPath({{0, 0, 0.004}, {0, 0, -0.002}, {0.008, 0, -0.002}}, 0.2);
   const HapticState state = stateWhere(scene, path, [](const HapticState& s) {
-    return s.time > 0.3 && s.numContacts == 1 && !s.stuck;
+    return s.time > 0.3 && s.numContacts == 1 && !s.conditions.has(TickCondition::stuck);
   });
   EXPECT_GT(state.time, 0.3);
   ASSERT_EQ(state.numContacts, 1);
-  EXPECT_FALSE(state.stuck);
+  EXPECT_FALSE(state.conditions.has(TickCondition::stuck));
   // Sliding with dynamic friction: the finger rides the dynamic cone's rim, its offset along
   // the surface mu_d times its depth below the proxy (paper 4.2).
   EXPECT_NEAR(state.finger.x - state.proxy.x, 0.4 * (state.proxy.z - state.finger.z), 1e-5);

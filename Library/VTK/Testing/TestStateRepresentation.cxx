@@ -39,7 +39,7 @@ HapticState contactState(bool stuck)
   state.contacts[0].normal = {0.0, s, s};
   state.contacts[0].staticFriction = 0.6;
   state.contacts[0].dynamicFriction = 0.3;
-  state.stuck = stuck;
+  state.conditions.set(TickCondition::stuck, stuck);
   return state;
 }
 

@@ -15,6 +15,7 @@ import pytest
 from conftest import BUILD, SOURCE, read_obj
 
 grpc = pytest.importorskip("grpc")
+from proxima import TICK_CONDITIONS  # noqa: E402
 from proxima.haptic_client import HapticClient, OwnershipEnded  # noqa: E402 (after the skip)
 
 KP, RADIUS, HELD_Z = 1000.0, 0.001, 0.045
@@ -43,8 +44,9 @@ def test_the_python_client_uploads_and_follows(live_server):
             distance = numpy.linalg.norm(sample["proxy"])
             assert distance >= inscribed + RADIUS - 1e-9
             # Held: the finger at rest, past the servo's 0.1 s ramp after the model's swap.
-            # Not fading (flag 8): the runtime fades the force while its proxy loop is starved.
-            if sample["t"] > max(1.05, live + 0.2) and not sample["flags"] & 8:
+            # Not fading: the runtime fades the force while its proxy loop is starved.
+            fading = sample["flags"] & TICK_CONDITIONS["force_fading"]
+            if sample["t"] > max(1.05, live + 0.2) and not fading:
                 held.append(sample)
         if len(held) >= 50:
             break

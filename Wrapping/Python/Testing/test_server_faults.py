@@ -19,11 +19,12 @@ import pytest
 from conftest import SOURCE, read_obj
 
 grpc = pytest.importorskip("grpc")
+from proxima import TICK_CONDITIONS  # noqa: E402
 from proxima.haptic_client import HapticClient  # noqa: E402 (after the skip)
 
 SPHERE = os.path.join(SOURCE, "Data", "Meshes", "icosphere-4.obj")
-#: Trace v2's flag of a fading force (HapticState.h).
-FORCE_FADING = 1 << 3
+#: The flags bit of a fading force.
+FORCE_FADING = TICK_CONDITIONS["force_fading"]
 
 # The child: owns the model, streams a 1,498,000-triangle sphere in parts and kills itself with
 # SIGKILL after half of them, the commit never sent.

@@ -7,6 +7,13 @@ import proxima
 from conftest import SOURCE, needs_shared_data, proxima_cli, read_cli_trace, shared_case
 
 
+def test_tick_conditions_name_the_flags_bits():
+    bits = proxima.TICK_CONDITIONS
+    assert len(bits) == 12
+    assert sorted(bits.values()) == [1 << i for i in range(12)]
+    assert bits["force_fading"] == 8 and bits["started_outside"] == 1024
+
+
 @needs_shared_data()
 def test_stepping_by_hand_gives_the_runs_ticks():
     mesh, path, scale, radius = shared_case("liver")

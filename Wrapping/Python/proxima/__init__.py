@@ -23,6 +23,10 @@ if _os.path.isdir(_installed_modules):
 from . import _proxima  # noqa: E402
 from ._proxima import InputError, OutputError, Session, make_path, path_kinds, read_path  # noqa: E402,F401
 
+#: The bit of each tick condition in a trace's `flags` column and a live sample's `flags`, by name
+#: (Documentation/CommandLine.md): "force_fading" is 8, for one.
+TICK_CONDITIONS = dict(_proxima.tick_conditions)
+
 #: The columns of a trace, in the order of trace v2's CSV header.
 TRACE_COLUMNS = ("tick", "t", "finger_x", "finger_y", "finger_z", "proxy_x", "proxy_y", "proxy_z",
                  "force_x", "force_y", "force_z", "contacts", "iterations", "solve_ns", "object",
