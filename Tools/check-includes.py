@@ -66,10 +66,8 @@ def resolve(name, known):
 def allowed_layers(rows, known):
     """Each layer's allowed set, with "and below" and "everything above" expanded."""
     direct = {}
-    below = {}
     for layer, text in rows.items():
         names = set()
-        down = set()
         if "everything above" in text:
             names.update(known)
         # Drop parenthesised remarks, then split on commas and semicolons.
@@ -80,13 +78,11 @@ def allowed_layers(rows, known):
                 target = resolve(match.group(1), known)
                 if target:
                     names.add(target)
-                    down.add(target)
                 continue
             target = resolve(word, known | set(rows))
             if target:
                 names.add(target)
         direct[layer] = names
-        below[layer] = down
 
     def expand(layer, seen):
         result = set(direct.get(layer, ()))
