@@ -214,13 +214,17 @@ TEST(ThreadedRuntime, StreamsEveryServoTickToAReaderWhileRunning)
   // known in advance (a late one skips ticks), so each streamed tick is checked on its own: where
   // the proxy step's finger was well inside the sphere offset by the proxy radius, the tick is in
   // contact. The proxy step read the finger `proxyAge` earlier, when it was at most the path's
-  // speed times that age from this tick's finger; 1 mm covers the facets' sag (22 um here).
+  // speed times that age from this tick's finger; 1 mm covers the facets' sag (22 um here). A
+  // proxy step the runtime's real-time budget (50 us) cut short may have stopped anywhere on its
+  // way in, as it did under ThreadSanitizer (5 mm deep, no contact yet): only settled steps count.
   const double offset = 0.05 + proxyParameters().radius;
   std::uint64_t deepTicks = 0;
   for (const HapticState& state : streamed)
   {
     const double depth = offset - norm(state.finger) - 0.2 * state.proxyAge;
-    if (depth > 1e-3 && !state.proxyStale)
+    const bool settled = !state.conditions.has(TickCondition::budgetLimited) &&
+                         !state.conditions.has(TickCondition::hitIterationCap);
+    if (depth > 1e-3 && !state.proxyStale && settled)
     {
       ++deepTicks;
       EXPECT_GT(state.numContacts, 0) << "tick " << state.tick << " at depth " << depth;
