@@ -2,6 +2,7 @@
 
 #include "IO/InputChecks/FileChecks.h"
 #include "IO/InputChecks/InputError.h"
+#include "Net/Private/RunSettingsMessage.h"
 #include "Net/Private/SceneBundlePacking.h"
 #include "Net/Private/ServerChannel.h"
 #include "Net/Private/TickColumns.h"
@@ -21,28 +22,6 @@ void readFile(const std::string& path, const char* kind, net::FileContent& file)
   file.set_data(detail::readWholeFile(path, kind));
 }
 
-net::RunSettings settingsMessage(const ScriptedRunSettings& s, double maxTicks)
-{
-  net::RunSettings out;
-  out.set_scale(s.scale);
-  out.set_radius(s.radius);
-  out.set_stiffness(s.stiffness);
-  out.set_rate(s.rate);
-  out.set_max_force(s.maxForce);
-  out.set_max_iterations(s.maxIterations);
-  out.set_skin(s.skin);
-  out.set_shading(s.shading);
-  out.set_feature_angle(s.featureAngle);
-  out.set_static_friction(s.staticFriction);
-  out.set_dynamic_friction(s.dynamicFriction);
-  out.set_viscosity(s.viscosity);
-  out.set_texture_role(s.textureRole);
-  out.set_texture_amplitude(s.textureAmplitude);
-  out.set_texture_channel(s.textureChannel);
-  out.set_tick_budget(s.tickBudget);
-  out.set_max_ticks(maxTicks);
-  return out;
-}
 } // namespace
 
 std::string runRemotely(const ServerConnection& connection, const RemoteRunRequest& request,
@@ -55,7 +34,8 @@ std::string runRemotely(const ServerConnection& connection, const RemoteRunReque
   // The settings are checked here first: a typo costs no upload.
   checkScriptedRunSettings(settings);
   net::RunRequest message;
-  *message.mutable_settings() = settingsMessage(settings, request.maxTicks);
+  detail::writeRunSettings(settings, *message.mutable_settings());
+  message.mutable_settings()->set_max_ticks(request.maxTicks);
   if (settings.scene.empty())
   {
     readFile(settings.mesh, "mesh file", *message.mutable_mesh());

@@ -4,20 +4,17 @@
 #include "IO/InputChecks/InputError.h"
 #include "IO/InputChecks/ParameterRanges.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "IO/ScriptedRun/RunSettingTable.h"
 
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace proxima::python
 {
 namespace
 {
-using Setter = std::function<void(ScriptedRunSettings&, const py::handle&)>;
-
 // "str ('0.002')": the Python type and value a keyword was given, for its TypeError.
 std::string given(const py::handle& value)
 {
@@ -52,69 +49,60 @@ double numberFrom(const std::string& keyword, const py::handle& value)
   return result;
 }
 
-Setter number(const char* keyword, double ScriptedRunSettings::*field)
-{
-  return [keyword, field](ScriptedRunSettings& settings, const py::handle& value) {
-    settings.*field = numberFrom(keyword, value);
-  };
-}
-
-// max_iterations takes an int (numpy's too), not a float (1.5 is no count of iterations) nor a
-// bool; one outside the command line's range, 2**70 as well, is refused as the command line
-// refuses it.
-void setMaxIterations(ScriptedRunSettings& settings, const py::handle& value)
+// A count takes an int (numpy's too), not a float (1.5 is no count of iterations) nor a bool;
+// one outside the command line's range, 2**70 as well, is refused as the command line refuses it.
+int wholeFrom(const RunSetting& setting, const py::handle& value)
 {
   PyObject* object = value.ptr();
   if (PyBool_Check(object) || !PyIndex_Check(object) || py::isinstance<py::array>(value))
   {
-    throw py::type_error("keyword 'max_iterations' takes a whole number (an int), not " +
+    throw py::type_error("keyword '" + setting.keyword() + "' takes a whole number (an int), not " +
                          given(value));
   }
   const py::object count = py::reinterpret_steal<py::object>(PyNumber_Index(object));
   int overflow = 0;
   const long long whole = PyLong_AsLongLongAndOverflow(count.ptr(), &overflow);
-  if (overflow != 0 || !kMaxIterationsRange.contains(static_cast<double>(whole)))
+  if (overflow != 0 || !setting.range->contains(static_cast<double>(whole)))
   {
-    throw InputError("--max-iterations", "must be a whole number " +
-                                           describeRange(kMaxIterationsRange) + ", not " +
-                                           py::str(count).cast<std::string>());
+    throw InputError(setting.flag(), "must be a whole number " + describeRange(*setting.range) +
+                                       ", not " + py::str(count).cast<std::string>());
   }
-  settings.maxIterations = static_cast<int>(whole);
+  return static_cast<int>(whole);
 }
 
-Setter text(std::string ScriptedRunSettings::*field)
+// A text keyword: a path-like object (pathlib.Path) is taken as its string.
+std::string textFrom(const py::handle& value)
 {
-  return [field](ScriptedRunSettings& settings, const py::handle& value) {
-    // A path-like object (pathlib.Path) is taken as its string.
-    settings.*field = py::str(value).cast<std::string>();
-  };
+  return py::str(value).cast<std::string>();
 }
 
-// The keywords, as `proxima run` spells its options with '_' for '-'.
-const std::map<std::string, Setter>& setters()
+// The keyword `name`'s value into `settings`: the scene inputs, or a knob of the settings table
+// (RunSettingTable.h), named as `proxima run` spells its option with '_' for '-'.
+void setKeyword(ScriptedRunSettings& settings, const std::string& name, const py::handle& value)
 {
-  static const std::map<std::string, Setter> table = {
-    {"mesh", text(&ScriptedRunSettings::mesh)},
-    {"scene", text(&ScriptedRunSettings::scene)},
-    {"scale", number("scale", &ScriptedRunSettings::scale)},
-    {"radius", number("radius", &ScriptedRunSettings::radius)},
-    {"stiffness", number("stiffness", &ScriptedRunSettings::stiffness)},
-    {"rate", number("rate", &ScriptedRunSettings::rate)},
-    {"max_force", number("max_force", &ScriptedRunSettings::maxForce)},
-    {"max_iterations", setMaxIterations},
-    {"skin", number("skin", &ScriptedRunSettings::skin)},
-    {"shading", text(&ScriptedRunSettings::shading)},
-    {"feature_angle", number("feature_angle", &ScriptedRunSettings::featureAngle)},
-    {"static_friction", number("static_friction", &ScriptedRunSettings::staticFriction)},
-    {"dynamic_friction", number("dynamic_friction", &ScriptedRunSettings::dynamicFriction)},
-    {"viscosity", number("viscosity", &ScriptedRunSettings::viscosity)},
-    {"texture", text(&ScriptedRunSettings::texture)},
-    {"texture_role", text(&ScriptedRunSettings::textureRole)},
-    {"texture_amplitude", number("texture_amplitude", &ScriptedRunSettings::textureAmplitude)},
-    {"texture_channel", text(&ScriptedRunSettings::textureChannel)},
-    {"tick_budget", text(&ScriptedRunSettings::tickBudget)},
-  };
-  return table;
+  if (name == "mesh" || name == "scene")
+  {
+    (name == "mesh" ? settings.mesh : settings.scene) = textFrom(value);
+    return;
+  }
+  const RunSetting* setting = findRunSetting(name);
+  if (setting == nullptr || name != setting->keyword())
+  {
+    throw py::type_error("unexpected keyword '" + name +
+                         "' (the keywords are proxima run's options, with _ for -)");
+  }
+  if (setting->number != nullptr)
+  {
+    settings.*setting->number = numberFrom(name, value);
+  }
+  else if (setting->whole != nullptr)
+  {
+    settings.*setting->whole = wholeFrom(*setting, value);
+  }
+  else
+  {
+    settings.*setting->text = textFrom(value);
+  }
 }
 } // namespace
 
@@ -128,13 +116,7 @@ ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords)
     {
       continue; // None: the option's default, as when it is not given
     }
-    const auto setter = setters().find(name);
-    if (setter == setters().end())
-    {
-      throw py::type_error("unexpected keyword '" + name +
-                           "' (the keywords are proxima run's options, with _ for -)");
-    }
-    setter->second(settings, value);
+    setKeyword(settings, name, value);
   }
   checkScriptedRunSettings(settings);
   return settings;

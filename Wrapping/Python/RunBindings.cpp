@@ -2,6 +2,7 @@
 #include "Bindings.h"
 
 #include "IO/InputChecks/ParameterRanges.h"
+#include "IO/ScriptedRun/RunSettingTable.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 
 namespace proxima::python
@@ -26,6 +27,16 @@ void addRunBindings(py::module_& module)
     "Plays `path` (a CSV file name or an (N, 4) array t, x, y, z) in lockstep through the mesh "
     "or scene of the keywords (proxima run's options, _ for -). Returns (trace columns, summary "
     "JSON text).");
+  // The knobs the keywords set, from the settings table: keyword -> (the command line's option,
+  // the default as it spells it, the help).
+  py::dict knobs;
+  const ScriptedRunSettings defaults;
+  for (const RunSetting& setting : runSettings())
+  {
+    knobs[py::str(setting.keyword())] =
+      py::make_tuple(setting.flag(), setting.textOf(defaults), setting.help);
+  }
+  module.attr("run_settings") = knobs;
 }
 
 } // namespace proxima::python

@@ -87,6 +87,8 @@ inline constexpr ParameterRange kMaxForceRange{0.0, true, 1000.0, " N"};
 // Surface effects (paper section 4).
 inline constexpr ParameterRange kFrictionRange{0.0, false, 10.0, ""};
 inline constexpr ParameterRange kViscosityRange{0.0, false, 1e4, " N s/m"};
+/// A bump map's metres of height per unit of image value (0 is refused apart: no bump at all).
+inline constexpr ParameterRange kTextureAmplitudeRange{-1.0, false, 1.0, " m"};
 /// A surface's factor on kp, and a stiffness region's at its centre: from a thousandth (a fluid
 /// against bone) to a thousand times the scene's spring.
 inline constexpr ParameterRange kStiffnessScaleRange{0.001, false, 1000.0, ""};

@@ -2,6 +2,7 @@
 
 #include "IO/InputChecks/InputError.h"
 #include "IO/InputChecks/ParameterRanges.h"
+#include "IO/ScriptedRun/RunSettingTable.h"
 #include "IO/Scene/SceneFile.h"
 
 #include <cmath>
@@ -87,51 +88,28 @@ std::pair<std::size_t, double> nearestObject(const CollisionScene& scene, const 
 
 } // namespace
 
-namespace
-{
-void checkRange(const char* option, double value, const ParameterRange& range)
-{
-  if (!range.contains(value))
-  {
-    throw InputError(option, "must be " + describeRange(range) + ", not " + shortNumber(value));
-  }
-}
-
-void checkMember(const char* option, const std::string& value,
-                 std::initializer_list<const char*> accepted)
-{
-  std::string names;
-  for (const char* name : accepted)
-  {
-    if (value == name)
-    {
-      return;
-    }
-    names += names.empty() ? name : std::string(", ") + name;
-  }
-  throw InputError(option, "'" + value + "' is not one of " + names);
-}
-} // namespace
-
 void checkScriptedRunSettings(const ScriptedRunSettings& settings)
 {
   if (settings.mesh.empty() == settings.scene.empty())
   {
     throw InputError("--mesh", "give a mesh or a scene file, one of the two");
   }
-  checkRange("--radius", settings.radius, kProxyRadiusRange);
-  checkRange("--stiffness", settings.stiffness, kStiffnessRange);
-  checkRange("--rate", settings.rate, kScriptedRateRange);
-  checkRange("--max-force", settings.maxForce, kMaxForceRange);
-  checkRange("--max-iterations", settings.maxIterations, kMaxIterationsRange);
-  checkRange("--skin", settings.skin, kSkinRange);
-  TickWorkBudget ignored;
-  const std::string budget =
-    settings.tickBudget.empty() ? std::string() : parseTickBudget(settings.tickBudget, ignored);
-  if (!budget.empty())
+  // Each knob on its own, by its row of the settings table. A scene file gives its objects'
+  // scale and surface; the mesh's knobs then stay at their defaults (the command line refuses
+  // them beside --scene), so only a --mesh run's are checked.
+  for (const RunSetting& setting : runSettings())
   {
-    throw InputError("--tick-budget", budget);
+    if (setting.scope == RunSettingScope::Surface && !settings.scene.empty())
+    {
+      continue;
+    }
+    const std::string refused = setting.refusal(settings);
+    if (!refused.empty())
+    {
+      throw InputError(setting.flag(), refused);
+    }
   }
+  // Then the rules between knobs.
   if (settings.skin >= settings.radius)
   {
     throw InputError("--skin", shortNumber(settings.skin) + " m is not smaller than --radius " +
@@ -139,16 +117,8 @@ void checkScriptedRunSettings(const ScriptedRunSettings& settings)
   }
   if (!settings.scene.empty())
   {
-    // A scene file gives its objects' scale and surface; the mesh's options stay at their
-    // defaults (the command line refuses them beside --scene).
     return;
   }
-  checkRange("--scale", settings.scale, kMeshScaleRange);
-  checkMember("--shading", settings.shading, {"off", "on", "auto"});
-  checkRange("--feature-angle", settings.featureAngle, kFeatureAngleRange);
-  checkRange("--static-friction", settings.staticFriction, kFrictionRange);
-  checkRange("--dynamic-friction", settings.dynamicFriction, kFrictionRange);
-  checkRange("--viscosity", settings.viscosity, kViscosityRange);
   const std::string friction =
     frictionPairError(settings.staticFriction, settings.dynamicFriction, "--static-friction");
   if (!friction.empty())
@@ -163,14 +133,10 @@ void checkScriptedRunSettings(const ScriptedRunSettings& settings)
     }
     return;
   }
-  checkMember("--texture-role", settings.textureRole,
-              {"bump", "friction", "viscosity", "stiffness"});
-  checkMember("--texture-channel", settings.textureChannel,
-              {"luminance", "red", "green", "blue", "alpha"});
-  if (!(std::abs(settings.textureAmplitude) <= 1.0))
+  if (settings.textureRole.empty())
   {
-    throw InputError("--texture-amplitude", "must be a number other than 0, from -1 to 1 m, not " +
-                                              shortNumber(settings.textureAmplitude));
+    throw InputError("--texture", "requires --texture-role (bump, friction, viscosity or "
+                                  "stiffness)");
   }
   const bool amplitudeGiven = settings.textureAmplitude != 0.0;
   if (settings.textureRole == "bump")

@@ -5,6 +5,7 @@
 // functions, so that a run gives the same trace whoever asked for it.
 #pragma once
 
+#include "IO/ScriptedRun/RunSettingList.h"
 #include "IO/Scene/SceneBuilder.h"
 #include "Proxy/ProxyParameters.h"
 #include "Runtime/FingerPath.h"
@@ -21,33 +22,15 @@ struct ScriptedRunSettings
   /// A mesh file, or (exclusive) a scene file.
   std::string mesh;
   std::string scene;
-  /// --mesh only: file units to metres.
-  double scale = 1.0;
-  /// Proxy radius in metres.
-  double radius = 0.001;
-  /// Spring kp in N/m.
-  double stiffness = 1000.0;
   /// The finger path file (what messages about the path's start name).
   std::string path;
-  /// Servo rate in Hz.
-  double rate = 1000.0;
-  /// Force clamp in newtons.
-  double maxForce = 10.0;
-  int maxIterations = 256;
-  /// Contact skin in metres; 0: the scene's (Documentation/Epsilons.md).
-  double skin = 0.0;
-  // --mesh only: the surface.
-  std::string shading = "off";
-  double featureAngle = 30.0;
-  double staticFriction = 0.0;
-  double dynamicFriction = 0.0;
-  double viscosity = 0.0;
-  std::string texture;
-  std::string textureRole;
-  double textureAmplitude = 0.0;
-  std::string textureChannel = "luminance";
-  /// --tick-budget as given (parseTickBudget); empty: the caller's default.
-  std::string tickBudget;
+  // The knobs, one member per row of RunSettingList.h with the row's default: --scale, --radius,
+  // ..., --tick-budget. An empty --tick-budget is the caller's default; a skin of 0 the scene's.
+#define PROXIMA_RUN_SETTING_MEMBER(member, option, type, kind, byDefault, range, choices, scope,   \
+                                   field, help)                                                    \
+  type member = byDefault;
+  PROXIMA_RUN_SETTINGS(PROXIMA_RUN_SETTING_MEMBER)
+#undef PROXIMA_RUN_SETTING_MEMBER
 };
 
 /// Throws InputError naming the option (its command-line spelling, "--radius") when a value is

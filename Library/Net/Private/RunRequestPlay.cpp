@@ -5,6 +5,7 @@
 #include "IO/Scene/SceneFile.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "Net/Private/RunFolder.h"
+#include "Net/Private/RunSettingsMessage.h"
 #include "Net/Private/TickColumns.h"
 
 #include <nlohmann/json.hpp>
@@ -22,28 +23,6 @@ namespace
 // The client stopped reading (or went away): the run ends there.
 struct ClientGone
 {};
-
-ScriptedRunSettings settingsOf(const net::RunSettings& in)
-{
-  ScriptedRunSettings s;
-  s.scale = in.scale();
-  s.radius = in.radius();
-  s.stiffness = in.stiffness();
-  s.rate = in.rate();
-  s.maxForce = in.max_force();
-  s.maxIterations = in.max_iterations();
-  s.skin = in.skin();
-  s.shading = in.shading();
-  s.featureAngle = in.feature_angle();
-  s.staticFriction = in.static_friction();
-  s.dynamicFriction = in.dynamic_friction();
-  s.viscosity = in.viscosity();
-  s.textureRole = in.texture_role();
-  s.textureAmplitude = in.texture_amplitude();
-  s.textureChannel = in.texture_channel();
-  s.tickBudget = in.tick_budget();
-  return s;
-}
 
 // The summary a local run would print: the client's file names where the server's stand.
 std::string clientSummary(const std::string& summary, const net::RunRequest& request,
@@ -85,7 +64,8 @@ grpc::Status playRunRequest(const net::RunRequest& request, const RunLimits& lim
   detail::RunFolder folder;
   try
   {
-    ScriptedRunSettings settings = settingsOf(request.settings());
+    ScriptedRunSettings settings;
+    detail::readRunSettings(request.settings(), settings);
     if (scene)
     {
       settings.scene = folder.writeScene(request.scene());

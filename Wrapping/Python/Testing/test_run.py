@@ -2,6 +2,7 @@
 summary (but the clock's figures), on shared meshes read by each of the readers involved."""
 import json
 import os
+import re
 
 import numpy
 import pytest
@@ -76,3 +77,35 @@ def test_a_scene_file_runs_as_on_the_command_line(tmp_path):
     assert set(trace["object"]) >= {0, 1}  # two of the three objects touched, at least
     cli_summary["trace"] = None
     assert without_timing(summary) == without_timing(cli_summary)
+
+
+def test_run_settings_are_the_command_lines_options():
+    """RUN_SETTINGS, from the settings table, names exactly the knobs `proxima run --help` lists
+    (but the inputs and outputs), each with the default the help gives where it gives one, and
+    run() refuses a bad value of each in the command line's words, naming its option."""
+    shown = proxima_cli("run", "--help")
+    listed = set()
+    for line in shown.splitlines():
+        column = line.strip().split(" ")[0]
+        if column.startswith("--"):
+            listed.add(column.split(",")[0])
+    # What is not a knob: the run's inputs and outputs, its mode, and the device's options.
+    not_knobs = {"--help", "--mesh", "--scene", "--path", "--out", "--summary", "--max-ticks",
+                 "--realtime", "--no-floor", "--bodies-out", "--falcon-firmware"}
+    not_knobs |= {o for o in listed if o.startswith("--device") or "record" in o}
+    knobs = {option for option, _, _ in proxima.RUN_SETTINGS.values()}
+    assert knobs == listed - not_knobs, shown
+    for keyword, (option, default, help_text) in proxima.RUN_SETTINGS.items():
+        assert option == "--" + keyword.replace("_", "-")
+        assert help_text in " ".join(shown.split()), option
+        # Where the help names a plain default, it is the one the table gives the member.
+        said = re.search(r"\(default ([^):]+)", help_text)
+        if said:
+            assert said.group(1) == default, (option, help_text, default)
+    mesh = os.path.join(os.environ.get("PROXIMA_SOURCE_DIR", ""), "Data", "Meshes",
+                        "icosphere-4.obj")
+    path = numpy.array([[0.0, 0.0, 0.0, 1.0], [0.01, 0.0, 0.0, 1.0]])
+    for keyword, bad in (("radius", -1.0), ("max_force", 1e9), ("max_iterations", 0),
+                         ("shading", "sometimes"), ("tick_budget", "fast")):
+        with pytest.raises(proxima.InputError, match="--" + keyword.replace("_", "-")):
+            proxima.run(mesh=mesh, path=path, **{keyword: bad})

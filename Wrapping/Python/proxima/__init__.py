@@ -27,6 +27,11 @@ from ._proxima import InputError, OutputError, Session, make_path, path_kinds, r
 #: (Documentation/CommandLine.md): "force_fading" is 8, for one.
 TICK_CONDITIONS = dict(_proxima.tick_conditions)
 
+#: The keywords run, check and Session take besides mesh and scene, from the settings table
+#: (Library/IO/ScriptedRun/RunSettingList.h): keyword -> (the command line's option, its default
+#: as the command line spells it, its help). RUN_SETTINGS["max_force"][0] is "--max-force".
+RUN_SETTINGS = dict(_proxima.run_settings)
+
 #: The columns of a trace, in the order of trace v2's CSV header.
 TRACE_COLUMNS = ("tick", "t", "finger_x", "finger_y", "finger_z", "proxy_x", "proxy_y", "proxy_z",
                  "force_x", "force_y", "force_z", "contacts", "iterations", "solve_ns", "object",
@@ -43,9 +48,8 @@ def run(mesh=None, path=None, *, scene=None, max_ticks=1e7, **options):
     """Plays a finger path through a mesh (or a scene file) in lockstep, as `proxima run` does.
 
     path: a CSV file name (t,x,y,z) or an (N, 4) array of rows t, x, y, z.
-    options: `proxima run`'s options with _ for -: scale, radius, stiffness, rate, max_force,
-    max_iterations, skin, shading, feature_angle, static_friction, dynamic_friction, viscosity,
-    texture, texture_role, texture_amplitude, texture_channel, tick_budget.
+    options: `proxima run`'s options with _ for -, the keys of RUN_SETTINGS (radius, max_force,
+    tick_budget, ...).
     Returns RunResult(trace, summary); the trace's values are those of the CLI's CSV, bit for bit
     (but solve_ns, the one measured column).
     """
