@@ -36,8 +36,8 @@ constexpr RunSetting row(const char* option, Kind kind, Scope scope, int field, 
   return {option, kind, scope, field, help, range, choices, nullptr, nullptr, member};
 }
 
-#define PROXIMA_RUN_SETTING_ROW(member, option, type, kind, byDefault, range, choices, scope,     \
-                                field, help)                                                      \
+#define PROXIMA_RUN_SETTING_ROW(member, option, type, kind, byDefault, range, choices, scope,      \
+                                field, help)                                                       \
   row(option, Kind::kind, Scope::scope, field, help, range, choices, &ScriptedRunSettings::member),
 
 constexpr std::array kRows{PROXIMA_RUN_SETTINGS(PROXIMA_RUN_SETTING_ROW)};
@@ -104,47 +104,46 @@ std::string RunSetting::refusal(const ScriptedRunSettings& settings) const
 {
   switch (kind)
   {
-  case Kind::Number:
-  case Kind::WholeNumber:
-  {
-    const double value = number != nullptr ? settings.*number : settings.*whole;
-    return range->contains(value) ? std::string()
-                                  : "must be " + describeRange(*range) + ", not " +
-                                      shortNumber(value);
-  }
-  case Kind::NonZeroNumber:
-  {
-    // 0 is the knob not given (the rules between knobs ask for it where it is needed); the
-    // command line refuses a 0 given on purpose.
-    const double value = settings.*number;
-    return value == 0.0 || range->contains(value)
-             ? std::string()
-             : "must be a number other than 0, " + describeRange(*range) + ", not " +
-                 shortNumber(value);
-  }
-  case Kind::Choice:
-  {
-    const std::vector<std::string> words = choiceList();
-    // Empty is the knob not given: the rules between knobs ask for it where it is needed.
-    const std::string& value = settings.*text;
-    if (value.empty() || std::find(words.begin(), words.end(), value) != words.end())
+    case Kind::Number:
+    case Kind::WholeNumber:
     {
-      return {};
+      const double value = number != nullptr ? settings.*number : settings.*whole;
+      return range->contains(value)
+               ? std::string()
+               : "must be " + describeRange(*range) + ", not " + shortNumber(value);
     }
-    std::string names;
-    for (const std::string& word : words)
+    case Kind::NonZeroNumber:
     {
-      names += names.empty() ? word : ", " + word;
+      // 0 is the knob not given (the rules between knobs ask for it where it is needed); the
+      // command line refuses a 0 given on purpose.
+      const double value = settings.*number;
+      return value == 0.0 || range->contains(value)
+               ? std::string()
+               : "must be a number other than 0, " + describeRange(*range) + ", not " +
+                   shortNumber(value);
     }
-    return "'" + value + "' is not one of " + names;
-  }
-  case Kind::TickBudget:
-  {
-    TickWorkBudget ignored;
-    return (settings.*text).empty() ? std::string() : parseTickBudget(settings.*text, ignored);
-  }
-  case Kind::File:
-    return {};
+    case Kind::Choice:
+    {
+      const std::vector<std::string> words = choiceList();
+      // Empty is the knob not given: the rules between knobs ask for it where it is needed.
+      const std::string& value = settings.*text;
+      if (value.empty() || std::find(words.begin(), words.end(), value) != words.end())
+      {
+        return {};
+      }
+      std::string names;
+      for (const std::string& word : words)
+      {
+        names += names.empty() ? word : ", " + word;
+      }
+      return "'" + value + "' is not one of " + names;
+    }
+    case Kind::TickBudget:
+    {
+      TickWorkBudget ignored;
+      return (settings.*text).empty() ? std::string() : parseTickBudget(settings.*text, ignored);
+    }
+    case Kind::File: return {};
   }
   return {};
 }

@@ -51,8 +51,8 @@ int main(int argc, char** argv)
     return 2;
   }
   const Field rows[] = {
-#define PROXIMA_RUN_SETTING_FIELD(member, option, type, kind, byDefault, range, choices, scope,   \
-                                  field, help)                                                    \
+#define PROXIMA_RUN_SETTING_FIELD(member, option, type, kind, byDefault, range, choices, scope,    \
+                                  field, help)                                                     \
   {option, protoType<type>(), field},
     PROXIMA_RUN_SETTINGS(PROXIMA_RUN_SETTING_FIELD)
 #undef PROXIMA_RUN_SETTING_FIELD
@@ -76,8 +76,8 @@ int main(int argc, char** argv)
     {
       c = c == '-' ? '_' : c;
     }
-    message += "  " + std::string(row.type) + " " + name + " = " + std::to_string(row.number) +
-               ";\n";
+    message +=
+      "  " + std::string(row.type) + " " + name + " = " + std::to_string(row.number) + ";\n";
   }
   const std::string text =
     "// Generated from Library/IO/ScriptedRun/RunSettingList.h by Library/Net/Generate/"

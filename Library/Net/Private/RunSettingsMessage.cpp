@@ -19,8 +19,7 @@ const FieldDescriptor* fieldOf(const RunSetting& setting)
   {
     return nullptr;
   }
-  const FieldDescriptor* field =
-    net::RunSettings::descriptor()->FindFieldByName(setting.keyword());
+  const FieldDescriptor* field = net::RunSettings::descriptor()->FindFieldByName(setting.keyword());
   if (field == nullptr || field->number() != setting.field)
   {
     throw std::logic_error("RunSettings has no field " + std::to_string(setting.field) + " " +

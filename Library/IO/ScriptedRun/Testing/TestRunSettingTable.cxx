@@ -72,17 +72,16 @@ TEST(RunSettingTable, EachRowHasItsOwnMemberOfTheKindItsValueNeeds)
   const ScriptedRunSettings defaults = meshRun();
   for (const RunSetting& setting : runSettings())
   {
-    const int members = (setting.number != nullptr) + (setting.whole != nullptr) +
-                        (setting.text != nullptr);
+    const int members =
+      (setting.number != nullptr) + (setting.whole != nullptr) + (setting.text != nullptr);
     ASSERT_EQ(members, 1) << setting.option;
-    const bool numberKind = setting.kind == RunSettingKind::Number ||
-                            setting.kind == RunSettingKind::NonZeroNumber;
+    const bool numberKind =
+      setting.kind == RunSettingKind::Number || setting.kind == RunSettingKind::NonZeroNumber;
     EXPECT_EQ(numberKind, setting.number != nullptr) << setting.option;
     EXPECT_EQ(setting.kind == RunSettingKind::WholeNumber, setting.whole != nullptr)
       << setting.option;
     EXPECT_EQ(setting.range != nullptr, numberKind || setting.whole != nullptr) << setting.option;
-    EXPECT_EQ(setting.kind == RunSettingKind::Choice, setting.choices != nullptr)
-      << setting.option;
+    EXPECT_EQ(setting.kind == RunSettingKind::Choice, setting.choices != nullptr) << setting.option;
 
     ScriptedRunSettings changed = defaults;
     if (setting.number != nullptr)
