@@ -12,7 +12,8 @@ if ! command -v "$formatter" > /dev/null; then
   exit 1
 fi
 
-mapfile -t files < <(git ls-files '*.h' '*.cpp' '*.cxx')
+# Tracked files and new ones not yet added (a clean checkout has none of the latter).
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.h' '*.cpp' '*.cxx')
 if [ "${1:-}" = --fix ]; then
   "$formatter" -i "${files[@]}"
   echo "check-format: formatted ${#files[@]} files"
