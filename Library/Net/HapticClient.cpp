@@ -62,15 +62,16 @@ void throwForStatus(const grpc::Status& status, const std::string& server)
     case grpc::StatusCode::OK: return;
     case grpc::StatusCode::INVALID_ARGUMENT: throw std::invalid_argument(status.error_message());
     case grpc::StatusCode::UNAUTHENTICATED:
-      throw InputError("--token-file", status.error_message());
+      throw ServerRefused("--token-file", status.error_message());
     case grpc::StatusCode::FAILED_PRECONDITION:
-      throw InputError("--server", "the server at " + server + ": " + status.error_message());
+      throw ServerRefused("--server", "the server at " + server + ": " + status.error_message());
     case grpc::StatusCode::UNIMPLEMENTED:
-      throw InputError("--server", "the server at " + server +
-                                     " owns no device (start it with proxima serve --device)");
+      throw ServerUnavailable("--server",
+                              "the server at " + server +
+                                " owns no device (start it with proxima serve --device)");
     case grpc::StatusCode::UNAVAILABLE:
-      throw InputError("--server",
-                       "the server at " + server + " went away (" + status.error_message() + ")");
+      throw ServerUnavailable("--server", "the server at " + server + " went away (" +
+                                            status.error_message() + ")");
     default:
       throw std::runtime_error("the server at " + server + " failed: " + status.error_message());
   }
@@ -180,13 +181,13 @@ struct HapticClient::Impl
         {
           continue;
         }
-        throw InputError("--server", reconnection.gaveUp(status.error_message()));
+        throw ServerUnavailable("--server", reconnection.gaveUp(status.error_message()));
       }
       if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION)
       {
-        throw InputError("--server",
-                         "the server at " + server +
-                           " refused to make this client the owner: " + status.error_message());
+        throw ServerRefused("--server",
+                            "the server at " + server +
+                              " refused to make this client the owner: " + status.error_message());
       }
       throwForStatus(status, server);
       throw std::runtime_error("the server at " + server + " failed: " + status.error_message());
@@ -571,7 +572,7 @@ ModelReceiptInfo HapticClient::commit()
     {
       if (!reconnection.failed() || !reconnection.waitForServer())
       {
-        throw InputError("--server", reconnection.gaveUp(status.error_message()));
+        throw ServerUnavailable("--server", reconnection.gaveUp(status.error_message()));
       }
       if (!m_impl->ownsModel())
       {

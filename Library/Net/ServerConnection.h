@@ -4,6 +4,8 @@
 // back. Both clients take it: remote runs (RemoteRuns.h) and the live client (HapticClient.h).
 #pragma once
 
+#include "IO/InputChecks/InputError.h"
+
 #include <chrono>
 #include <string>
 
@@ -19,12 +21,17 @@ namespace proxima
 /// answered is an error at once (ServerChannel.h).
 struct ReconnectPolicy
 {
+  /// How long after the connection drops gRPC first tries to connect again (at least 1 ms).
   std::chrono::milliseconds firstBackoff{50};
+  /// The longest interval between gRPC's tries to connect again (at least firstBackoff).
   std::chrono::milliseconds maxBackoff{2000};
-  /// Zero: a call that fails is an error at once, as before clients reconnected.
+  /// How long after the first failure the client waits for the server before it gives up. Zero:
+  /// a call that fails is an error at once.
   std::chrono::milliseconds maxWait{10000};
 };
 
+/// Where and how a client reaches a Proxima server: its address, token, TLS roots and
+/// reconnection policy. HapticClient and runRemotely take it.
 struct ServerConnection
 {
   /// HOST:PORT.
@@ -37,6 +44,29 @@ struct ServerConnection
   std::string tlsRootCertificates;
   /// `proxima remote --reconnect SECONDS` sets maxWait.
   ReconnectPolicy reconnect = {};
+  /// How long the first connection may take before nothing answering there is an error (a
+  /// refused connection is one at once).
+  std::chrono::milliseconds connectTimeout{10000};
+};
+
+/// The server cannot be reached: nothing answers at its address, it went away and did not come
+/// back within the ReconnectPolicy, or it is not a server of the kind asked for (no device). An
+/// InputError naming --server, so that a caller that only reports errors needs nothing new; a
+/// caller that retries, or a binding that maps it (Python's ConnectionError), can tell it apart.
+class ServerUnavailable : public InputError
+{
+public:
+  /// An error about `path` (--server) with `defect` in words, as InputError's.
+  using InputError::InputError;
+};
+
+/// The server refused this client what it asked: another client owns the model, or the token is
+/// wrong or missing. An InputError naming --server or --token-file (Python's PermissionError).
+class ServerRefused : public InputError
+{
+public:
+  /// An error about `path` (--server or --token-file) with `defect` in words, as InputError's.
+  using InputError::InputError;
 };
 
 } // namespace proxima

@@ -37,5 +37,6 @@ void addRunBindings(py::module_& module);
 void addPathBindings(py::module_& module);
 void addSessionBindings(py::module_& module);
 void addOracleBindings(py::module_& module);
+void addHapticClientBindings(py::module_& module);
 
 } // namespace proxima::python

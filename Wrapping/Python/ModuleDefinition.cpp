@@ -23,6 +23,9 @@ PYBIND11_MODULE(_proxima, module)
     conditions[entry.name] = static_cast<std::uint32_t>(entry.condition);
   }
   module.attr("tick_conditions") = conditions;
+#if PROXIMA_PYTHON_NET
+  python::addHapticClientBindings(module);
+#endif
 #if PROXIMA_PYTHON_ORACLE
   python::addOracleBindings(module);
 #endif

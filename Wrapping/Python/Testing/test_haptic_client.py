@@ -1,5 +1,5 @@
 """proxima.haptic_client against `proxima serve --device sim`: the Python client of the live
-server, generated from the C++ client's .proto, uploads a sphere under a scripted finger that
+server, the C++ client bound, uploads a sphere under a scripted finger that
 presses 5 mm into it, and follows the proxy: never inside the sphere (its distance from the
 centre against the polyhedron's inscribed radius), the held force within kp times the spring's
 stretch, a touch event for the shape; a malformed model is refused in the server's words. A

@@ -27,12 +27,15 @@ SPHERE = os.path.join(SOURCE, "Data", "Meshes", "icosphere-4.obj")
 FORCE_FADING = TICK_CONDITIONS["force_fading"]
 
 # The child: owns the model, streams a 1,498,000-triangle sphere in parts and kills itself with
-# SIGKILL after half of them, the commit never sent.
+# SIGKILL after half of them, the commit never sent. It speaks the protocol itself (gRPC and the
+# generated messages), as a faulty client of any language would: the product's client never
+# sends half a model.
 KILLED_UPLOADER = r"""
-import os, signal, sys
+import os, signal, sys, threading
+import grpc
 import numpy
-from proxima.haptic_client import HapticClient
 from proxima.net import proxima_haptic_pb2 as messages
+from proxima.net import proxima_haptic_pb2_grpc as service
 
 rings, segments = 750, 1000
 theta = numpy.linspace(0.0, numpy.pi, rings + 1)[1:-1]
@@ -51,9 +54,31 @@ south = len(points) - 1
 triangles.append(numpy.stack([numpy.full(segments, south), index(rings - 2, k + 1),
                               index(rings - 2, k)], 1))
 triangles = numpy.vstack(triangles)
-client = HapticClient(sys.argv[1])
-client.shape(points, triangles, name="big sphere")
-parts = [part for part in client._parts() if part.HasField("shape")]
+
+channel = grpc.insecure_channel(sys.argv[1], options=[("grpc.max_send_message_length", -1)])
+stub = service.HapticServerStub(channel)
+letting_go = threading.Event()
+
+def holding():  # the owner's side of HoldOwnership: nothing sent, held until the process dies
+    letting_go.wait()
+    return
+    yield
+
+# Kept: a call that Python collects is cancelled, and the ownership would end with it.
+hold = stub.HoldOwnership(holding())
+grant = next(hold)
+owner = (("proxima-owner", grant.key),)
+# At most 65,536 points or triangles in one message, as the product's clients send them.
+items = 65536
+parts = []
+for start in range(0, max(len(points), len(triangles)), items):
+    part = messages.ShapePart(shape=0)
+    if start == 0:
+        part.name = "big sphere"
+        part.material.stiffness = 1.0
+    part.points.extend(points[start:start + items].ravel().tolist())
+    part.triangles.extend(triangles[start:start + items].ravel().tolist())
+    parts.append(messages.ModelUpload(shape=part))
 print(len(triangles), len(parts), flush=True)
 
 def half_then_die():
@@ -62,7 +87,7 @@ def half_then_die():
             os.kill(os.getpid(), signal.SIGKILL)
         yield part
 
-client._stub.UploadModel(half_then_die(), metadata=client._metadata + client._owner_metadata)
+stub.UploadModel(half_then_die(), metadata=owner)
 """
 
 
