@@ -431,7 +431,24 @@ void aimAtProxy(vtkCamera* camera, const HapticState& state, double distance)
   camera->OrthogonalizeViewUp();
 }
 
-int view(const ViewOptions& options)
+// What a view plays, loaded and checked before any window object exists: every refusal of the
+// input comes first, and alike with or without a display.
+struct ViewInputs
+{
+  LoadedScene loaded;
+  std::vector<HingeAxis> hinges;
+  std::shared_ptr<BodyCoupling> bodies;
+  FingerPath fingerPath;
+  std::shared_ptr<const CollisionScene> scene;
+  double pathSeconds = 0.0;
+  /// --at, or the path's end.
+  double at = 0.0;
+  /// --screenshot's temporary, made now so that an unwritable one fails before the run.
+  std::optional<AtomicOutputFile> screenshotFile;
+};
+
+// Fills `inputs` (not returned: the screenshot's temporary file is not movable).
+void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
 {
   const SceneOptions& shared = options.scene;
   // The viewer runs the real-time loops: their rate rule, refused before anything is loaded.
@@ -449,61 +466,43 @@ int view(const ViewOptions& options)
     throw InputError("--screenshot", "the mouse moves the finger only in a window: give "
                                      "--screenshot a --path, or take the window's picture");
   }
-  LoadedScene loaded = loadScene(shared);
-  const std::vector<HingeAxis> hinges = sceneHinges(loaded.description);
+  inputs.loaded = loadScene(shared);
+  inputs.hinges = sceneHinges(inputs.loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
-  const std::shared_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
-  const FingerPath fingerPath = shared.path.empty() ? mouseStartPath(*loaded.scene, shared.radius)
-                                                    : readFingerPathFile(shared.path);
-  checkRadiusAgainstScene(shared, loaded);
-  checkPathStart(shared, loaded, fingerPath);
-  std::shared_ptr<const CollisionScene> scene(std::move(loaded.scene));
-  const double pathSeconds = fingerPath.endTime() - fingerPath.startTime();
-  const double at = options.at >= 0.0 ? options.at : pathSeconds;
-  if (at > pathSeconds)
+  inputs.bodies = sceneBodies(shared, inputs.loaded);
+  inputs.fingerPath = shared.path.empty() ? mouseStartPath(*inputs.loaded.scene, shared.radius)
+                                          : readFingerPathFile(shared.path);
+  checkRadiusAgainstScene(shared, inputs.loaded);
+  checkPathStart(shared, inputs.loaded, inputs.fingerPath);
+  inputs.scene = std::move(inputs.loaded.scene);
+  inputs.pathSeconds = inputs.fingerPath.endTime() - inputs.fingerPath.startTime();
+  inputs.at = options.at >= 0.0 ? options.at : inputs.pathSeconds;
+  if (inputs.at > inputs.pathSeconds)
   {
-    throw InputError("--at", shortNumber(at) + " s is after the end of the path (" +
-                               shortNumber(pathSeconds) + " s)");
+    throw InputError("--at", shortNumber(inputs.at) + " s is after the end of the path (" +
+                               shortNumber(inputs.pathSeconds) + " s)");
   }
   refuseOverlappingFiles(
     {{options.screenshot, "--screenshot"}, {options.device.recordDevice, "--record-device"}},
-    runInputs(shared, loaded, options.device));
-  // Fail on an unwritable screenshot before the run, not after it: its temporary is made now.
-  std::optional<AtomicOutputFile> screenshotFile;
+    runInputs(shared, inputs.loaded, options.device));
   if (!options.screenshot.empty())
   {
     if (namesAnotherFormat(options.screenshot))
     {
       throw InputError(options.screenshot, "a screenshot is a PNG file: name it .png");
     }
-    screenshotFile.emplace(options.screenshot);
+    inputs.screenshotFile.emplace(options.screenshot);
   }
+}
 
-  // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
-  FingerPath shifted = fingerPath;
-  for (double& time : shifted.times)
-  {
-    time -= fingerPath.startTime();
-  }
-  // The finger's device, as for `proxima run --device` (sim plays the path); made before the
-  // renderer, so that it outlives the haptic threads.
-  // A mouse session has no end: --record-device keeps its first ten minutes.
-  constexpr double kMouseRecordingSeconds = 600.0;
-  RunDevice device(
-    options.device, shifted,
-    ticksCovering(0.0, mouse ? kMouseRecordingSeconds : pathSeconds + 0.5, shared.rate));
-  // Last of the checks, so that every refusal of the input above comes first and alike with or
-  // without a display; before the first VTK window object.
-  const std::string noDisplay = shell::displayProblem("proxima view");
-  if (!noDisplay.empty())
-  {
-    throw InputError("proxima view", noDisplay);
-  }
-  vtkNew<vtkHapticRenderer> haptics;
-  haptics->SetCollisionScene(scene, bodies);
-  haptics->SetDevice(&device.device());
-  haptics->SetProxyStart(fingerPath.positions.front().x, fingerPath.positions.front().y,
-                         fingerPath.positions.front().z);
+// The haptic loops' settings: the scene, the device, the proxy's start and the knobs.
+void configureHaptics(vtkHapticRenderer* haptics, const SceneOptions& shared,
+                      const ViewInputs& inputs, HapticDevice& device)
+{
+  haptics->SetCollisionScene(inputs.scene, inputs.bodies);
+  haptics->SetDevice(&device);
+  const Vec3& start = inputs.fingerPath.positions.front();
+  haptics->SetProxyStart(start.x, start.y, start.z);
   haptics->SetProxyRadius(shared.radius);
   haptics->SetStiffness(shared.stiffness);
   haptics->SetMaxForce(shared.maxForce);
@@ -514,130 +513,210 @@ int view(const ViewOptions& options)
   haptics->SetTickBudgetSeconds(budget.seconds);
   haptics->SetTickBudgetIterations(budget.iterations);
   haptics->SetTickSafetyCapSeconds(budget.safetyCapSeconds);
+}
 
-  const SceneActors surface = makeSceneActors(*scene, bodies.get());
-
-  vtkNew<vtkHapticStateRepresentation> representation;
-  vtkNew<vtkTextActor> status;
-  shell::styleHud(status);
-  // The last 5 s of force, 0 to the clamp.
-  shell::ForcePlot forcePlot(5.0, shared.maxForce);
-
-  vtkNew<vtkRenderer> renderer;
-  if (surface.still != nullptr)
+// What is drawn: the scene's surface, the proxy's representation, the HUD and the force plot, in
+// one renderer and window.
+struct ViewStage
+{
+  ViewStage(const ViewOptions& options, const ViewInputs& inputs)
+    : surface(makeSceneActors(*inputs.scene, inputs.bodies.get()))
+    // The last 5 s of force, 0 to the clamp.
+    , forcePlot(5.0, options.scene.maxForce)
   {
-    renderer->AddActor(surface.still);
-  }
-  for (const vtkSmartPointer<vtkActor>& body : surface.bodies)
-  {
-    renderer->AddActor(body);
-  }
-  representation->AddToRenderer(renderer);
-  renderer->AddViewProp(status);
-  forcePlot.addToRenderer(renderer);
-  renderer->SetBackground(0.1, 0.12, 0.16);
-  renderer->SetBackground2(0.25, 0.28, 0.34);
-  renderer->GradientBackgroundOn();
-  renderer->SetUseDepthPeeling(1);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(options.width, options.height);
-  window->SetAlphaBitPlanes(1);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-  window->SetWindowName("proxima view");
-  renderer->ResetCamera();
-  const double distance = options.viewDistance > 0.0 ? options.viewDistance : 40.0 * shared.radius;
-
-  if (!options.screenshot.empty())
-  {
-    LoopStatistics servo;
-    HapticState state;
-    BodyPoses poses;
-    const bool lockstep = options.device.device == "sim";
-    if (lockstep)
+    shell::styleHud(status);
+    if (surface.still != nullptr)
     {
-      // A scripted finger needs no real clock: the state at --at comes from the lockstep run
-      // (the same steps as the threads, on a virtual clock) in a fraction of --at, and is the
-      // same picture every time. As `proxima run`, lockstep takes no budget unless given one.
-      state =
-        lockstepStateAt(shared, *scene, shifted, at, device.device(), forcePlot, bodies.get());
-      servo.rate = shared.rate;
-      if (bodies != nullptr)
-      {
-        bodies->poses(poses);
-      }
+      renderer->AddActor(surface.still);
     }
-    else
+    for (const vtkSmartPointer<vtkActor>& body : surface.bodies)
     {
-      // A real device moves in real time: its state at --at is reached by living through it.
-      haptics->SetDuration(at + 0.5);
-      if (!haptics->Start())
-      {
-        throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
-      }
-      while (haptics->GetState().time < at && !haptics->IsFinished())
-      {
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-      }
-      state = haptics->GetState();
-      servo = haptics->GetServoStatistics();
-      poses = haptics->GetBodyPoses();
-      haptics->Stop();
+      renderer->AddActor(body);
     }
-    placeBodyActors(surface, poses);
-    Aabb framed = framedBounds(*scene, state, hinges, poses);
-    frameForceArrow(representation, framed, state, shared.maxForce, options.forceScale);
-    for (const vtkSmartPointer<vtkActor>& axis : makeHingeActors(hinges, framed.diagonal()))
+    representation->AddToRenderer(renderer);
+    renderer->AddViewProp(status);
+    forcePlot.addToRenderer(renderer);
+    renderer->SetBackground(0.1, 0.12, 0.16);
+    renderer->SetBackground2(0.25, 0.28, 0.34);
+    renderer->GradientBackgroundOn();
+    renderer->SetUseDepthPeeling(1);
+    window->SetSize(options.width, options.height);
+    window->SetAlphaBitPlanes(1);
+    window->SetMultiSamples(0);
+    window->AddRenderer(renderer);
+    window->SetWindowName("proxima view");
+    renderer->ResetCamera();
+  }
+
+  /// The force arrow and the hinges' axes sized for the objects framed around `state`.
+  Aabb frame(const ViewOptions& options, const ViewInputs& inputs, const HapticState& state,
+             const BodyPoses& poses)
+  {
+    Aabb framed = framedBounds(*inputs.scene, state, inputs.hinges, poses);
+    frameForceArrow(representation, framed, state, options.scene.maxForce, options.forceScale);
+    for (const vtkSmartPointer<vtkActor>& axis : makeHingeActors(inputs.hinges, framed.diagonal()))
     {
       renderer->AddActor(axis);
     }
-    representation->SetState(state);
-    status->SetInput(statusText(state, servo, nullptr).c_str());
-    if (!lockstep)
-    {
-      forcePlot.add(state.time, norm(state.force));
-    }
-    forcePlot.update();
-    aimAtProxy(renderer->GetActiveCamera(), state, distance);
-    if (options.viewDistance <= 0.0)
-    {
-      // From the same side, far enough back for the framed objects to fit.
-      double bounds[6] = {framed.lower.x, framed.upper.x, framed.lower.y,
-                          framed.upper.y, framed.lower.z, framed.upper.z};
-      renderer->ResetCamera(bounds);
-    }
-    renderer->ResetCameraClippingRange();
-    window->SetOffScreenRendering(1);
-    screenshotFile->write(shell::windowPng(window, options.screenshot));
-    screenshotFile->commit();
-    device.finish();
-    char line[512];
-    std::snprintf(
-      line, sizeof line, "%dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n", options.width,
-      options.height, state.time, lockstep ? "lockstep" : "real time", state.numContacts,
-      state.conditions.has(TickCondition::stuck) ? " (sticking)" : "", norm(state.force));
-    writeStandardOutput(options.screenshot + ": " + line);
-    return kExitOk;
+    return framed;
   }
 
+  SceneActors surface;
+  vtkNew<vtkHapticStateRepresentation> representation;
+  vtkNew<vtkTextActor> status;
+  shell::ForcePlot forcePlot;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+};
+
+// --screenshot: the state at --at, drawn offscreen into the PNG; for a scripted finger from the
+// lockstep run, for a real device by living through it.
+int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& stage,
+                   vtkHapticRenderer* haptics, RunDevice& device, const FingerPath& shifted)
+{
+  const SceneOptions& shared = options.scene;
+  LoopStatistics servo;
+  HapticState state;
+  BodyPoses poses;
+  const bool lockstep = options.device.device == "sim";
+  if (lockstep)
+  {
+    // A scripted finger needs no real clock: the state at --at comes from the lockstep run (the
+    // same steps as the threads, on a virtual clock) in a fraction of --at, and is the same
+    // picture every time. As `proxima run`, lockstep takes no budget unless given one.
+    state = lockstepStateAt(shared, *inputs.scene, shifted, inputs.at, device.device(),
+                            stage.forcePlot, inputs.bodies.get());
+    servo.rate = shared.rate;
+    if (inputs.bodies != nullptr)
+    {
+      inputs.bodies->poses(poses);
+    }
+  }
+  else
+  {
+    // A real device moves in real time: its state at --at is reached by living through it.
+    haptics->SetDuration(inputs.at + 0.5);
+    if (!haptics->Start())
+    {
+      throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
+    }
+    while (haptics->GetState().time < inputs.at && !haptics->IsFinished())
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    state = haptics->GetState();
+    servo = haptics->GetServoStatistics();
+    poses = haptics->GetBodyPoses();
+    haptics->Stop();
+  }
+  placeBodyActors(stage.surface, poses);
+  const Aabb framed = stage.frame(options, inputs, state, poses);
+  stage.representation->SetState(state);
+  stage.status->SetInput(statusText(state, servo, nullptr).c_str());
+  if (!lockstep)
+  {
+    stage.forcePlot.add(state.time, norm(state.force));
+  }
+  stage.forcePlot.update();
+  vtkRenderer* renderer = stage.renderer;
+  const double distance = options.viewDistance > 0.0 ? options.viewDistance : 40.0 * shared.radius;
+  aimAtProxy(renderer->GetActiveCamera(), state, distance);
+  if (options.viewDistance <= 0.0)
+  {
+    // From the same side, far enough back for the framed objects to fit.
+    double bounds[6] = {framed.lower.x, framed.upper.x, framed.lower.y,
+                        framed.upper.y, framed.lower.z, framed.upper.z};
+    renderer->ResetCamera(bounds);
+  }
+  renderer->ResetCameraClippingRange();
+  stage.window->SetOffScreenRendering(1);
+  inputs.screenshotFile->write(shell::windowPng(stage.window, options.screenshot));
+  inputs.screenshotFile->commit();
+  device.finish();
+  char line[512];
+  std::snprintf(line, sizeof line, "%dx%d at t = %.4f s (%s), %d contacts%s, force %.4f N\n",
+                options.width, options.height, state.time, lockstep ? "lockstep" : "real time",
+                state.numContacts, state.conditions.has(TickCondition::stuck) ? " (sticking)" : "",
+                norm(state.force));
+  writeStandardOutput(options.screenshot + ": " + line);
+  return kExitOk;
+}
+
+// What the window's timer and keys act on.
+struct WindowFrame
+{
+  vtkHapticRenderer* haptics;
+  ViewStage* stage;
+  vtkHapticMouseFinger* mouse;
+  bool follow;
+  std::chrono::steady_clock::time_point last;
+};
+
+// About 60 times a second: the path restarted when it ends (the mouse's run has no end), the
+// mouse finger moved, and the drawing brought to the latest state.
+void onWindowTimer(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* f = static_cast<WindowFrame*>(clientData);
+  if (f->haptics->IsFinished())
+  {
+    f->haptics->Stop();
+    f->haptics->Start();
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (f->mouse != nullptr)
+  {
+    f->mouse->Update(std::chrono::duration<double>(now - f->last).count());
+  }
+  f->last = now;
+  ViewStage& stage = *f->stage;
+  const HapticState state = f->haptics->GetState();
+  stage.representation->SetState(state);
+  placeBodyActors(stage.surface, f->haptics->GetBodyPoses());
+  stage.forcePlot.add(state.time, norm(state.force));
+  stage.forcePlot.update();
+  stage.status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
+  if (f->follow && state.tick > 0)
+  {
+    shell::followProxy(stage.renderer->GetActiveCamera(), state.proxy);
+  }
+  stage.renderer->ResetCameraClippingRange();
+  static_cast<vtkRenderWindowInteractor*>(caller)->Render();
+}
+
+// 'c' switches following the proxy; 'i' or Print saves the window's picture.
+void onWindowKey(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* keys = static_cast<vtkRenderWindowInteractor*>(caller);
+  const char* key = keys->GetKeySym();
+  auto* f = static_cast<WindowFrame*>(clientData);
+  if (key != nullptr && std::string(key) == "c")
+  {
+    f->follow = !f->follow;
+  }
+  if (key != nullptr && (std::string(key) == "i" || std::string(key) == "Print"))
+  {
+    saveWindowPicture(keys->GetRenderWindow());
+  }
+}
+
+// The window: the path played in real time and looped, or the mouse aiming the finger, until the
+// window is closed.
+int runWindow(const ViewOptions& options, const ViewInputs& inputs, ViewStage& stage,
+              vtkHapticRenderer* haptics, RunDevice& device)
+{
+  const SceneOptions& shared = options.scene;
+  const bool mouse = options.device.device == "mouse";
   // The arrow and the hinges sized for the objects around the finger's start.
   HapticState start;
-  start.proxy = fingerPath.positions.front();
+  start.proxy = inputs.fingerPath.positions.front();
   start.finger = start.proxy;
   start.proxyRadius = shared.radius;
-  Aabb framedAtStart = framedBounds(*scene, start, hinges, BodyPoses{});
-  frameForceArrow(representation, framedAtStart, start, shared.maxForce, options.forceScale);
-  for (const vtkSmartPointer<vtkActor>& axis : makeHingeActors(hinges, framedAtStart.diagonal()))
-  {
-    renderer->AddActor(axis);
-  }
+  stage.frame(options, inputs, start, BodyPoses{});
 
-  // Interactive: the path plays in real time, looped by restarting when it ends (the mouse's run
-  // has no end); a timer at about 60 Hz moves the representation to the latest state.
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   interactor->SetInteractorStyle(style);
-  interactor->SetRenderWindow(window);
+  interactor->SetRenderWindow(stage.window);
   interactor->Initialize();
   vtkNew<vtkHapticMouseFinger> mouseFinger;
   if (mouse)
@@ -645,12 +724,12 @@ int view(const ViewOptions& options)
     // A wheel notch presses half a radius; a held space bar five radii a second.
     mouseFinger->SetDevice(static_cast<PointerDevice*>(&device.openedDevice()));
     mouseFinger->SetHapticRenderer(haptics);
-    mouseFinger->SetRenderer(renderer);
+    mouseFinger->SetRenderer(stage.renderer);
     mouseFinger->SetInteractor(interactor);
     mouseFinger->SetDepthStep(0.5 * shared.radius);
     mouseFinger->SetPressSpeed(5.0 * shared.radius);
   }
-  haptics->SetDuration(mouse ? 0.0 : pathSeconds + 0.5);
+  haptics->SetDuration(mouse ? 0.0 : inputs.pathSeconds + 0.5);
   if (!haptics->Start())
   {
     throw std::runtime_error("the haptic threads did not start: " + haptics->GetStartMessage());
@@ -658,76 +737,20 @@ int view(const ViewOptions& options)
   if (options.viewDistance > 0.0)
   {
     // The scene framed, then brought to the distance asked for.
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetDistance(options.viewDistance);
+    stage.renderer->GetActiveCamera()->SetDistance(options.viewDistance);
   }
-  struct Frame
-  {
-    vtkHapticRenderer* haptics;
-    vtkHapticStateRepresentation* representation;
-    vtkTextActor* status;
-    vtkRenderer* renderer;
-    vtkHapticMouseFinger* mouse;
-    shell::ForcePlot* forcePlot;
-    const SceneActors* surface;
-    bool follow;
-    std::chrono::steady_clock::time_point last;
-  } frame{haptics,
-          representation,
-          status,
-          renderer,
-          mouse ? mouseFinger.Get() : nullptr,
-          &forcePlot,
-          &surface,
-          !mouse,
-          std::chrono::steady_clock::now()};
+  WindowFrame frame{haptics, &stage, mouse ? mouseFinger.Get() : nullptr, !mouse,
+                    std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
   onTimer->SetClientData(&frame);
-  onTimer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
-    auto* f = static_cast<Frame*>(clientData);
-    if (f->haptics->IsFinished())
-    {
-      f->haptics->Stop();
-      f->haptics->Start();
-    }
-    const auto now = std::chrono::steady_clock::now();
-    if (f->mouse != nullptr)
-    {
-      f->mouse->Update(std::chrono::duration<double>(now - f->last).count());
-    }
-    f->last = now;
-    const HapticState state = f->haptics->GetState();
-    f->representation->SetState(state);
-    placeBodyActors(*f->surface, f->haptics->GetBodyPoses());
-    f->forcePlot->add(state.time, norm(state.force));
-    f->forcePlot->update();
-    f->status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
-    if (f->follow && state.tick > 0)
-    {
-      shell::followProxy(f->renderer->GetActiveCamera(), state.proxy);
-    }
-    f->renderer->ResetCameraClippingRange();
-    static_cast<vtkRenderWindowInteractor*>(caller)->Render();
-  });
+  onTimer->SetCallback(onWindowTimer);
   interactor->AddObserver(vtkCommand::TimerEvent, onTimer);
   vtkNew<vtkCallbackCommand> onKey;
   onKey->SetClientData(&frame);
-  onKey->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
-    auto* keys = static_cast<vtkRenderWindowInteractor*>(caller);
-    const char* key = keys->GetKeySym();
-    auto* f = static_cast<Frame*>(clientData);
-    if (key != nullptr && std::string(key) == "c")
-    {
-      f->follow = !f->follow;
-    }
-    if (key != nullptr && (std::string(key) == "i" || std::string(key) == "Print"))
-    {
-      saveWindowPicture(keys->GetRenderWindow());
-    }
-  });
+  onKey->SetCallback(onWindowKey);
   interactor->AddObserver(vtkCommand::KeyPressEvent, onKey);
   interactor->CreateRepeatingTimer(16);
-  window->Render();
+  stage.window->Render();
   interactor->Start();
   // Closed (q, e or the window's close): the last state in one line, as a screenshot prints its.
   const HapticState last = haptics->GetState();
@@ -739,6 +762,41 @@ int view(const ViewOptions& options)
                 last.numContacts, norm(last.force));
   writeStandardOutput(line);
   return kExitOk;
+}
+
+int view(const ViewOptions& options)
+{
+  ViewInputs inputs;
+  loadViewInputs(options, inputs);
+  const bool mouse = options.device.device == "mouse";
+  // The runtime's clock starts at 0; a path that starts later is shifted to start with it.
+  FingerPath shifted = inputs.fingerPath;
+  for (double& time : shifted.times)
+  {
+    time -= inputs.fingerPath.startTime();
+  }
+  // The finger's device, as for `proxima run --device` (sim plays the path); made before the
+  // renderer, so that it outlives the haptic threads. A mouse session has no end:
+  // --record-device keeps its first ten minutes.
+  constexpr double kMouseRecordingSeconds = 600.0;
+  RunDevice device(options.device, shifted,
+                   ticksCovering(0.0, mouse ? kMouseRecordingSeconds : inputs.pathSeconds + 0.5,
+                                 options.scene.rate));
+  // Last of the checks, so that every refusal of the input above comes first and alike with or
+  // without a display; before the first VTK window object.
+  const std::string noDisplay = shell::displayProblem("proxima view");
+  if (!noDisplay.empty())
+  {
+    throw InputError("proxima view", noDisplay);
+  }
+  vtkNew<vtkHapticRenderer> haptics;
+  configureHaptics(haptics, options.scene, inputs, device.device());
+  ViewStage stage(options, inputs);
+  if (!options.screenshot.empty())
+  {
+    return takeScreenshot(options, inputs, stage, haptics, device, shifted);
+  }
+  return runWindow(options, inputs, stage, haptics, device);
 }
 } // namespace
 

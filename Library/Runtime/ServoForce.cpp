@@ -22,15 +22,35 @@ void ServoForce::step(const TickInput& input, HapticState& state)
   state.conditions.clear(TickCondition::forceClamped);
   state.conditions.clear(TickCondition::forceFading);
   state.conditions.clear(TickCondition::forceRateLimited);
-  const double dt = m_started ? std::max(0.0, input.time - m_lastTime) : 0.0;
-  m_started = true;
-  m_lastTime = input.time;
+  const double dt = advanceClock(input.time);
   // A fade over fadeTime moves the gain by dt / fadeTime a tick; no fade time means at once.
   const double gainStep = m_parameters.fadeTime > 0.0 ? dt / m_parameters.fadeTime : 1.0;
+  watchForSceneChanges(input.time, state);
 
+  const bool deviceLost = !input.sample.connected;
+  state.conditions.set(TickCondition::deviceLost, deviceLost);
+  state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;
+  SpringForce spring =
+    deviceLost || state.proxyStale ? fadeOut(gainStep, state) : springForce(input, gainStep, state);
+  clampToMaxForce(spring, state);
+  limitRateOfChange(spring.force, input.time, dt, state);
+  m_lastForce = spring.force;
+  state.force = spring.force;
+}
+
+double ServoForce::advanceClock(double time)
+{
+  const double dt = m_started ? std::max(0.0, time - m_lastTime) : 0.0;
+  m_started = true;
+  m_lastTime = time;
+  return dt;
+}
+
+void ServoForce::watchForSceneChanges(double time, const HapticState& state)
+{
   if (m_sceneSeen && state.sceneVersion != m_sceneVersion)
   {
-    m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
+    m_rateLimitUntil = time + m_parameters.sceneChangeWindow;
   }
   m_sceneSeen = true;
   m_sceneVersion = state.sceneVersion;
@@ -38,79 +58,85 @@ void ServoForce::step(const TickInput& input, HapticState& state)
   // at once: ramp it in at the scene change's rate instead (from the last force, 0 at a start).
   if (state.conditions.has(TickCondition::startedOutside))
   {
-    m_rateLimitUntil = input.time + m_parameters.sceneChangeWindow;
+    m_rateLimitUntil = time + m_parameters.sceneChangeWindow;
   }
+}
 
-  const bool deviceLost = !input.sample.connected;
-  state.conditions.set(TickCondition::deviceLost, deviceLost);
-  state.proxyStale = state.proxyAge > m_parameters.watchdogTimeout;
-  Vec3 force;
-  // The spring's extension (proxy minus finger): the direction of a force whose magnitude
-  // overflowed.
-  Vec3 stretch;
-  bool held = false;
-  if (deviceLost || state.proxyStale)
+ServoForce::SpringForce ServoForce::fadeOut(double gainStep, HapticState& state)
+{
+  // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
+  // far from it while the proxy loop was stuck.
+  if (!m_faulted)
   {
-    // Fade what the hand was feeling, not the spring to a stale proxy: the finger may have moved
-    // far from it while the proxy loop was stuck.
-    if (!m_faulted)
-    {
-      m_faulted = true;
-      m_fadeFrom = m_lastForce;
-      m_fadeLevel = 1.0;
-    }
-    m_fadeLevel = m_fadeLevel - gainStep;
-    // Ten steps of 0.1 leave 1e-16, not 0: a fade ends at exactly zero force.
-    m_fadeLevel = m_fadeLevel > kGainRounding ? m_fadeLevel : 0.0;
-    force = m_fadeFrom * m_fadeLevel;
-    // Once the fault clears, the spring comes back from the level the fade reached.
-    m_gain = m_fadeLevel;
-    state.conditions.set(TickCondition::forceFading);
+    m_faulted = true;
+    m_fadeFrom = m_lastForce;
+    m_fadeLevel = 1.0;
   }
-  else
-  {
-    m_faulted = false;
-    const bool usable = input.sample.valid && !state.conditions.has(TickCondition::fingerRefused);
-    if (usable)
-    {
-      // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays
-      // continuous, since proxy and finger coincide out of contact.
-      stretch = state.proxy - input.sample.position;
-      force = stretch * (m_parameters.stiffness * state.stiffnessScale);
-      if (m_gain < 1.0)
-      {
-        m_gain = m_gain + gainStep;
-        m_gain = m_gain < 1.0 - kGainRounding ? m_gain : 1.0;
-        force = force * m_gain;
-        state.conditions.set(TickCondition::forceFading, m_gain < 1.0);
-      }
-    }
-    else
-    {
-      // Never NaN into a force (DESIGN.md section 6): hold the last one, exactly (it was clamped
-      // when it was made; clamping it again can move it by rounding, so a held clamped force
-      // changed in its last bit: found by the stress suite's NaN fingers).
-      force = m_lastForce;
-      held = true;
-    }
-  }
+  m_fadeLevel = m_fadeLevel - gainStep;
+  // Ten steps of 0.1 leave 1e-16, not 0: a fade ends at exactly zero force.
+  m_fadeLevel = m_fadeLevel > kGainRounding ? m_fadeLevel : 0.0;
+  // Once the fault clears, the spring comes back from the level the fade reached.
+  m_gain = m_fadeLevel;
+  state.conditions.set(TickCondition::forceFading);
+  SpringForce faded;
+  faded.force = m_fadeFrom * m_fadeLevel;
+  return faded;
+}
 
+ServoForce::SpringForce ServoForce::springForce(const TickInput& input, double gainStep,
+                                                HapticState& state)
+{
+  m_faulted = false;
+  SpringForce spring;
+  const bool usable = input.sample.valid && !state.conditions.has(TickCondition::fingerRefused);
+  if (!usable)
+  {
+    // Never NaN into a force (DESIGN.md section 6): hold the last one, exactly (it was clamped
+    // when it was made; clamping it again can move it by rounding, so a held clamped force
+    // changed in its last bit: found by the stress suite's NaN fingers).
+    spring.force = m_lastForce;
+    spring.held = true;
+    return spring;
+  }
+  // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays continuous,
+  // since proxy and finger coincide out of contact.
+  spring.stretch = state.proxy - input.sample.position;
+  spring.force = spring.stretch * (m_parameters.stiffness * state.stiffnessScale);
+  if (m_gain < 1.0)
+  {
+    // Fading back in after a fault.
+    m_gain = m_gain + gainStep;
+    m_gain = m_gain < 1.0 - kGainRounding ? m_gain : 1.0;
+    spring.force = spring.force * m_gain;
+    state.conditions.set(TickCondition::forceFading, m_gain < 1.0);
+  }
+  return spring;
+}
+
+void ServoForce::clampToMaxForce(SpringForce& spring, HapticState& state) const
+{
   // Overflow-safe: a finger 1e154 m away gave |F|^2 = inf and so a "clamped" force of 0 N, and
   // beyond 1e305 m the spring force itself is infinite; the clamp keeps its direction either way.
   // norm() first: in the usual range it is the value the traces have always been clamped with.
-  double magnitude = norm(force);
+  double magnitude = norm(spring.force);
   if (!std::isfinite(magnitude))
   {
-    magnitude = overflowSafeNorm(force);
+    magnitude = overflowSafeNorm(spring.force);
   }
-  if (!held && magnitude > m_maxForce)
+  if (!spring.held && magnitude > m_maxForce)
   {
-    force = std::isfinite(magnitude)
-              ? force * (m_maxForce / magnitude)
-              : overflowSafeDirection(isFinite(stretch) ? stretch : force) * m_maxForce;
+    spring.force =
+      std::isfinite(magnitude)
+        ? spring.force * (m_maxForce / magnitude)
+        : overflowSafeDirection(isFinite(spring.stretch) ? spring.stretch : spring.force) *
+            m_maxForce;
     state.conditions.set(TickCondition::forceClamped);
   }
-  if (input.time < m_rateLimitUntil)
+}
+
+void ServoForce::limitRateOfChange(Vec3& force, double time, double dt, HapticState& state) const
+{
+  if (time < m_rateLimitUntil)
   {
     const double allowed = m_parameters.forceRateLimit * dt;
     const Vec3 change = force - m_lastForce;
@@ -121,8 +147,6 @@ void ServoForce::step(const TickInput& input, HapticState& state)
       state.conditions.set(TickCondition::forceRateLimited);
     }
   }
-  m_lastForce = force;
-  state.force = force;
 }
 
 } // namespace proxima

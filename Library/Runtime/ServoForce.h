@@ -17,9 +17,13 @@
 namespace proxima
 {
 
+/// The force stage of one servo loop: keeps the state it needs from tick to tick (last force,
+/// fade level, rate-limit window). For one thread; allocation-free.
 class ServoForce
 {
 public:
+  /// A force stage with `parameters`, clamping to the smaller of `parameters.maxForce` and
+  /// `limits.maxForce`.
   explicit ServoForce(const ServoParameters& parameters, const DeviceLimits& limits = {});
 
   /// The force for the tick `input` from the proxy half of `state` (proxy, stiffnessScale, its
@@ -27,13 +31,40 @@ public:
   /// fields and the force step's conditions (kForceStepConditions).
   void step(const TickInput& input, HapticState& state);
 
+  /// The parameters given at construction.
   const ServoParameters& parameters() const { return m_parameters; }
+  /// The force clamp in newtons: the smaller of the servo's and the device's limit.
   double maxForce() const { return m_maxForce; }
+  /// The force the last step commanded (N, on the finger); zero before the first.
   const Vec3& lastForce() const { return m_lastForce; }
   /// 1 when the spring force is rendered in full, 0 when faded out.
   double gain() const { return m_gain; }
 
 private:
+  /// The force before the clamp and the rate limit: the spring's, or a fading or held one.
+  struct SpringForce
+  {
+    Vec3 force;
+    /// The spring's extension (proxy minus finger): the direction of a force whose magnitude
+    /// overflowed; zero when there is no spring this tick.
+    Vec3 stretch;
+    /// The last force held exactly (an unusable finger sample): not clamped again.
+    bool held = false;
+  };
+
+  // The stages of step, in order.
+  /// The time since the last tick (0 at the first), and the clock moved on.
+  double advanceClock(double time);
+  /// A new scene, or a proxy started outside, opens the rate limit's window.
+  void watchForSceneChanges(double time, const HapticState& state);
+  /// The device is lost or the proxy stale: what the hand felt, fading out.
+  SpringForce fadeOut(double gainStep, HapticState& state);
+  /// The spring to the proxy (fading back in after a fault), or the last force held when the
+  /// finger sample cannot be used.
+  SpringForce springForce(const TickInput& input, double gainStep, HapticState& state);
+  void clampToMaxForce(SpringForce& spring, HapticState& state) const;
+  void limitRateOfChange(Vec3& force, double time, double dt, HapticState& state) const;
+
   ServoParameters m_parameters;
   double m_maxForce;
   Vec3 m_lastForce;
