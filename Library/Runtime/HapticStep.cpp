@@ -49,16 +49,22 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
   }
 }
 
+void stepProxyHalf(ProxySolver& solver, const TickInput& input, std::uint64_t sceneVersion,
+                   ServoForce& force, TickDynamics* dynamics, HapticState& state)
+{
+  stepProxy(solver, input, state);
+  state.sceneVersion = sceneVersion;
+  state.proxyAge = 0.0;
+  force.step(input, state);
+  stepDynamics(dynamics, solver, state);
+}
+
 HapticState hapticStep(std::uint64_t tick, double time, ProxySolver& solver, HapticDevice& device,
                        ServoForce& servo, std::uint64_t sceneVersion, TickDynamics* dynamics)
 {
   const TickInput input{tick, time, device.read(time)};
   HapticState state;
-  stepProxy(solver, input, state);
-  state.sceneVersion = sceneVersion;
-  state.proxyAge = 0.0;
-  servo.step(input, state);
-  stepDynamics(dynamics, solver, state);
+  stepProxyHalf(solver, input, sceneVersion, servo, dynamics, state);
   device.writeForce(state.force, time);
   return state;
 }

@@ -197,10 +197,9 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
 {
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
   DeadlineClock clock(start, settings.proxyRate, proxyStatistics);
-  ServoForce recordForce(servo, limits);
-  // The force the bodies feel: the servo's stage on this thread's sequence, as lockstep runs it
-  // before the dynamics step (the servo thread's own force is for the device).
-  ServoForce couplingForce(servo, limits);
+  // The force stage on this thread's sequence, in the proxy half as lockstep runs it: the force
+  // the bodies feel and the one the records hold (the servo thread's own is for the device).
+  ServoForce proxyForce(servo, limits);
   BodyPoses poses;
   bool updatedOnce = false;
   std::uint64_t lastTick = 0;
@@ -233,13 +232,9 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
     HapticState updated;
     if (live != nullptr)
     {
-      stepProxy(*solver, post, updated);
+      stepProxyHalf(*solver, post, live->version, proxyForce, live->dynamics.get(), updated);
       if (live->dynamics != nullptr)
       {
-        // As the servo sees it (a new scene limits the force's rate of change), age 0.
-        updated.sceneVersion = live->version;
-        couplingForce.step(post, updated);
-        stepDynamics(live->dynamics.get(), *solver, updated);
         live->dynamics->poses(poses);
         poses.tick = post.tick;
         bodyPoses.write(poses);
@@ -258,17 +253,14 @@ void ThreadedRuntime::Impl::proxyLoop(Nanoseconds start)
       {
         solver->resetProxy(post.sample.position);
       }
+      proxyForce.step(post, updated);
     }
-    updated.sceneVersion = live != nullptr ? live->version : 0;
     proxyState.write(updated);
     proxyPosted.store(true, std::memory_order_release);
     if (recordCount < records.size())
     {
-      // The lockstep runner's force stage on this thread's sequence (the proxy fresh, age 0):
-      // with no sample skipped, these records equal a lockstep run's.
-      HapticState& record = records[recordCount++];
-      record = updated;
-      recordForce.step(post, record);
+      // With no sample skipped, these records equal a lockstep run's.
+      records[recordCount++] = updated;
     }
     clock.workDone();
   }

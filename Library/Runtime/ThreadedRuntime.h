@@ -4,9 +4,9 @@
 // solver on the latest finger. Everything between threads is lock-free: the finger and the proxy
 // state go through single-writer snapshots, scenes through an atomic swap that only ever installs
 // a complete scene and never frees one on a haptic thread. The steps are the lockstep runner's
-// (HapticStep.h): the servo thread posts a TickInput, the proxy thread runs stepProxy on it and
-// posts the HapticState, and the servo thread runs ServoForce::step on that state and publishes
-// it. A threaded run and a lockstep run of a path agree.
+// (HapticStep.h): the servo thread posts a TickInput, the proxy thread runs stepProxyHalf on it
+// and posts the HapticState, and the servo thread runs ServoForce::step on that state and
+// publishes it. A threaded run and a lockstep run of a path agree.
 #pragma once
 
 #include "Proxy/CollisionScene.h"
@@ -29,6 +29,8 @@
 namespace proxima
 {
 
+/// How a ThreadedRuntime runs: the loops' rates and scheduling, what it records and streams, how
+/// long it runs and the proxy loop's work budget.
 struct RuntimeSettings
 {
   /// Servo loop rate in Hz, 1 to 10 kHz (ServoRate.h; the runtime refuses any other).
@@ -38,7 +40,9 @@ struct RuntimeSettings
   /// Ask for SCHED_FIFO on both threads (servo above proxy). Refused without the privilege:
   /// start() then says so and the threads run at normal priority.
   bool realtimeScheduling = true;
+  /// SCHED_FIFO priority asked for the servo thread when `realtimeScheduling`.
   int servoPriority = 80;
+  /// SCHED_FIFO priority asked for the proxy thread when `realtimeScheduling`.
   int proxyPriority = 70;
   /// Keep the states of the first `recordTicks` proxy updates (preallocated), each with the
   /// force the lockstep runner would give it, for comparing a threaded run with a lockstep one;
@@ -62,6 +66,9 @@ struct RuntimeSettings
   TickWorkBudget tickBudget = TickWorkBudget::realtimeDefault();
 };
 
+/// The real-time runner: a servo thread and a proxy-update thread on fixed absolute deadlines,
+/// lock-free between them. Started and stopped from one thread; scenes are published and states
+/// read from any.
 class ThreadedRuntime
 {
 public:
@@ -99,6 +106,8 @@ public:
   bool start(std::string& message);
   /// Stops both threads and waits for them. Idempotent.
   void stop();
+  /// True from a successful start() until stop() or the end of the run's duration. For the
+  /// thread that calls start() and stop().
   bool running() const;
   /// True once the servo clock reached `duration`: both loops have ended.
   bool finished() const;
@@ -120,8 +129,9 @@ public:
   /// The longest time the proxy loop spent installing a published scene, in nanoseconds: the
   /// whole cost of a model swap on the haptic side.
   std::int64_t longestSceneInstallNanoseconds() const;
-  /// Period and deadline statistics of each loop, readable while running.
+  /// Period and deadline statistics of the servo loop, readable while running.
   LoopStatistics servoStatistics() const;
+  /// Period and deadline statistics of the proxy loop, readable while running.
   LoopStatistics proxyStatistics() const;
   /// The servo thread's policy and priority as start() left them (e.g. "SCHED_FIFO 80"): what a
   /// floor loop (DeadlineClock.h) must run with to be comparable.
