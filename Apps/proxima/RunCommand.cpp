@@ -188,25 +188,20 @@ int run(const RunOptions& options)
                      "must be " + servoRateRange() + " with --realtime (the servo loop's range)");
   }
   const auto readStart = std::chrono::steady_clock::now();
-  LoadedScene loaded = loadScene(shared);
   const FingerPath fingerPath = readFingerPathFile(shared.path);
+  const double pathMilliseconds = millisecondsSince(readStart);
+  // The same reading and checks as every scripted run's (runScriptedPath's, Python's, a remote
+  // run's): the tick count, the scene, the radius, the path's start and the bodies.
+  PreparedScriptedRun prepared = prepareScriptedRun(shared, fingerPath, options.maxTicks);
+  LoadedScene& loaded = prepared.loaded;
+  const std::uint64_t numTicks = prepared.numTicks;
   ScriptedRunReportContext context;
   context.device = options.device.device;
   context.trace = options.out;
   context.realtime = options.realtime;
-  context.readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
-  checkRadiusAgainstScene(shared, loaded);
-  checkPathStart(shared, loaded, fingerPath);
-  // Before a trace row is written: a path row at t = 1e9 s would otherwise fill the disk.
-  const std::uint64_t numTicks =
-    ticksCovering(fingerPath.startTime(), fingerPath.endTime(), shared.rate);
-  checkTickCount(static_cast<double>(numTicks), shared.rate, options.maxTicks,
-                 shared.path + " (" + shortNumber(fingerPath.endTime() - fingerPath.startTime()) +
-                   " s)");
-  // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
-  // outputs into one file.
-  // The bodies, before any output exists: a body too light or a mesh with no volume is bad input.
-  const std::shared_ptr<BodyCoupling> bodies = sceneBodies(shared, loaded);
+  context.readMilliseconds = pathMilliseconds + prepared.readMilliseconds;
+  // Shared from here on: the threaded runtime keeps the bodies for as long as its loops use them.
+  const std::shared_ptr<BodyCoupling> bodies = std::move(prepared.bodies);
   if (bodies != nullptr && options.realtime && !options.bodiesOut.empty())
   {
     // The threaded runtime records each tick's state, not where the bodies were at each tick.
@@ -217,6 +212,8 @@ int run(const RunOptions& options)
   {
     refuseBodiesOutWithoutBodies();
   }
+  // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
+  // outputs into one file.
   refuseOverlappingFiles({{options.out, "--out"},
                           {options.bodiesOut, "--bodies-out"},
                           {options.summary, "--summary"},

@@ -177,26 +177,39 @@ std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
 #endif
 }
 
-std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
-                            const std::function<void(const HapticState&)>& onTick,
-                            const ScriptedRunReportContext& context, double maxTicks,
-                            const std::function<void(const BodyPoseRow&)>& onBodyPose)
+PreparedScriptedRun prepareScriptedRun(const ScriptedRunSettings& settings, const FingerPath& path,
+                                       double maxTicks)
 {
   checkScriptedRunSettings(settings);
   if (path.positions.empty())
   {
     throw InputError(settings.path, "the path has no samples");
   }
-  checkTickCount(
-    static_cast<double>(ticksCovering(path.startTime(), path.endTime(), settings.rate)),
-    settings.rate, maxTicks, settings.path);
+  PreparedScriptedRun prepared;
+  // Before the scene is read, and before any output exists: a path row at t = 1e9 s would
+  // otherwise fill the disk.
+  prepared.numTicks = ticksCovering(path.startTime(), path.endTime(), settings.rate);
+  checkTickCount(static_cast<double>(prepared.numTicks), settings.rate, maxTicks,
+                 settings.path + " (" + shortNumber(path.endTime() - path.startTime()) + " s)");
   const auto readStart = std::chrono::steady_clock::now();
-  LoadedScene loaded = loadScene(settings);
+  prepared.loaded = loadScene(settings);
+  prepared.readMilliseconds = millisecondsSince(readStart) - prepared.loaded.treeBuildMilliseconds;
+  checkRadiusAgainstScene(settings, prepared.loaded);
+  checkPathStart(settings, prepared.loaded, path);
+  // A body too light or a mesh with no volume is bad input, found before any output exists.
+  prepared.bodies = sceneBodies(settings, prepared.loaded);
+  return prepared;
+}
+
+std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
+                            const std::function<void(const HapticState&)>& onTick,
+                            const ScriptedRunReportContext& context, double maxTicks,
+                            const std::function<void(const BodyPoseRow&)>& onBodyPose)
+{
+  PreparedScriptedRun prepared = prepareScriptedRun(settings, path, maxTicks);
   ScriptedRunReportContext report = context;
-  report.readMilliseconds = millisecondsSince(readStart) - loaded.treeBuildMilliseconds;
-  checkRadiusAgainstScene(settings, loaded);
-  checkPathStart(settings, loaded, path);
-  const std::unique_ptr<BodyCoupling> bodies = sceneBodies(settings, loaded);
+  report.readMilliseconds = prepared.readMilliseconds;
+  const std::unique_ptr<BodyCoupling>& bodies = prepared.bodies;
   if (onBodyPose && bodies == nullptr)
   {
     refuseBodiesOutWithoutBodies();
@@ -209,6 +222,7 @@ std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPat
       forEachBodyPose(*bodies, record, onBodyPose);
     }
   };
+  const LoadedScene& loaded = prepared.loaded;
   const ScriptedRunOutcome outcome =
     playScriptedPath(settings, *loaded.scene, path, device, tickAndPoses, {}, bodies.get());
   return scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, report);

@@ -29,16 +29,23 @@ class BodyCoupling;
 /// A body of the scene at the end of a run (paper section 6), for the summary.
 struct BodyOutcome
 {
+  /// The body's name (BodyCoupling::name).
   std::string name;
+  /// The scene object the body moves.
   std::uint32_t object = 0;
+  /// The joint's type: "hinge", "slide", "ball", "free" or "mechanism".
   std::string joint;
   /// The joint coordinate (hinge: rad; slide: m; ball, free and mechanism: the angle of the
   /// body's turn from the start, rad) and its rate (for those: the angular speed, rad/s).
   double jointPosition = 0.0;
+  /// The joint coordinate's rate at the end (rad/s or m/s; for ball, free and mechanism bodies
+  /// the angular speed, rad/s).
   double jointVelocity = 0.0;
-  /// Joules: kinetic and potential energy at the end, and the work the finger did on the body.
+  /// Kinetic energy at the end (J).
   double kinetic = 0.0;
+  /// Potential energy at the end (J).
   double potential = 0.0;
+  /// The work the finger did on the body over the run (J).
   double work = 0.0;
   /// Seconds into the run at which the body left the scene's bounds (Documentation/Dynamics.md),
   /// or -1 when it stayed.
@@ -48,6 +55,7 @@ struct BodyOutcome
 /// What playing a path gave, beside the ticks themselves.
 struct ScriptedRunOutcome
 {
+  /// The statistics of the run's ticks.
   RunSummary summary;
   /// Where the proxy started: at the path's first sample, or moved out of a closed object.
   ProxyStartPlacement start;
@@ -55,9 +63,10 @@ struct ScriptedRunOutcome
   TickWorkBudget budget;
   /// The contact skin the solver used (the settings', or the scene's when they give 0).
   double skin = 0.0;
-  /// Wall time of the ticks, and of replaying the budget-limited ones to measure their residual
-  /// (not part of the run's time).
+  /// Wall time of the ticks (ms), without the replays.
   double runMilliseconds = 0.0;
+  /// Wall time of replaying the budget-limited ticks without the budget to measure their
+  /// residual (ms); not part of the run's time.
   double replayMilliseconds = 0.0;
   /// The scene's bodies at the end (empty without bodies).
   std::vector<BodyOutcome> bodies;
@@ -81,12 +90,16 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
 /// One body where a tick's dynamics step left it: a row of `--bodies-out` (BodyPoseWriter).
 struct BodyPoseRow
 {
+  /// The tick whose dynamics step left the body here.
   std::uint64_t tick = 0;
+  /// That tick's time (s).
   double time = 0.0;
+  /// The scene object the body moves.
   std::uint32_t object = 0;
   /// The world pose of the object's frame: a point p of the object as placed is now at
   /// position + rotate(orientation, p); orientation is w, x, y, z.
   Vec3 position;
+  /// The object's orientation, a unit quaternion (w, x, y, z).
   double orientation[4] = {1.0, 0.0, 0.0, 0.0};
   /// BodyWorld::jointPosition.
   double jointPosition = 0.0;
@@ -110,6 +123,28 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded);
 
+/// What a scripted run reads and checks before it plays anything, made by prepareScriptedRun.
+/// Every runner of a scripted path (runScriptedPath, `proxima run` in lockstep or on the real
+/// clock) starts from it, so that all of them refuse the same inputs in the same words.
+struct PreparedScriptedRun
+{
+  /// The settings' scene, its trees built.
+  LoadedScene loaded;
+  /// The scene's bodies coupled at the settings' kp and rate, or null when it has none.
+  std::unique_ptr<BodyCoupling> bodies;
+  /// The servo ticks that cover the path at the settings' rate.
+  std::uint64_t numTicks = 0;
+  /// Wall time of reading the scene (without building its trees).
+  double readMilliseconds = 0.0;
+};
+
+/// Checks the settings, the path (not empty, at most `maxTicks` ticks at the settings' rate),
+/// loads the scene, checks the proxy's radius against it and the path's start, and builds the
+/// scene's bodies. Throws InputError naming the option or file (`settings.path` names the path);
+/// nothing is written.
+PreparedScriptedRun prepareScriptedRun(const ScriptedRunSettings& settings, const FingerPath& path,
+                                       double maxTicks);
+
 /// What the summary names beside the settings and the outcome.
 struct ScriptedRunReportContext
 {
@@ -117,6 +152,8 @@ struct ScriptedRunReportContext
   std::string device = "sim";
   /// The trace file written, empty when none was.
   std::string trace;
+  /// True for a run on the real clock (the threaded runtime), whose ticks cannot be replayed;
+  /// false for a lockstep run.
   bool realtime = false;
   /// Wall time of reading the scene and the path (without building the trees).
   double readMilliseconds = 0.0;
@@ -131,15 +168,18 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
                                    const ScriptedRunReportContext& context,
                                    const std::string& realtimeJson = {});
 
+/// What runScriptedPath() returns: every tick and the summary.
+struct ScriptedRunResult
+{
+  /// Every tick's state, in order.
+  std::vector<HapticState> ticks;
+  /// The summary as `proxima run` prints it (scriptedRunSummaryJson()).
+  std::string summaryJson;
+};
 /// A whole scripted run as a library call: loads the settings' scene, checks the path's start
 /// against it, plays `path` (with no budget unless the settings give one) and returns every tick
 /// and the summary. Throws InputError for settings, files or a path that cannot be used, naming
 /// the option or file (`settings.path` names the path in messages); nothing is written.
-struct ScriptedRunResult
-{
-  std::vector<HapticState> ticks;
-  std::string summaryJson;
-};
 ScriptedRunResult runScriptedPath(const ScriptedRunSettings& settings, const FingerPath& path,
                                   double maxTicks = kDefaultMaxTicks);
 /// The same, handing each tick to `onTick` as it ends instead of keeping it (a server streams
