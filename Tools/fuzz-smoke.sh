@@ -42,7 +42,7 @@ fi
 cmake -G Ninja -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_C_COMPILER="$clangc" \
   -DPROXIMA_BUILD_FUZZERS=ON -DPROXIMA_BUILD_TESTING=OFF -DPROXIMA_BUILD_BENCHMARKS=OFF \
-  -DPROXIMA_BUILD_APPS=ON >/dev/null
+  -DPROXIMA_BUILD_APPS=ON -DPROXIMA_BUILD_DOCS=OFF >/dev/null
 cmake --build build-fuzz --parallel 2 --target "${targets[@]}"
 # The findings kept from earlier runs must not crash any more (each is replayed once).
 for target in "${targets[@]}"; do

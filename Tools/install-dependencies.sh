@@ -33,6 +33,8 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the format check of CI (Tools/check-format.sh, .clang-format)
   clang-format-14
+  # the API reference (the docs target, Documentation/Doxyfile.in)
+  doxygen
   # the haptic server (Library/Net): gRPC, protobuf and their compilers; the Python client's
   # runtime (proxima.haptic_client, generated from the same .proto)
   libgrpc++-dev libprotobuf-dev protobuf-compiler protobuf-compiler-grpc python3-grpcio

@@ -17,7 +17,7 @@ sanitizerOptimisation="-O1 -g1 -DNDEBUG"
 cmake -G Ninja -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$sanitizerOptimisation" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$sanitizerOptimisation" \
   -DCMAKE_UNITY_BUILD=ON -DPROXIMA_ENABLE_SANITIZERS=ON -DPROXIMA_BUILD_BENCHMARKS=OFF \
-  -DPROXIMA_BUILD_QT=OFF
+  -DPROXIMA_BUILD_QT=OFF -DPROXIMA_BUILD_DOCS=OFF
 cmake --build build-asan --parallel 2
 # The stress label runs a quarter of its random cases here (the same seeds, the first ones).
 # Left to the Release suite, to keep a cold CI within its time (Documentation/Testing.md, "How

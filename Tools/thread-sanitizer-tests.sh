@@ -16,7 +16,7 @@ sanitizerOptimisation="-O1 -g1 -DNDEBUG"
 cmake -G Ninja -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$sanitizerOptimisation" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$sanitizerOptimisation" \
   -DCMAKE_UNITY_BUILD=ON -DPROXIMA_ENABLE_THREAD_SANITIZER=ON -DPROXIMA_BUILD_APPS=OFF -DPROXIMA_BUILD_VTK=OFF \
-  -DPROXIMA_BUILD_BENCHMARKS=OFF
+  -DPROXIMA_BUILD_BENCHMARKS=OFF -DPROXIMA_BUILD_DOCS=OFF
 cmake --build build-tsan --parallel 2 --target RuntimeTests ThreadedRuntimeTests ThreadedBodyTests
 # halt_on_error: the first race fails the test that found it, with both stacks printed.
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \

@@ -8,10 +8,13 @@
 namespace proxima
 {
 
+/// A rotation R (orthonormal, stored by rows) followed by a translation t: a point p goes to
+/// R p + t. The default is the identity.
 struct RigidTransform
 {
   /// Rows of R.
   Vec3 row[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  /// t (m), applied after the rotation.
   Vec3 translation;
 
   /// R p + t.
@@ -28,11 +31,13 @@ struct RigidTransform
   {
     return row[0] * vector.x + row[1] * vector.y + row[2] * vector.z;
   }
+  /// True when both rotations and translations are exactly equal, component by component.
   bool operator==(const RigidTransform& other) const
   {
     return row[0] == other.row[0] && row[1] == other.row[1] && row[2] == other.row[2] &&
            translation == other.translation;
   }
+  /// True when any component of the rotation or translation differs.
   bool operator!=(const RigidTransform& other) const { return !(*this == other); }
 
   /// The rotation of the unit quaternion (w, x, y, z) (normalised here), then `offset`.

@@ -53,12 +53,14 @@ public:
   constexpr explicit TickConditions(std::uint32_t bits)
     : m_bits(bits)
   {}
+  /// The set holding `condition` alone (implicit, so a single condition passes as a set).
   constexpr TickConditions(TickCondition condition)
     : m_bits(static_cast<std::uint32_t>(condition))
   {}
 
   /// The bitmask: trace v2's `flags` value.
   constexpr std::uint32_t bits() const { return m_bits; }
+  /// True when `condition` is set.
   constexpr bool has(TickCondition condition) const
   {
     return (m_bits & static_cast<std::uint32_t>(condition)) != 0;
@@ -68,6 +70,7 @@ public:
   {
     return (m_bits & conditions.m_bits) != 0;
   }
+  /// True when no condition is set.
   constexpr bool none() const { return m_bits == 0; }
   /// Sets `condition` when `met`, clears it otherwise.
   constexpr void set(TickCondition condition, bool met = true)
@@ -75,6 +78,7 @@ public:
     const auto bit = static_cast<std::uint32_t>(condition);
     m_bits = met ? (m_bits | bit) : (m_bits & ~bit);
   }
+  /// Clears `condition`.
   constexpr void clear(TickCondition condition) { set(condition, false); }
   /// These conditions without any of `conditions`.
   constexpr TickConditions without(TickConditions conditions) const
@@ -82,25 +86,31 @@ public:
     return TickConditions(m_bits & ~conditions.m_bits);
   }
 
+  /// Adds the conditions of `other`.
   constexpr TickConditions& operator|=(TickConditions other)
   {
     m_bits |= other.m_bits;
     return *this;
   }
+  /// The conditions of `a` and of `b`.
   friend constexpr TickConditions operator|(TickConditions a, TickConditions b)
   {
     return TickConditions(a.m_bits | b.m_bits);
   }
+  /// True when `a` and `b` hold the same conditions.
   friend constexpr bool operator==(TickConditions a, TickConditions b)
   {
     return a.m_bits == b.m_bits;
   }
+  /// True when `a` and `b` differ in any condition.
   friend constexpr bool operator!=(TickConditions a, TickConditions b) { return !(a == b); }
 
 private:
   std::uint32_t m_bits = 0;
 };
 
+/// The set of conditions `a` and `b`, so that `TickCondition::stuck | TickCondition::forceClamped`
+/// is a TickConditions.
 constexpr TickConditions operator|(TickCondition a, TickCondition b)
 {
   return TickConditions(a) | TickConditions(b);
@@ -109,8 +119,8 @@ constexpr TickConditions operator|(TickCondition a, TickCondition b)
 /// A condition and its name: snake_case, as Python and the messages spell it.
 struct TickConditionName
 {
-  TickCondition condition;
-  const char* name;
+  TickCondition condition; ///< The condition (a single bit).
+  const char* name;        ///< Its snake_case name, a static string.
 };
 
 /// Every condition once, in the order of its bit: the one table of their names.

@@ -13,9 +13,12 @@
 namespace proxima
 {
 
+/// One row of a recording: what the device reported for the servo tick at `time`.
 struct RecordedSample
 {
+  /// The tick's time (s, on the runtime's clock); never decreases along a recording.
   double time = 0.0;
+  /// The sample the device returned for that tick, non-finite positions included.
   DeviceSample sample;
 };
 

@@ -15,6 +15,7 @@
 namespace proxima
 {
 
+/// What openDevice() needs beyond the device name.
 struct DeviceOptions
 {
   /// The scripted path (sim) and, for the other devices, where their workspace centre goes in
@@ -34,6 +35,7 @@ bool isDeviceSpec(const std::string& spec);
 std::unique_ptr<HapticDevice> openDevice(const std::string& spec, const DeviceOptions& options,
                                          std::string& error);
 
+/// A real device found by listConnectedDevices(), for `proxima devices` to print.
 struct ConnectedDevice
 {
   /// The --device name that opens it.

@@ -10,6 +10,7 @@
 namespace proxima
 {
 
+/// How a transport call ended.
 enum class TransportStatus
 {
   /// The call did what it was asked; `size` bytes moved.
@@ -22,11 +23,16 @@ enum class TransportStatus
   Failed
 };
 
+/// The outcome of one transport call: its status and how many bytes it moved.
 struct TransportResult
 {
+  /// How the call ended; Failed until the transport says otherwise.
   TransportStatus status = TransportStatus::Failed;
+  /// Bytes the call moved (read into the buffer, or written); 0 for NoData and Disconnected,
+  /// and a failed short write gives the part it did move.
   std::size_t size = 0;
 
+  /// True if the call did what it was asked (`status` is Ok).
   bool ok() const { return status == TransportStatus::Ok; }
 };
 

@@ -20,16 +20,20 @@
 namespace proxima
 {
 
+/// How a FalconDevice opens, converts and limits: the firmware, the linkage, the encoder and
+/// motor units, the force limit and where the grip sits in the world.
 struct FalconSettings
 {
   /// The firmware image to upload (the user's own copy; Documentation/Devices.md). Empty: the
   /// device already runs firmware (re-opened without a power cycle) and the upload is skipped.
   std::string firmwarePath;
+  /// The linkage dimensions for the kinematics (libnifalcon's measurements by default).
   DeltaGeometry geometry;
   /// Encoder counts to arm angle: theta = thetaAtZeroCounts + counts / countsPerRadian
   /// (FalconSpecification.h: 35 degrees at zero counts, 1572.6 counts per radian, from
   /// libnifalcon's encoder wheel and capstan measurements).
   double thetaAtZeroCounts = falcon::kThetaAtZeroCounts;
+  /// Encoder counts per radian of arm angle (see thetaAtZeroCounts).
   double countsPerRadian = falcon::kCountsPerArmRadian;
   /// Motor command units per N m of joint torque toward a larger angle (libnifalcon's -10000;
   /// negative: a positive command turns the arm toward fewer counts).
@@ -49,9 +53,13 @@ struct FalconSettings
   int readTimeoutMilliseconds = 2;
 };
 
+/// A Novint Falcon as a HapticDevice: open() uploads the firmware and starts frame I/O; read()
+/// gives the grip's world position (m) once every axis is homed, and writeForce() turns a force
+/// (N) into motor commands through J^T, within maxForce and maxCommand.
 class FalconDevice final : public HapticDevice
 {
 public:
+  /// Takes ownership of `transport` and does no I/O yet: call open() before the first read().
   FalconDevice(std::unique_ptr<BulkTransport> transport, const FalconSettings& settings);
 
   /// Uploads the firmware (when a path is set) and switches to normal I/O. False with `error`
@@ -70,17 +78,27 @@ public:
     m_leds = leds & (kFalconLedGreen | kFalconLedBlue | kFalconLedRed);
   }
 
+  /// True if the latest frame from the device reports all three axes homed.
   bool homed() const { return m_homed; }
+  /// False once the transport reported the device gone; every later read() is a lost sample.
   bool connected() const { return m_connected; }
+  /// Encoder counts of the latest valid frame from the device (zeros before the first).
   const std::array<std::int16_t, 3>& lastEncoders() const { return m_encoders; }
+  /// Motor commands sent with the latest frame; zeros until the device is homed.
   const std::array<std::int16_t, 3>& lastCommands() const { return m_commands; }
+  /// The reader of the device's frames, for its counts of dropped bytes and refused frames.
   const FalconFrameReader& frameReader() const { return m_reader; }
+  /// The latest problem while running (device gone, encoders that describe no pose); empty if
+  /// none. open() reports its own problems through its `error`.
   const std::string& lastError() const { return m_lastError; }
 
   /// Encoder counts to angles and back, and torques to commands: the unit conversions at the
   /// edge, public so that tests and the emulator use the very same numbers.
   JointAngles anglesFromCounts(const std::array<std::int16_t, 3>& counts) const;
+  /// Encoder counts for arm angles (rad), rounded and clamped to the 16-bit range.
   std::array<std::int16_t, 3> countsFromAngles(const JointAngles& angles) const;
+  /// Motor commands for joint torques (N m), all three scaled down together to at most
+  /// maxCommand; all zero if any torque is not finite.
   std::array<std::int16_t, 3> commandsFromTorques(const JointAngles& torques) const;
   /// The device-frame grip position that maps to the world origin offset.
   const Vec3& neutral() const { return m_neutral; }

@@ -31,25 +31,38 @@ namespace proxima
 /// in brackets.
 struct DeltaGeometry
 {
-  double upperArm = falcon::kUpperArm;                   // [a]
-  double lowerArm = falcon::kLowerArm;                   // [b]
-  double kneeLink = falcon::kKneeLink;                   // [e]
-  double effectorLink = falcon::kEffectorLink;           // [d]
-  double effectorRadial = falcon::kEffectorRadial;       // [c]
-  double effectorAlongAxis = falcon::kEffectorAlongAxis; // [f]
-  double hipRadial = falcon::kHipRadial;                 // [r]
-  double hipAlongAxis = falcon::kHipAlongAxis;           // [s]
+  /// [a] Upper arm: hip (motor axis) to knee.
+  double upperArm = falcon::kUpperArm;
+  /// [b] Lower arm: the length of the shin parallelogram's sides.
+  double lowerArm = falcon::kLowerArm;
+  /// [e] Short link from the knee to the shin.
+  double kneeLink = falcon::kKneeLink;
+  /// [d] Short link from the shin to the grip's joint; only kneeLink + effectorLink matters.
+  double effectorLink = falcon::kEffectorLink;
+  /// [c] The grip's joint of each arm relative to the grip centre, along the arm's u.
+  double effectorRadial = falcon::kEffectorRadial;
+  /// [f] The grip's joint of each arm relative to the grip centre, along the arm's motor axis v.
+  double effectorAlongAxis = falcon::kEffectorAlongAxis;
+  /// [r] The hip relative to the base centre, along the arm's u.
+  double hipRadial = falcon::kHipRadial;
+  /// [s] The hip relative to the base centre, along the arm's motor axis v.
+  double hipAlongAxis = falcon::kHipAlongAxis;
+  /// [phy] Direction phi_i of each arm's u axis about the base's z axis (rad).
   std::array<double, 3> armAngles{falcon::kArmAngles[0], falcon::kArmAngles[1],
-                                  falcon::kArmAngles[2]}; // [phy]
+                                  falcon::kArmAngles[2]};
 };
 
+/// One value per arm, arm 1 to 3: angles (rad) or, from torques(), torques (N m).
 using JointAngles = std::array<double, 3>;
 /// Row-major 3x3: jacobian[row][column], row = position axis, column = joint.
 using Matrix3 = std::array<std::array<double, 3>, 3>;
 
+/// Forward and inverse kinematics and the Jacobian of the Falcon's delta linkage, for one
+/// DeltaGeometry.
 class DeltaKinematics
 {
 public:
+  /// Precomputes each arm's frame, hip and grip joint from `geometry`.
   explicit DeltaKinematics(const DeltaGeometry& geometry = DeltaGeometry{});
 
   /// Grip centre for the three arm angles (radians, from each arm's u axis toward +z, the side
@@ -65,6 +78,7 @@ public:
   /// tau = J^T F. Zero at a singular pose, where no finite torques would do.
   JointAngles torques(const JointAngles& angles, const Vec3& force) const;
 
+  /// The linkage this instance was built for.
   const DeltaGeometry& geometry() const { return m_geometry; }
 
 private:

@@ -20,17 +20,21 @@ constexpr double kLowerArm = 0.1025;
 /// at both ends of the parallelogram. In libnifalcon's equations they lie in the arm's plane,
 /// along the shin's lean in it, so only their sum matters.
 constexpr double kKneeLink = 0.01125;
+/// [d] Shin to effector connection joint (see kKneeLink).
 constexpr double kEffectorLink = 0.01125;
 /// [c], [f] The effector's joint relative to the grip centre, along the arm's radial (u) and
 /// motor-axis (v) directions.
 constexpr double kEffectorRadial = 0.01443;
+/// [f] The effector's joint along the motor axis (v), relative to the grip centre.
 constexpr double kEffectorAlongAxis = -0.025;
 /// [r], [s] The hip relative to the base centre, along u and v.
 constexpr double kHipRadial = 0.0400;
+/// [s] The hip along the motor axis (v), relative to the base centre.
 constexpr double kHipAlongAxis = -0.02309;
-/// [phy] Direction of each arm's u axis about the base axis: 90, -30 and 150 degrees, each
+/// [phy] Direction of each arm's u axis about the base axis: 90, -30 and -150 degrees, each
 /// turned by the 15 degrees the whole mechanism is rotated from the desk plane.
 constexpr double kArmOffsetAngle = std::numbers::pi / 12.0;
+/// Each arm's u direction about the base axis (rad), in the order of the encoders.
 constexpr double kArmAngles[3] = {std::numbers::pi / 2.0 + kArmOffsetAngle,
                                   -std::numbers::pi / 6.0 + kArmOffsetAngle,
                                   -5.0 * std::numbers::pi / 6.0 + kArmOffsetAngle};
@@ -38,10 +42,12 @@ constexpr double kArmAngles[3] = {std::numbers::pi / 2.0 + kArmOffsetAngle,
 // Encoders to arm angles (libnifalcon FalconGeometry.h and FalconKinematic.h).
 /// Transparent slots on the motor's encoder wheel; quadrature gives four counts per slot.
 constexpr double kEncoderSlots = 320.0;
+/// Encoder counts per turn of the motor shaft.
 constexpr double kCountsPerMotorTurn = 4.0 * kEncoderSlots;
 /// The motor shaft drives the arm at the rim of the arm's 110 mm sector (libnifalcon's "small
 /// diameter of the arm"), equal arc lengths: arm angle = shaft angle x shaft / sector diameter.
 constexpr double kShaftDiameter = 0.01425;
+/// Diameter of the arm's sector the shaft drives (m).
 constexpr double kArmSectorDiameter = 0.110;
 /// 1280 x 110 / 14.25 / (2 pi) = 1572.6 counts per radian of arm angle.
 constexpr double kCountsPerArmRadian =

@@ -13,14 +13,20 @@
 namespace proxima
 {
 
+/// One HID device as hidapi enumerates it.
 struct HidDeviceInfo
 {
   /// The hidraw node, e.g. /dev/hidraw3: what openHidapiTransport takes.
   std::string path;
+  /// USB (or Bluetooth) vendor ID.
   std::uint16_t vendorId = 0;
+  /// Product ID within the vendor's range.
   std::uint16_t productId = 0;
+  /// The manufacturer string, in ASCII (other characters become '?'); empty if none.
   std::string manufacturer;
+  /// The product string, in ASCII (other characters become '?'); empty if none.
   std::string product;
+  /// The USB interface the HID device belongs to; -1 where hidapi does not know it.
   int interfaceNumber = -1;
 };
 

@@ -13,11 +13,16 @@
 namespace proxima
 {
 
+/// One USB device as libusb enumerates it.
 struct UsbDeviceInfo
 {
+  /// Vendor ID from the device descriptor.
   std::uint16_t vendorId = 0;
+  /// Product ID from the device descriptor.
   std::uint16_t productId = 0;
+  /// Number of the USB bus the device is on.
   int bus = 0;
+  /// The device's address on that bus.
   int address = 0;
 };
 

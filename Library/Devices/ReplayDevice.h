@@ -12,9 +12,13 @@
 namespace proxima
 {
 
+/// A device that plays a recording back: each read gives the sample recorded at the latest time
+/// not after it, an invalid sample before the first row, and a lost device after the last.
 class ReplayDevice final : public HapticDevice
 {
 public:
+  /// Plays `samples` back (times never decreasing, as readDeviceRecording gives them);
+  /// `limits` is what limits() reports, unbounded by default.
   explicit ReplayDevice(std::vector<RecordedSample> samples, DeviceLimits limits = DeviceLimits{});
 
   DeviceSample read(double time) override;
@@ -22,7 +26,9 @@ public:
   DeviceLimits limits() const override { return m_limits; }
   const char* name() const override { return "replay"; }
 
+  /// The recording being played back.
   const std::vector<RecordedSample>& samples() const { return m_samples; }
+  /// The force (N) of the latest writeForce(), which a replay only keeps; zero before any.
   const Vec3& lastForce() const { return m_lastForce; }
 
 private:
@@ -32,6 +38,8 @@ private:
   Vec3 m_lastForce;
 };
 
+/// Wraps a device and records every sample it reads, for writeDeviceRecording() after the run;
+/// forces, limits and name pass through to the wrapped device.
 class RecordingDevice final : public HapticDevice
 {
 public:
@@ -44,6 +52,8 @@ public:
   DeviceLimits limits() const override { return m_device.limits(); }
   const char* name() const override { return m_device.name(); }
 
+  /// The samples recorded so far, in the order they were read; read them once the run is over,
+  /// since the servo thread appends to them.
   const std::vector<RecordedSample>& samples() const { return m_samples; }
   /// Reads past the reserved room: passed on, not recorded.
   std::size_t samplesLeftOut() const { return m_leftOut; }

@@ -16,15 +16,18 @@
 namespace proxima
 {
 
-/// The vendor IDs of 3Dconnexion devices: the Logitech era and 3Dconnexion's own.
+// The vendor IDs of 3Dconnexion devices: the Logitech era and 3Dconnexion's own.
+/// Logitech's vendor ID, under which the older 3Dconnexion devices are sold.
 constexpr std::uint16_t kSpaceMouseVendorLogitech = 0x046d;
+/// 3Dconnexion's own vendor ID: every device under it is a SpaceMouse.
 constexpr std::uint16_t kSpaceMouseVendor3Dconnexion = 0x256f;
 
-constexpr std::uint8_t kSpaceMouseTranslationReport = 1;
-constexpr std::uint8_t kSpaceMouseRotationReport = 2;
-constexpr std::uint8_t kSpaceMouseButtonReport = 3;
-constexpr std::uint8_t kSpaceMouseLedReport = 4;
+constexpr std::uint8_t kSpaceMouseTranslationReport = 1; ///< Input: translation (or six axes).
+constexpr std::uint8_t kSpaceMouseRotationReport = 2;    ///< Input: rotation (split layout).
+constexpr std::uint8_t kSpaceMouseButtonReport = 3;      ///< Input: the buttons as a bit mask.
+constexpr std::uint8_t kSpaceMouseLedReport = 4;         ///< Output: the LED on or off.
 
+/// Which input reports carry the rotation axes.
 enum class SpaceMouseLayout
 {
   /// Translation in report 1, rotation in report 2 (SpaceNavigator, SpaceMouse Pro and older).
@@ -36,18 +39,26 @@ enum class SpaceMouseLayout
 /// Raw axis counts as the device reports them, and the buttons.
 struct SpaceMouseState
 {
+  /// Cap translation counts along the device's x, y, z (signed 16-bit values).
   std::array<int, 3> translation{0, 0, 0};
+  /// Cap rotation counts about the device's x, y, z (signed 16-bit values).
   std::array<int, 3> rotation{0, 0, 0};
+  /// Button states, bit i for button i.
   std::uint32_t buttons = 0;
 };
 
 /// What one input report changed; `error` says why a report was refused.
 struct SpaceMouseReportResult
 {
+  /// True if the report was applied; false if it was refused and `state` is unchanged.
   bool accepted = false;
+  /// The report set the translation counts.
   bool translation = false;
+  /// The report set the rotation counts.
   bool rotation = false;
+  /// The report set the buttons.
   bool buttons = false;
+  /// Why the report was refused; empty if it was accepted.
   std::string error;
 };
 

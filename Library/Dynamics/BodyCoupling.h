@@ -20,14 +20,18 @@ namespace proxima
 /// A body and the scene object that is its surface.
 struct CoupledBody
 {
+  /// The body: its name, joint and mass properties.
   BodyDescription description;
+  /// Index of the scene object that moves with the body.
   std::uint32_t object = 0;
 };
 
 /// A scene object bound to a body of an MJCF mechanism by the body's name.
 struct MechanismBinding
 {
+  /// Index of the scene object that moves with the body.
   std::uint32_t object = 0;
+  /// Name of the body in the MJCF file.
   std::string body;
 };
 
@@ -44,6 +48,9 @@ std::string couplingStabilityDefect(const BodyDescription& body, const TriangleM
 std::string couplingStabilityDefect(double effectiveMass, const std::string& from, double kp,
                                     double timeStep);
 
+/// The TickDynamics of a scene with bodies, on a BodyWorld (MuJoCo): pushes the touched bodies
+/// with the force the device renders, steps them at the haptic rate and moves their objects in
+/// the proxy solver. Body i moves scene object `object(i)`.
 class BodyCoupling final : public TickDynamics
 {
 public:
@@ -60,8 +67,11 @@ public:
   void step(HapticState& state, ProxySolver& solver) override;
   void poses(BodyPoses& out) const override;
 
+  /// How many bodies move: one per CoupledBody or MechanismBinding given.
   std::size_t numBodies() const { return m_objects.size(); }
+  /// The name of body `body` (its description's, or the MJCF body's bound).
   const std::string& name(std::size_t body) const { return m_names[body]; }
+  /// The scene object that body `body` moves.
   std::uint32_t object(std::size_t body) const { return m_objects[body]; }
   /// The body of scene object `object`, or -1 for a static object.
   int bodyOfObject(std::uint32_t object) const
@@ -70,7 +80,9 @@ public:
   }
   /// Where body `body` is now, relative to where it was placed.
   RigidTransform transform(std::size_t body) const;
+  /// The bodies' world, owned by the coupling.
   BodyWorld& world() { return m_world; }
+  /// The bodies' world, read only.
   const BodyWorld& world() const { return m_world; }
   /// Watches the bodies leave the scene: from now on, the first time the point `references[b]`
   /// of body b's object (as placed) goes outside the box [lower, upper] is kept

@@ -13,6 +13,7 @@
 namespace proxima
 {
 
+/// How a body is held to the world.
 enum class JointType
 {
   /// Rotation about `axis` through `anchor`; q in radians.
@@ -31,31 +32,40 @@ enum class JointType
 /// "hinge", "slide", "ball", "free", "mechanism".
 const char* jointTypeName(JointType type);
 
+/// The one joint that holds a body to the world, in the world frame at the start.
 struct JointDescription
 {
+  /// The kind of joint; `axis`, `range` and the units of q follow from it.
   JointType type = JointType::Hinge;
   /// Unit or not (normalised); not used by ball and free joints.
   Vec3 axis{0.0, 0.0, 1.0};
   /// A point on the axis (hinge, slide: where the joint is drawn) or the ball's centre, world
   /// frame, metres.
   Vec3 anchor;
-  /// Limits of q (hinge, slide) when `limited`.
+  /// Whether q is kept within `range` (hinge and slide only; other joints have no range).
   bool limited = false;
+  /// Lower and upper limits of q when `limited` (radians for a hinge, metres for a slide);
+  /// low < high.
   double range[2] = {0.0, 0.0};
-  /// Spring toward q = 0 (N m/rad or N/m) and viscous damping (N m s/rad or N s/m).
+  /// Stiffness of a spring toward q = 0 (N m/rad or N/m), not negative.
   double stiffness = 0.0;
+  /// Viscous damping of the joint (N m s/rad or N s/m), not negative.
   double damping = 0.0;
 };
 
+/// A rigid body of a scene as its dynamics needs it: a name, a joint, and mass properties.
 struct BodyDescription
 {
   /// Names the body in messages and in MuJoCo's model.
   std::string name;
+  /// The joint that holds the body to the world.
   JointDescription joint;
   /// Mass, centre of mass and inertia in the world frame at the start.
   SolidMassProperties mass;
 };
 
+/// The settings of the bodies' world, shared by all its bodies (an MJCF mechanism takes only
+/// `timeStep`, and keeps its file's gravity).
 struct DynamicsSettings
 {
   /// The integration step: the haptic servo's period.

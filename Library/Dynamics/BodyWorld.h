@@ -22,18 +22,22 @@ namespace proxima
 /// A rigid transform: a point p of the object as placed goes to position + rotate(p).
 struct BodyPose
 {
+  /// Translation (m, world frame), applied after the rotation.
   Vec3 position;
   /// Unit quaternion w, x, y, z.
   double orientation[4] = {1.0, 0.0, 0.0, 0.0};
 
+  /// Where the point `point` of the object as placed is under this pose (world frame, m).
   Vec3 apply(const Vec3& point) const;
 };
 
+/// The mechanical energy of the bodies (or of one body), for reports and tests.
 struct BodyEnergy
 {
-  /// Joules: the bodies' kinetic energy, and their potential energy in gravity and joint springs
-  /// (zero at the start pose for the springs; gravity's zero is the world origin).
+  /// Joules: the bodies' kinetic energy.
   double kinetic = 0.0;
+  /// Joules: the bodies' potential energy in gravity and joint springs (zero at the start pose
+  /// for the springs; gravity's zero is the world origin).
   double potential = 0.0;
 };
 
@@ -41,13 +45,18 @@ struct BodyEnergy
 /// given, of the one that failed.
 struct MechanismBindingError : std::invalid_argument
 {
+  /// An error about the binding `index`, with the message `what`.
   MechanismBindingError(std::size_t index, const std::string& what)
     : std::invalid_argument(what)
     , binding(index)
   {}
+  /// Index, in the body names given, of the binding that failed.
   std::size_t binding;
 };
 
+/// The bodies of a scene on MuJoCo: builds the model, applies the finger's forces and steps it
+/// at the haptic rate. Body i is the i-th BodyDescription (or bound MJCF body) given. Not
+/// thread-safe: one thread at a time drives it, the one that steps the proxy.
 class BodyWorld
 {
 public:
@@ -67,8 +76,12 @@ public:
   BodyWorld(const BodyWorld&) = delete;
   BodyWorld& operator=(const BodyWorld&) = delete;
 
+  /// How many bodies the world has bound (those given, in order).
   std::size_t numBodies() const;
+  /// Seconds of simulated time since the world was made (0 at the start; step() adds one time
+  /// step).
   double time() const;
+  /// The settings the world was made with.
   const DynamicsSettings& settings() const { return m_settings; }
 
   /// Adds `force` (N, world frame) at `point` (world) on `body` for the next step only.
@@ -83,6 +96,7 @@ public:
   /// they started (the length of the rotation vector of pose(), radians in [0, pi]) and its rate
   /// their angular speed in the world (rad/s, never negative).
   double jointPosition(std::size_t body) const;
+  /// The rate of jointPosition() (see there for units and for bodies with no single coordinate).
   double jointVelocity(std::size_t body) const;
   /// Velocity (m/s) of the body's material point now at `point` (world).
   Vec3 pointVelocity(std::size_t body, const Vec3& point) const;
@@ -92,6 +106,8 @@ public:
   /// The same energies for one body: its own kinetic energy (1/2 m v^2 + 1/2 w^T I w at its
   /// centre of mass), its weight's potential and its own joints' springs'. For reports and tests.
   BodyEnergy bodyEnergy(std::size_t body);
+  /// The joint of body `body`: its description's type; for a bound MJCF body, the type of its one
+  /// joint, or Mechanism when it has none or several.
   JointType jointType(std::size_t body) const { return m_joints[body]; }
   /// The least effective mass (kg) of the body at any of `points` (world, where the body is now)
   /// in any direction: 1 / the largest eigenvalue of J M^-1 J^T, with J the points' translational

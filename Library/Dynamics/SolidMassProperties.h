@@ -11,10 +11,12 @@
 namespace proxima
 {
 
+/// The mass properties of a homogeneous solid, in the frame of the mesh that bounds it.
 struct SolidMassProperties
 {
   /// Enclosed volume in cubic metres (positive for an outward-oriented mesh).
   double volume = 0.0;
+  /// Mass in kilograms: the density times `volume`.
   double mass = 0.0;
   /// Centre of mass, in the mesh's frame.
   Vec3 centroid;

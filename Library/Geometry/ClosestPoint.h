@@ -21,12 +21,17 @@ enum class TriangleFeature : std::uint8_t
   Face
 };
 
+/// The point of a triangle nearest a query point, where it lies on the triangle and how far it
+/// is: what closestPointOnTriangle() returns.
 struct ClosestPointResult
 {
+  /// The nearest point of the triangle, in the frame of its corners.
   Vec3 point;
   /// point = weights[0] * a + weights[1] * b + weights[2] * c; weights >= 0, sum 1.
   double weights[3] = {1.0, 0.0, 0.0};
+  /// Squared distance from the query point to `point`.
   double squaredDistance = 0.0;
+  /// The vertex, edge or face interior that holds `point`.
   TriangleFeature feature = TriangleFeature::VertexA;
 };
 

@@ -19,9 +19,13 @@ namespace proxima
 /// A convex hull of a few points held elsewhere (a triangle's corners, the dual-space columns).
 struct PointSetSupport
 {
+  /// The points, not owned: they must outlive every query on this set.
   const Vec3* points = nullptr;
+  /// How many points `points` holds; at least 1 for a query.
   int count = 0;
 
+  /// The point farthest along `direction` (the first such point on a tie); `index` receives its
+  /// index.
   Vec3 support(const Vec3& direction, int& index) const
   {
     index = 0;
@@ -37,14 +41,18 @@ struct PointSetSupport
     }
     return points[index];
   }
+  /// The point with index `index`.
   Vec3 point(int index) const { return points[index]; }
 };
 
 /// One vertex of the GJK simplex in the Minkowski difference A - B, with its source indices.
 struct GjkVertex
 {
+  /// The vertex: the point `indexA` of A minus the point `indexB` of B.
   Vec3 w;
+  /// Index of the point of A, as the set's support mapping numbers it.
   int indexA = 0;
+  /// Index of the point of B, as the set's support mapping numbers it.
   int indexB = 0;
 };
 
@@ -52,26 +60,36 @@ struct GjkVertex
 /// query on sets that moved a little (the indices are kept, the points are re-read).
 struct GjkSimplex
 {
+  /// The vertices; only the first `size` are in use.
   GjkVertex vertices[4];
+  /// Barycentric weights of the point nearest the origin over the vertices in use (sum 1).
   double weights[4] = {1.0, 0.0, 0.0, 0.0};
+  /// Number of vertices in use, 0 to 4; 0 asks for a cold start.
   int size = 0;
 };
 
+/// The stopping rules of gjkDistance().
 struct GjkOptions
 {
   /// Stop when an iteration would shorten |v|^2 by less than this fraction of it.
   double relativeTolerance = 1e-14;
   /// The sets touch when |v|^2 falls below this fraction of the largest |w|^2 seen.
   double touchTolerance = 1e-26;
+  /// Most iterations a query may run; reaching the cap leaves GjkResult::converged false.
   int maxIterations = 64;
 };
 
+/// What gjkDistance() returns: the distance between the two sets and their nearest points.
 struct GjkResult
 {
+  /// Distance between the hulls; close to 0 (within the touch tolerance) when they touch or
+  /// overlap.
   double distance = 0.0;
-  /// Nearest point of A and of B (equal when the sets intersect).
+  /// Nearest point of A (equal to pointB when the sets intersect).
   Vec3 pointA;
+  /// Nearest point of B (equal to pointA when the sets intersect).
   Vec3 pointB;
+  /// Number of iterations the query ran.
   int iterations = 0;
   /// False when the iteration cap was hit or a non-finite number stopped the loop.
   bool converged = false;

@@ -21,8 +21,11 @@ inline constexpr double kShortEdgeScaleFactor = 2.0;
 /// Where the short-edge rule applies, the leaf spheres it may make: this many per triangle, or
 /// kLeafSphereBudget (20 bytes each) if more; past it the length grows toward the median rule's.
 inline constexpr std::uint64_t kLeafSpheresPerTriangleBudget = 8;
+/// The floor of that budget: any mesh may make this many leaf spheres (about 1.3 MB) under the
+/// short-edge rule, however few its triangles.
 inline constexpr std::uint64_t kLeafSphereBudget = std::uint64_t{1} << 16;
 
+/// How SphereTree::build() sizes the leaf spheres, groups them and spreads the work.
 struct SphereTreeOptions
 {
   /// Leaf size rule: a triangle whose longest edge exceeds leafSizeFactor times the mesh's median
@@ -51,7 +54,9 @@ inline constexpr std::uint32_t kSphereTreeMaxDepth = kSphereTreeMedianSplitDepth
 /// origin; radii are rounded up so that a float sphere always holds what the exact one held.
 struct SphereTreeNode
 {
+  /// Centre of the node's sphere, relative to the tree's origin (m).
   float center[3];
+  /// Radius of the node's sphere (m), rounded up: it holds every leaf sphere below the node.
   float radius;
   /// Internal node: index of the right child. Leaf node: first leaf sphere.
   std::uint32_t rightOrFirst;
@@ -59,10 +64,14 @@ struct SphereTreeNode
   std::uint32_t numLeafSpheres;
 };
 
+/// A sphere that covers one triangle, or one piece of a split triangle: the tree's leaves.
 struct LeafSphere
 {
+  /// Centre, relative to the tree's origin (m).
   float center[3];
+  /// Radius (m), rounded up so that the sphere holds its whole triangle or piece.
   float radius;
+  /// Index of the covered triangle in the mesh.
   std::uint32_t triangle;
 };
 
@@ -72,23 +81,30 @@ inline Vec3 centerOf(const SphereTreeNode& node)
   return {static_cast<double>(node.center[0]), static_cast<double>(node.center[1]),
           static_cast<double>(node.center[2])};
 }
+/// A leaf sphere's centre in double, relative to the tree's origin.
 inline Vec3 centerOf(const LeafSphere& leaf)
 {
   return {static_cast<double>(leaf.center[0]), static_cast<double>(leaf.center[1]),
           static_cast<double>(leaf.center[2])};
 }
 
+/// A sphere in double precision: a node or leaf sphere handed out for drawing.
 struct Sphere
 {
+  /// Centre (m), in the frame the function that returns it names.
   Vec3 center;
+  /// Radius (m).
   double radius = 0.0;
 };
 
 /// Work counters of one query, for benchmarks and the trace.
 struct QueryStats
 {
+  /// Nodes taken off the traversal stack, pruned or entered.
   std::uint32_t nodesVisited = 0;
+  /// Leaf spheres of reached leaf nodes tested against the query.
   std::uint32_t leafSpheresTested = 0;
+  /// Exact triangle tests run (candidatesWithin() runs none).
   std::uint32_t trianglesTested = 0;
 };
 
@@ -99,40 +115,62 @@ struct SphereTreeScratch
   /// A depth-first walk of a tree of depth D holds at most D + 1 nodes (SphereTreeQueries.cpp),
   /// and no build is deeper than kSphereTreeMaxDepth: the stack cannot overflow.
   static constexpr int kMaxStackDepth = static_cast<int>(kSphereTreeMaxDepth) + 1;
+  /// The traversal stack of node indices.
   std::uint32_t stack[kMaxStackDepth];
+  /// The triangles already tested in the current query, so that each is tested once.
   TriangleTestCache tested;
 };
 
+/// A sphere swept along a segment, the query of SphereTree::firstContact(). Positions are in the
+/// frame of the mesh the tree was built over.
 struct SweepQuery
 {
+  /// Centre of the sphere where the sweep begins (m).
   Vec3 start;
+  /// Centre of the sphere where the sweep ends (m).
   Vec3 end;
+  /// Radius of the swept sphere (m); 0 sweeps a point.
   double radius = 0.0;
   /// Contact skin (see sweepSphereTriangleWithSkin); 0 for the exact geometric query.
   double skin = 0.0;
 };
 
+/// The answer of SphereTree::firstContact(): where along the sweep the sphere first meets a
+/// triangle, and which one.
 struct SweepContact
 {
+  /// True when the sweep meets a triangle before its end.
   bool hit = false;
   /// Fraction of start -> end travelled at first contact (1 without a hit).
   double t = 1.0;
+  /// Index of the triangle met first (the lowest index on a tie in `t`); 0 without a hit.
   std::uint32_t triangle = 0;
 };
 
+/// One triangle found by SphereTree::gatherWithin().
 struct NearbyTriangle
 {
+  /// Index of the triangle in the mesh.
   std::uint32_t triangle = 0;
+  /// Its point nearest the query point, with that point's weights, in the mesh's frame.
   ClosestPointResult closest;
 };
 
+/// The answer of SphereTree::nearest().
 struct NearestTriangle
 {
+  /// True when a triangle lies within the query's maximum distance.
   bool found = false;
+  /// Index of the nearest triangle (the lowest index on a tie); 0 when none was found.
   std::uint32_t triangle = 0;
+  /// Its point nearest the query point, with that point's weights, in the mesh's frame; set only
+  /// when `found`.
   ClosestPointResult closest;
 };
 
+/// The bounding-sphere hierarchy over one triangle mesh (paper section 5): build() once, then
+/// query with the same mesh from any number of threads, each with its own SphereTreeScratch. The
+/// tree holds no reference to the mesh.
 class SphereTree
 {
 public:
@@ -166,14 +204,21 @@ public:
   NearestTriangle nearest(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
                           SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
 
+  /// Number of nodes; 0 before build() or for an empty mesh.
   std::uint32_t numNodes() const { return static_cast<std::uint32_t>(m_nodes.size()); }
+  /// Number of leaf spheres: at least one per triangle, more where triangles were split.
   std::uint32_t numLeafSpheres() const { return static_cast<std::uint32_t>(m_leaves.size()); }
+  /// Number of triangles of the mesh the tree was built over.
   std::uint32_t numTriangles() const { return m_numTriangles; }
+  /// Level of the deepest node (the root is level 0); at most kSphereTreeMaxDepth.
   std::uint32_t depth() const { return m_depth; }
   /// Bytes of the tree itself (nodes and leaf spheres), not of the mesh.
   std::size_t memoryBytes() const;
+  /// The point the stored centres are relative to: the centre of the mesh's bounding box.
   const Vec3& origin() const { return m_origin; }
+  /// The nodes in depth-first order, the root first.
   const std::vector<SphereTreeNode>& nodes() const { return m_nodes; }
+  /// The leaf spheres, each leaf node's in one contiguous range.
   const std::vector<LeafSphere>& leafSpheres() const { return m_leaves; }
 
   /// The node spheres at `level` (0 is the root; leaf nodes above that level are included), in

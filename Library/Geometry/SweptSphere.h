@@ -8,6 +8,7 @@
 namespace proxima
 {
 
+/// Whether and when a swept sphere first touches a triangle.
 struct SweepResult
 {
   /// True when the sphere touches the triangle at some t in [0, 1].
@@ -38,7 +39,9 @@ SweepResult sweepSphereTriangleWithSkin(const Vec3& start, const Vec3& motion, d
 /// gives them.
 struct KnownClosestPoint
 {
+  /// The triangle's point nearest the sweep's start.
   Vec3 point;
+  /// Squared distance from the start to `point`.
   double squaredDistance = 0.0;
 };
 

@@ -9,10 +9,14 @@
 namespace proxima
 {
 
+/// The set of triangles already tested in one query, so that a triangle covered by several leaf
+/// spheres gets its exact test once. Fixed size, never allocates; one per querying thread.
 class TriangleTestCache
 {
 public:
+  /// Slots of the open-addressing table (a power of two, for the mask).
   static constexpr std::uint32_t kSlots = 4096;
+  /// Triangles the set holds before it counts as full: half the slots, to keep probes short.
   static constexpr std::uint32_t kMaxEntries = kSlots / 2;
 
   /// Starts a new query: everything inserted before is forgotten.

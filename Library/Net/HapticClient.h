@@ -34,9 +34,13 @@ namespace proxima
 /// viscosity (N s/m), as a scene file's material.
 struct ShapeMaterialSpec
 {
+  /// Factor on the servo's stiffness kp: 0 to 100, 0 taken as 1 (the server refuses others).
   double stiffness = 1.0;
+  /// Static friction coefficient mu_s, 0 (none) to 10.
   double staticFriction = 0.0;
+  /// Dynamic friction coefficient mu_d, felt while sliding, 0 (none) to 10.
   double dynamicFriction = 0.0;
+  /// Viscosity in N s/m, 0 (none) to 1e4.
   double viscosity = 0.0;
 };
 
@@ -45,11 +49,14 @@ struct ModelReceiptInfo
 {
   /// The model's scene version in the server's runtime (samples carry it).
   std::uint64_t version = 0;
+  /// Shapes in the model (a scene file's objects).
   std::uint32_t shapes = 0;
+  /// Triangles in the model, over all its shapes.
   std::uint64_t triangles = 0;
-  /// Building the sphere trees there, and from then until the proxy loop used the model (-1 if
-  /// it did not within 5 s, e.g. a runtime that has stopped).
+  /// Wall time the server took to build the model's sphere trees (ms).
   double buildMilliseconds = 0.0;
+  /// Wall time from the build's end until the proxy loop used the model (ms); -1 if it did not
+  /// within 5 s, e.g. a runtime that has stopped.
   double liveMilliseconds = 0.0;
 };
 
@@ -57,31 +64,43 @@ struct ModelReceiptInfo
 /// now at pose.apply(p).
 struct LiveBodyPose
 {
+  /// The shape's index in the model (its object in the scene file).
   int shape = 0;
+  /// The shape's rigid motion from where it was committed, in the model's frame (m).
   RigidTransform pose;
 };
 
 /// One sample of the server's state.
 struct LiveSample
 {
+  /// The servo tick that produced the state (a restarted server counts its ticks anew).
   std::uint64_t tick = 0;
+  /// The tick's time on the server runtime's clock (s).
   double time = 0.0;
+  /// Where the device put the finger at that tick, in the model's frame (m).
   Vec3 finger;
+  /// The proxy's centre, in the model's frame (m).
   Vec3 proxy;
+  /// The force commanded to the device, on the finger (N), after clamping, rate limiting and
+  /// fading.
   Vec3 force;
+  /// Active constraint planes, 0 (free) to 3.
   int contacts = 0;
   /// The shape of the first contact, -1 for none.
   int shape = -1;
+  /// The tick's conditions as `TickConditions::bits()` (Core/TickConditions.h): the trace's
+  /// flags column.
   std::uint32_t flags = 0;
+  /// The version of the model the tick's proxy step ran on (ModelReceiptInfo::version).
   std::uint64_t modelVersion = 0;
   /// Samples the server could not send on time because this client read too slowly, so far.
   std::uint64_t droppedSamples = 0;
   /// The model's bodies (a scene with bodies) after the server's newest dynamics step.
   std::vector<LiveBodyPose> bodies;
-  /// The server's wall clock when it wrote the sample and this client's when it read it (ns
-  /// since 1970): their difference is the stream's latency where the clocks agree (one machine,
-  /// or synchronised ones).
+  /// The server's wall clock when it wrote the sample (ns since 1970).
   std::int64_t sentNanoseconds = 0;
+  /// This client's wall clock when it read the sample (ns since 1970): less sentNanoseconds, the
+  /// stream's latency where the clocks agree (one machine, or synchronised ones).
   std::int64_t receivedNanoseconds = 0;
   /// How many times the stream has come back after its server went away (a restarted server
   /// starts its ticks and model versions anew).
@@ -91,8 +110,11 @@ struct LiveSample
 /// A shape's touch began or ended (seen between two samples).
 struct TouchChange
 {
+  /// The shape's index in the model; shapes from 63 on are all reported as 63.
   int shape = 0;
+  /// True when the touch began, false when it ended.
   bool touched = false;
+  /// The time of the sample that saw the change (LiveSample::time, s).
   double time = 0.0;
 };
 
@@ -110,6 +132,7 @@ enum class HapticClientRole
 class OwnershipEnded : public InputError
 {
 public:
+  /// An error about `path` (--server) with `defect` in words, as InputError's.
   using InputError::InputError;
 };
 
@@ -136,12 +159,17 @@ public:
   HapticClient(const HapticClient&) = delete;
   HapticClient& operator=(const HapticClient&) = delete;
 
-  // The transform stack (rigid motions), applied to the vertices and normals given after.
+  /// Sets the top of the transform stack to the identity. The stack holds rigid motions; its top
+  /// applies to the vertices, normals and mesh files given after (not to a scene file).
   void loadIdentity();
+  /// Pushes a copy of the top of the stack, for popMatrix to return to.
   void pushMatrix();
   /// Throws std::logic_error on an empty stack.
   void popMatrix();
+  /// Composes `transform` into the top of the stack, applied to a point before the top as it
+  /// was (as OpenGL's glMultMatrix).
   void multMatrix(const RigidTransform& transform);
+  /// Composes a translation by `offset` (m) into the top of the stack, as multMatrix does.
   void translate(const Vec3& offset);
   /// Right-handed about `axis` (any length but zero).
   void rotate(double degrees, const Vec3& axis);
@@ -152,10 +180,19 @@ public:
   /// go with each vertex given after them (all or none of a shape's vertices have them), and its
   /// triangles by vertex index. Throws std::logic_error when the calls are out of order.
   void beginShape(const std::string& name = {});
+  /// The normal, turned by the top of the stack, of the vertices given after it in this shape
+  /// (until the next normal); a shape with normals is force-shaded.
   void normal(const Vec3& normal);
+  /// The texture coordinate (u, v) of the vertices given after it in this shape (until the next
+  /// texCoord).
   void texCoord(double u, double v);
+  /// A vertex at `position` (m), moved by the top of the stack; its index is the number of
+  /// vertices the shape had before it.
   void vertex(const Vec3& position);
+  /// A triangle by the indices of three of the shape's vertices (the server checks them at
+  /// commit).
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  /// Ends the shape beginShape began.
   void endShape();
   /// A shape read from a mesh file here (IO/Mesh/MeshReader.h: its errors), scaled, then
   /// transformed, with the current material.
@@ -166,7 +203,10 @@ public:
   /// InputError as a local run would, std::logic_error when shapes are pending (and shape calls
   /// throw while a scene is).
   void scene(const std::string& file);
+  /// The shapes the next commit sends: those made since the last commit, with one begun and not
+  /// yet ended (a pending scene file is not counted).
   std::size_t pendingShapes() const;
+  /// The role this client connected as; an owner keeps it after its ownership ends.
   HapticClientRole role() const;
 
   /// True while this owner's ownership holds: false for an observer, and once the connection it

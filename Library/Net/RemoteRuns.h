@@ -21,6 +21,8 @@ namespace proxima
 
 class ThreadedRuntime;
 
+/// How RemoteRunServer serves (`proxima serve`): where it listens, the token and TLS it asks of
+/// clients, its limits, and the live haptic service it may offer beside remote runs.
 struct RemoteServerSettings
 {
   /// HOST:PORT; port 0 takes a free one (RemoteRunServer::port says which).
@@ -30,10 +32,12 @@ struct RemoteServerSettings
   /// TLS (`proxima serve --tls-cert --tls-key`): the server's PEM certificate chain and private
   /// key. Empty: a plain channel.
   std::string tlsCertificateChain;
+  /// The PEM private key of the chain's certificate; unused when the chain is empty.
   std::string tlsPrivateKey;
   /// The largest request taken (its mesh, path and texture files together).
   std::size_t maxRequestBytes = std::size_t{512} << 20;
-  /// The most ticks one run may ask for (a client's --max-ticks above it is refused).
+  /// The most ticks one run may take: a client's --max-ticks above it is lowered to it, and a
+  /// path that needs more ticks than that is refused before it is played.
   double maxTicks = 1e7;
   /// The live haptic service (proxima_haptic.proto, Net/HapticClient.h) on the same port: with
   /// a runtime (the server's device and threads, which must outlive the server), clients upload
@@ -41,8 +45,9 @@ struct RemoteServerSettings
   ThreadedRuntime* runtime = nullptr;
   /// The proxy of the uploaded models (radius, skin, iteration cap).
   ProxyParameters liveProxy;
-  /// The servo's kp (N/m) and rate (Hz): an uploaded scene's bodies are coupled at them.
+  /// The servo's kp (N/m), at which an uploaded scene's bodies are coupled to the proxy.
   double liveStiffness = 1000.0;
+  /// The servo's rate (Hz), at which an uploaded scene's bodies are coupled to the proxy.
   double liveRate = 1000.0;
   /// The most triangles (and points) of one uploaded model.
   std::uint64_t maxModelTriangles = 20'000'000;
@@ -76,6 +81,10 @@ ListenAddress parseListenAddress(const std::string& text);
 /// parseListenAddress refuses.
 bool isLoopbackAddress(const std::string& hostAndPort);
 
+/// The server of `proxima serve`: plays the scripted runs its clients send (proxima_remote.proto)
+/// in lockstep and streams their ticks back, and with RemoteServerSettings::runtime also offers
+/// the live haptic service on the same port. It serves on gRPC's threads from construction until
+/// shutdown.
 class RemoteRunServer
 {
 public:
@@ -99,11 +108,15 @@ private:
   std::unique_ptr<Impl> m_impl;
 };
 
+/// A scripted run for runRemotely to send: a local run's settings and files, the run's tick
+/// limit, and the trace file's name for the summary.
 struct RemoteRunRequest
 {
   /// As a local run's: `mesh` or `scene`, `path` and `texture` name the client's files, which are
   /// sent whole (a scene with every file it names).
   ScriptedRunSettings settings;
+  /// The most ticks the run may take (the client's --max-ticks, 1 or more). The server lowers it
+  /// to its own limit (RemoteServerSettings::maxTicks) and refuses a path that needs more.
   double maxTicks = 1e7;
   /// The trace file the client writes, for the summary's "trace".
   std::string traceName;

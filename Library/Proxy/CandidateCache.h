@@ -27,24 +27,34 @@ namespace proxima
 /// object, ProxySolver's loop over the objects in order), whatever order the triangles are tested.
 struct SceneContact
 {
+  /// True when the sweep meets a triangle.
   bool hit = false;
   /// Fraction of the sweep travelled at first contact (1 without a hit).
   double t = 1.0;
+  /// Index of the object met, in CollisionScene::objects; 0 without a hit.
   std::uint32_t object = 0;
+  /// Index of the triangle met, in that object's mesh; 0 without a hit.
   std::uint32_t triangle = 0;
 };
 
+/// The triangles of a scene within a ball around the proxy, gathered once from the sphere trees
+/// and reused while the proxy's queries stay inside the ball, with the same answers as the trees.
+/// One per solver: its const queries update mutable hints, so no two threads may share one.
 class CandidateCache
 {
 public:
+  /// The most triangles the cache holds; a ball that reaches more leaves it invalid.
   static constexpr int kCapacity = 512;
 
   /// Forgets the cached ball (after a scene change).
   void invalidate() { m_valid = false; }
+  /// True when the cache holds every triangle within reach() of center().
   bool valid() const { return m_valid; }
+  /// Centre of the cached ball (m), in the scene's frame.
   const Vec3& center() const { return m_center; }
   /// The radius of the cached ball.
   double reach() const { return m_reach; }
+  /// Number of triangles cached by the last rebuild() (all of them only when valid()).
   int size() const { return m_count; }
 
   /// Takes every triangle within `reach` of `center` from the scene's trees (those whose leaf

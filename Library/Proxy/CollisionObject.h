@@ -14,12 +14,18 @@
 namespace proxima
 {
 
+/// A mesh with what the proxy's queries need over it (sphere tree, filter records) and its
+/// surface material. Immutable once built, and shared between scenes through CollisionObjectList.
 struct CollisionObject
 {
+  /// The object's surface (m): in the scene's frame, or for a moving object in its own frame (where
+  /// its identity pose puts it).
   TriangleMesh mesh;
+  /// The sphere tree over `mesh`; buildQueries() makes it.
   SphereTree tree;
   /// Each triangle's record for the candidate cache's filters, in the mesh's order.
   std::vector<TriangleFilter> filters;
+  /// How the surface feels: stiffness, friction, viscosity, textures.
   SurfaceMaterial material;
 
   /// Builds what the queries need over `mesh`: the sphere tree and the filter records. Not for

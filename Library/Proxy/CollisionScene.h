@@ -12,8 +12,11 @@
 namespace proxima
 {
 
+/// The objects the proxy collides with. Built off the haptic thread, then only read; objects
+/// that did not change are shared with the scene it replaces.
 struct CollisionScene
 {
+  /// The objects; their order breaks ties between contacts (the lowest index wins).
   CollisionObjectList objects;
 
   /// Adds a mesh and builds its tree. Not for the haptic thread.
@@ -38,6 +41,8 @@ struct CollisionScene
     return box.diagonal();
   }
 
+  /// Largest absolute coordinate over all objects (m): the rounding scale of positions near
+  /// them; 0 for an empty scene.
   double maxAbsCoordinate() const
   {
     double largest = 0.0;

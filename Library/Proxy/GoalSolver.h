@@ -11,16 +11,22 @@
 namespace proxima
 {
 
+/// The most constraint planes the update stage passes to the goal solver; the dual solver reads
+/// no more than this many.
 constexpr int kMaxConstraintPlanes = 32;
 
+/// The goal of one update iteration: the step from the proxy to the point nearest the finger
+/// above every constraint plane, and the planes that hold it there.
 struct GoalSolution
 {
   /// Goal minus proxy: the step the proxy should take (x of eq. 18).
   Vec3 displacement;
-  /// The active planes (indices into the normals given) and, for each, the depth mu_i >= 0 with
-  /// finger - goal = -sum mu_i n_i; the force the user applies to plane i is -k mu_i n_i (eq. 19).
+  /// Number of active planes, 0 to 3: the planes the goal lies on that push back on the finger.
   int numActive = 0;
+  /// The active planes, as indices into the normals given; the first numActive are set.
   int active[3] = {0, 0, 0};
+  /// For each active plane, the depth mu_i >= 0 (m) with finger - goal = -sum mu_i n_i; the force
+  /// the user applies to plane i is -k mu_i n_i (eq. 19).
   double depth[3] = {0.0, 0.0, 0.0};
   /// True when the dual solution violated a plane and the exact enumeration answered instead.
   bool usedExactFallback = false;

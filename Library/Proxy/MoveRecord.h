@@ -25,9 +25,12 @@ enum class MovePointKind : unsigned char
   Trial,
 };
 
+/// One recorded point of the proxy's path through a tick.
 struct MovePoint
 {
+  /// Where the proxy's centre was (m), in the scene's frame.
   Vec3 position;
+  /// Whether the point counts for the tick's approach to the finger.
   MovePointKind kind = MovePointKind::Accepted;
 };
 
@@ -36,19 +39,25 @@ struct MovePoint
 /// never allocates); points past its size are dropped and `overflowed` is set.
 struct MoveRecord
 {
+  /// A record with room for `capacity` points, allocated here.
   explicit MoveRecord(std::size_t capacity = 4096)
     : points(capacity)
   {}
 
+  /// The storage: its size is the capacity, and only the first `count` points are recorded.
   std::vector<MovePoint> points;
+  /// Number of points recorded, at most points.size().
   std::size_t count = 0;
+  /// True when a point did not fit and was dropped.
   bool overflowed = false;
 
+  /// Empties the record for a new tick; keeps its storage.
   void clear()
   {
     count = 0;
     overflowed = false;
   }
+  /// Records a point, or sets `overflowed` when the storage is full. Never allocates.
   void add(const Vec3& position, MovePointKind kind)
   {
     if (count < points.size())

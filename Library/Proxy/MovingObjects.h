@@ -16,20 +16,28 @@
 namespace proxima
 {
 
+/// The moving objects of one scene, with each one's pose and placed mesh copy. Made off the
+/// haptic thread by makeMovingObjects(); the solver it is given to then updates it in place.
 struct MovingObjectSet
 {
+  /// One moving object.
   struct Entry
   {
+    /// Index of the object in the scene's objects.
     std::uint32_t object = 0;
-    /// As set (ProxySolver::setObjectPose), and as the mesh copy and the queries use it now.
+    /// The pose as last set (ProxySolver::setObjectPose); the next update moves the object there.
     RigidTransform pose;
+    /// The pose the mesh copy and the queries use now.
     RigidTransform applied;
+    /// The object's mesh placed by `applied`, in the scene's frame.
     TriangleMesh mesh;
   };
+  /// The moving objects, each scene object at most once.
   std::vector<Entry> entries;
   /// Per scene object: its index in `entries`, or -1 for a static object.
   std::vector<int> indexOfObject;
 
+  /// The index in `entries` of scene object `object`; -1 for a static object or one out of range.
   int indexOf(std::uint32_t object) const
   {
     return object < indexOfObject.size() ? indexOfObject[object] : -1;

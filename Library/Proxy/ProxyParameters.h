@@ -4,6 +4,8 @@
 namespace proxima
 {
 
+/// What a ProxySolver is configured with: the proxy's size and skin, the loop's limits, temporal
+/// coherence and the servo constants friction uses. SI units throughout.
 struct ProxyParameters
 {
   /// Proxy sphere radius in metres.
@@ -13,11 +15,13 @@ struct ProxyParameters
   double skin = 0.0;
   /// Move/update iterations allowed in one tick; hitting it is reported.
   int maxIterations = 256;
-  /// The work budget of one tick (0: none). The tick stops before the move stage that would
-  /// exceed it, with the proxy where it is (every move is swept, so that is always feasible);
-  /// the next tick goes on from there. Iterations are deterministic; wall time is not, so a
-  /// lockstep run stays reproducible bit for bit only while no tick hits a time budget.
+  /// The work budget of one tick in move stages (0: none). The tick stops before the move stage
+  /// that would exceed it, with the proxy where it is (every move is swept, so that is always
+  /// feasible); the next tick goes on from there. Iterations are deterministic; wall time is not,
+  /// so a lockstep run stays reproducible bit for bit only while no tick hits a time budget.
   int tickBudgetIterations = 0;
+  /// The work budget of one tick in wall-clock seconds on the steady clock (0: none), checked as
+  /// the iteration budget is; a tick always makes its first move stage.
   double tickBudgetSeconds = 0.0;
   /// Temporal coherence: keep the triangles within radius + margin of the proxy and answer the
   /// tick's queries from them while the proxy stays within half the margin. Exact either way.
@@ -27,6 +31,7 @@ struct ProxyParameters
   /// The servo's spring stiffness kp (N/m) and tick (s): viscous friction (paper eq. 21) turns
   /// the spring's force into a speed, and the speed into a travel per tick.
   double stiffness = 1000.0;
+  /// The servo's tick (s), over which viscous friction's speed becomes a travel.
   double timeStep = 0.001;
 };
 

@@ -27,9 +27,14 @@ struct ProxyTickState;
 /// and the contact weights of the nearest point on that primitive.
 struct ContactPlane
 {
+  /// Unit normal from the primitive's nearest point toward the proxy's centre, in the scene's
+  /// frame.
   Vec3 normal;
+  /// Index of the object, in the scene's objects.
   std::uint32_t object = 0;
+  /// Index of the triangle, in that object's mesh.
   std::uint32_t triangle = 0;
+  /// The triangle's point nearest the proxy's centre (in the scene's frame) and its weights.
   ClosestPointResult closest;
   /// Penetration depth the spring has on this plane (mu of GoalSolution); force = k * depth.
   double depth = 0.0;
@@ -39,24 +44,33 @@ struct ContactPlane
   /// Force shading (paper 3.1): the point normals interpolated with the contact weights, turned
   /// to the proxy's side; used by the first pass of the update stage. Set when `shaded`.
   bool shaded = false;
+  /// The shaded normal (unit, in the scene's frame); meaningful only when `shaded`.
   Vec3 shadedNormal;
-  /// Texture (paper 4.3): the texture coordinate at the contact, on a textured surface.
+  /// Texture (paper 4.3): true on a textured surface, where `texCoord` is set.
   bool textured = false;
+  /// The texture coordinate at the contact, interpolated with the contact weights; meaningful
+  /// only when `textured`.
   TexCoord texCoord;
   /// The factor stiffness maps put on the servo's kp at this contact (1 without them).
   double stiffnessScale = 1.0;
-  /// The surface's friction coefficients and viscosity here (paper 4.1, 4.2); all 0 on a surface
-  /// without friction.
+  /// The surface's static friction coefficient mu_s here (paper 4.1), texture maps applied; all
+  /// three friction values are 0 on a surface without friction.
   double staticFriction = 0.0;
+  /// The dynamic friction coefficient mu_d here (paper 4.2), texture maps applied.
   double dynamicFriction = 0.0;
+  /// The viscosity b here (N s/m, paper 4.2), texture maps applied.
   double viscosity = 0.0;
 };
 
+/// What one ProxySolver::update() reports: where the proxy ended, the contacts the finger pushes
+/// on, and what the tick met on the way.
 struct ProxyTickResult
 {
+  /// The proxy's centre at the end of the tick (m), in the scene's frame.
   Vec3 proxy;
   /// Active constraint planes at the end of the tick (those the finger pushes on), at most 3.
   int numContacts = 0;
+  /// The active constraint planes; the first numContacts are set.
   ContactPlane contacts[3];
   /// Move stages run this tick.
   int iterations = 0;
@@ -66,20 +80,27 @@ struct ProxyTickResult
   /// held), startedOutside (the first update after resetProxyOutside), contactOverflow, stuck and
   /// frictionLimited.
   TickConditions conditions;
-  /// Diagnostics, not conditions of the tick (the trace does not record them): the exact fallback
-  /// answered the goal problem at least once, and a shaded plane took part in the update stage
-  /// (two passes, paper section 3).
+  /// Diagnostic, not a condition of the tick (the trace does not record it): the exact fallback
+  /// answered the goal problem at least once.
   bool usedExactFallback = false;
+  /// Diagnostic, as usedExactFallback: a shaded plane took part in an update stage (two passes,
+  /// paper section 3).
   bool usedShading = false;
   /// The factor on the servo's stiffness from stiffness maps at the contacts, weighted by their
   /// depths (1 without contact or maps).
   double stiffnessScale = 1.0;
+  /// Work counters of the tick's sphere-tree and candidate-cache queries, summed.
   QueryStats queries;
 };
 
+/// The virtual proxy of one haptic device over one collision scene: update() once per haptic
+/// tick moves the proxy toward the finger. update() allocates nothing and takes no lock; the
+/// setup calls that say so allocate. One thread at a time uses a solver.
 class ProxySolver
 {
 public:
+  /// The most triangles within reach of the proxy one gather of constraint planes keeps; more
+  /// are reported as contactOverflow.
   static constexpr int kMaxNearbyTriangles = 256;
   /// The number of cached triangles the candidate cache's margin aims at (adaptCacheMargin).
   static constexpr int kCacheTriangles = 96;
@@ -91,6 +112,7 @@ public:
   /// objects the two solvers move the same meshes, so replay only static scenes. Copying costs
   /// the solver's size (over a hundred kilobytes of fixed buffers) and allocates nothing.
   ProxySolver(const ProxySolver&) = default;
+  /// Makes this solver a replica of another, as the copy constructor does.
   ProxySolver& operator=(const ProxySolver&) = default;
 
   /// Uses `scene` (not owned; must outlive its use here) with `parameters`. The proxy stays where
@@ -105,6 +127,7 @@ public:
     m_parameters.tickBudgetIterations = iterations > 0 ? iterations : 0;
     m_parameters.tickBudgetSeconds = seconds > 0.0 ? seconds : 0.0;
   }
+  /// The parameters setScene() was given, with the budget of any later setTickBudget().
   const ProxyParameters& parameters() const { return m_parameters; }
   /// Places the proxy without moving through the scene (start of a run, or a teleport).
   void resetProxy(const Vec3& position)
@@ -142,6 +165,7 @@ public:
   void setObjectPose(std::uint32_t object, const RigidTransform& pose);
   /// The pose setObjectPose gave (the identity for any other object).
   const RigidTransform& objectPose(std::uint32_t object) const;
+  /// True when the solver uses a non-empty set of moving objects.
   bool hasMovingObjects() const { return m_moving != nullptr && !m_moving->entries.empty(); }
   /// Object `object`'s mesh where it is now: the moved copy of a moving object, or the scene's.
   const TriangleMesh& placedMesh(std::uint32_t object) const
@@ -162,7 +186,11 @@ public:
   /// 1e200 m away made the swept-sphere quadratic overflow and the proxy pass through a sphere
   /// (stress suite, StressFingerInput.AbsurdlyFarFiniteFingers). 0 without a scene.
   static constexpr double kReachFactor = 16.0;
+  /// How far the proxy may go from reachCenter() (m), as kReachFactor sets it; 0 without a scene
+  /// or objects.
   double reachRadius() const { return m_reachRadius; }
+  /// The centre of the scene's bounding box, where reachRadius() is measured from; meaningful
+  /// only while reachRadius() is above 0.
   const Vec3& reachCenter() const { return m_reachCenter; }
 
   /// Records the chain of segments each update moves the proxy along into `record` (not owned;
@@ -170,8 +198,11 @@ public:
   /// accepted points. A copy of the solver records into the same record.
   void recordMoves(MoveRecord* record) { m_moveRecord = record; }
 
+  /// The proxy's centre (m), in the scene's frame.
   const Vec3& proxy() const { return m_proxy; }
+  /// The proxy sphere's radius (m), from the parameters.
   double radius() const { return m_parameters.radius; }
+  /// The contact skin in use (m): the parameters' skin, or the one resolveSkin() chose.
   double skin() const { return m_skin; }
   /// Primitives within radius + contactEpsilon() of the proxy give constraint planes.
   double contactEpsilon() const { return 2.0 * m_skin; }

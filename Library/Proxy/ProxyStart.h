@@ -14,6 +14,7 @@
 namespace proxima
 {
 
+/// Where placeProxyStart() puts the proxy, and why.
 struct ProxyStartPlacement
 {
   /// Where the proxy starts: the requested point, or the free point it was moved to.

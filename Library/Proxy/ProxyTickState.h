@@ -31,6 +31,7 @@ inline constexpr int kMaxStalledIterations = 3;
 class TickBudget
 {
 public:
+  /// The budget of `parameters`; a time budget's deadline runs from now.
   explicit TickBudget(const ProxyParameters& parameters)
     : m_iterations(parameters.tickBudgetIterations)
     , m_timed(parameters.tickBudgetSeconds > 0.0)
@@ -68,10 +69,12 @@ private:
 class ShadedTarget
 {
 public:
+  /// A target that starts at the finger.
   explicit ShadedTarget(const Vec3& finger)
     : m_target(finger)
   {}
 
+  /// The point the loop seeks now: the finger, or the last shaded subgoal taken.
   const Vec3& target() const { return m_target; }
   /// A shaded plane took part in an update stage this tick.
   bool used() const { return m_used; }
@@ -99,9 +102,10 @@ private:
 /// tick's first viscous contact (ProxySolver::frictionLimitedTravel) and spent by every move.
 struct ViscousTravel
 {
-  /// Negative until set.
+  /// Travel the proxy has left this tick (m); negative until the first viscous contact sets it.
   double budget = -1.0;
 
+  /// Takes the length of the move from `from` to `to` off a set budget, down to 0 at least.
   void spend(const Vec3& from, const Vec3& to)
   {
     if (budget > 0.0)
@@ -175,15 +179,21 @@ inline constexpr int kMaxTrialChain = 32;
 class TrialChain
 {
 public:
+  /// A chain whose accepted point is the tick's start, `distanceToTarget` from the target.
   TrialChain(const Vec3& start, double distanceToTarget)
     : m_accepted(start)
     , m_acceptedDistance(distanceToTarget)
   {}
 
+  /// True when trials were made since the accepted point.
   bool pending() const { return m_numTrials > 0; }
+  /// True when kMaxTrialChain trials were made in a row: the proxy must retrace.
   bool full() const { return m_numTrials == kMaxTrialChain; }
+  /// The last accepted point.
   const Vec3& accepted() const { return m_accepted; }
+  /// Distance from the accepted point to the target (m).
   double acceptedDistance() const { return m_acceptedDistance; }
+  /// Trials made since the accepted point, 0 to kMaxTrialChain.
   int numTrials() const { return m_numTrials; }
   /// The k-th trial end since the accepted point (0: the first).
   const Vec3& trial(int k) const { return m_trials[k]; }
@@ -213,13 +223,17 @@ private:
 class RepeatedBlockedMove
 {
 public:
+  /// A rule with no blocked move yet, and the proxy's start as the previous goal.
   explicit RepeatedBlockedMove(const Vec3& proxy)
     : m_previousGoal(proxy)
   {}
 
+  /// True when the last move was blocked at once and `goal` is exactly the goal it had.
   bool repeats(const Vec3& goal) const { return m_blockedAtOnce && goal == m_previousGoal; }
   /// The proxy was put back where it had been (a retrace): no move was blocked there.
   void forget() { m_blockedAtOnce = false; }
+  /// Records a move toward `goal` that took the proxy from `before` to `after` (blocked at once
+  /// when they are equal).
   void moved(const Vec3& goal, const Vec3& before, const Vec3& after)
   {
     m_blockedAtOnce = after == before;
@@ -254,6 +268,8 @@ private:
 /// Everything one tick carries from one iteration of the move/update loop to the next.
 struct ProxyTickState
 {
+  /// The state at the start of a tick: the proxy at `proxy`, the finger already brought within
+  /// reach, and the solver's resolved `skin` (m).
   ProxyTickState(const ProxyParameters& parameters, const Vec3& fingerInReach, const Vec3& proxy,
                  double skin)
     : budget(parameters)
@@ -265,6 +281,7 @@ struct ProxyTickState
     , blocked(proxy)
   {}
 
+  /// The tick's work budget (stop rule).
   const TickBudget budget;
   /// The finger, brought within ProxySolver::reachRadius().
   const Vec3 finger;
@@ -274,11 +291,17 @@ struct ProxyTickState
   const double stepTolerance;
   /// The last update stage's goal (what the tick reports its contacts from).
   GoalSolution solution;
+  /// Force shading's target.
   ShadedTarget shading;
+  /// Viscous friction's travel left.
   ViscousTravel viscous;
+  /// The curvature stretch's trust region.
   StretchTrustRegion stretch;
+  /// The accepted point and the trials since it.
   TrialChain trials;
+  /// Stop rule: a blocked move about to repeat.
   RepeatedBlockedMove blocked;
+  /// Stop rule: moves in a row without progress.
   NoProgress progress;
 };
 

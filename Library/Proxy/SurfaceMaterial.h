@@ -26,24 +26,29 @@ enum class TextureRole
   Stiffness
 };
 
+/// One texture image on a surface and what it modulates, sampled at the contact's texture
+/// coordinate (paper 4.3).
 struct TextureMap
 {
+  /// The image, shared and immutable; a null image has no effect.
   std::shared_ptr<const TextureImage> image;
+  /// What the image's value modulates.
   TextureRole role = TextureRole::Bump;
   /// Bump: metres of height per unit of image value. Other roles: ignored (the value scales).
   double amplitude = 0.0;
 };
 
 /// A region of another stiffness under the surface: a solid stiffness map, such as a hard nodule
-/// in soft tissue that a trainee finds by touch. At a contact within `radius` of `center` (metres,
-/// the scene's frame) the servo's kp is scaled by 1 + (scale - 1) s(1 - d / radius), where d is
-/// the contact's distance from the centre and s the smoothstep x^2 (3 - 2x): `scale` at the
+/// in soft tissue that a trainee finds by touch. At a contact within `radius` of `center`
+/// (metres, in the object as placed in the scene: the region moves with a moving object) the
+/// servo's kp is scaled by 1 + (scale - 1) s(1 - d / radius), where d is the contact's distance
+/// from the centre and s the smoothstep x^2 (3 - 2x): `scale` at the
 /// centre, 1 at the edge, with no step in the force anywhere as the proxy slides across.
 struct StiffnessRegion
 {
-  Vec3 center;
-  double radius = 0.0;
-  double scale = 1.0;
+  Vec3 center;         ///< Centre of the region (m), in the object as placed.
+  double radius = 0.0; ///< Radius of the region (m); 0 is no region.
+  double scale = 1.0;  ///< The factor on kp at the centre.
 };
 
 /// The factor `region` puts on kp at `point`.
@@ -58,6 +63,8 @@ inline double stiffnessRegionScale(const StiffnessRegion& region, const Vec3& po
   return 1.0 + (region.scale - 1.0) * x * x * (3.0 - 2.0 * x);
 }
 
+/// What a surface feels like beyond its shape: shading, friction, viscosity, textures and
+/// stiffness. The default is the bare proxy of paper section 2.
 struct SurfaceMaterial
 {
   /// Force shading (paper 3, 3.1): constraint planes from the point normals interpolated with the
@@ -79,6 +86,7 @@ struct SurfaceMaterial
   /// Solid stiffness maps: regions under the surface where kp changes (StiffnessRegion).
   std::vector<StiffnessRegion> stiffnessRegions;
 
+  /// True when any of static friction, dynamic friction or viscosity is on.
   bool hasFriction() const
   {
     return staticFriction > 0.0 || dynamicFriction > 0.0 || viscosity > 0.0;

@@ -10,6 +10,9 @@
 namespace proxima
 {
 
+/// A single-channel image of floats sampled bilinearly at texture coordinates (u, v), which tile
+/// outside [0, 1). Its reads are const and allocate nothing, so threads may sample one image at
+/// once.
 class TextureImage
 {
 public:
@@ -20,8 +23,11 @@ public:
   /// if the size does not match, a size is zero, or a value is not finite.
   TextureImage(std::uint32_t width, std::uint32_t height, std::vector<float> values);
 
+  /// Texels per row (along u); 0 for an empty image.
   std::uint32_t width() const { return m_width; }
+  /// Rows (along v); 0 for an empty image.
   std::uint32_t height() const { return m_height; }
+  /// True for a default-constructed image, which samples as 0.
   bool empty() const { return m_values.empty(); }
   /// Texel (i, j), no wrapping: i < width, j < height.
   float texel(std::uint32_t i, std::uint32_t j) const

@@ -8,6 +8,8 @@
 namespace proxima
 {
 
+/// Measures how far a budget-limited tick stopped from where it was going, by replaying it on a
+/// solver of its own with no budget. For one thread; outside timed regions.
 class BudgetResidualProbe
 {
 public:

@@ -15,6 +15,7 @@
 namespace proxima
 {
 
+/// A CLOCK_MONOTONIC time or a duration, in nanoseconds.
 using Nanoseconds = std::int64_t;
 
 /// CLOCK_MONOTONIC now, in nanoseconds.
@@ -32,6 +33,8 @@ void sleepUntilNanoseconds(Nanoseconds deadline);
 class DeadlineSchedule
 {
 public:
+  /// Deadlines from `start` (tick 0) at `rate` ticks per second (Hz, above 0), counted into
+  /// `statistics`, which must outlive the schedule.
   DeadlineSchedule(Nanoseconds start, double rate, LoopStatisticsRecorder& statistics);
 
   /// The deadline the loop should sleep to next.
@@ -41,6 +44,7 @@ public:
   std::uint64_t wokeAt(Nanoseconds now);
   /// The tick's work ended at `now`.
   void workDoneAt(Nanoseconds now);
+  /// The nominal period: 1e9 / rate rounded to whole nanoseconds.
   Nanoseconds period() const { return m_period; }
 
 private:
@@ -56,6 +60,8 @@ private:
 class DeadlineClock
 {
 public:
+  /// A clock whose first deadline is `start` (CLOCK_MONOTONIC) at `rate` ticks per second (Hz),
+  /// counted into `statistics`, which must outlive the clock.
   DeadlineClock(Nanoseconds start, double rate, LoopStatisticsRecorder& statistics)
     : m_schedule(start, rate, statistics)
   {}
@@ -66,7 +72,9 @@ public:
     sleepUntilNanoseconds(m_schedule.nextDeadline());
     return m_schedule.wokeAt(monotonicNanoseconds());
   }
+  /// The tick's work ended now: counts the time since the wake-up as its work.
   void workDone() { m_schedule.workDoneAt(monotonicNanoseconds()); }
+  /// The nominal period in nanoseconds.
   Nanoseconds period() const { return m_schedule.period(); }
 
 private:
@@ -82,15 +90,21 @@ std::string describeScheduling(std::thread& thread);
 /// What the floor loop does: the servo's rate, duration and scheduling request.
 struct DeadlineFloorSettings
 {
+  /// Ticks per second (Hz): the servo's rate.
   double rate = 4000.0;
   /// Seconds of deadlines; the loop ends at the first deadline past it, as the servo does.
   double duration = 1.0;
+  /// Whether to ask for SCHED_FIFO for the loop's thread; a refusal is no error, and shows in the
+  /// report's `scheduling`.
   bool realtimeScheduling = true;
+  /// SCHED_FIFO priority asked for when `realtimeScheduling`.
   int priority = 80;
 };
 
+/// What the floor loop measured, to read the servo's figures against.
 struct DeadlineFloorReport
 {
+  /// The loop's period, deadline and wake-up statistics at its end.
   LoopStatistics statistics;
   /// What the floor thread ran with (describeScheduling): SCHED_FIFO when asked for and
   /// permitted, else the normal policy, as the servo thread then gets.

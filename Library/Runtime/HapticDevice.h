@@ -15,6 +15,8 @@
 namespace proxima
 {
 
+/// What a device reports for one tick: the finger's position, whether the reading holds, and
+/// its buttons and orientation.
 struct DeviceSample
 {
   /// Finger (end-effector) position in metres, world frame.
@@ -27,19 +29,23 @@ struct DeviceSample
   bool connected = true;
   /// Button states, bit i for button i.
   std::uint32_t buttons = 0;
-  /// Orientation as a unit quaternion (w, x, y, z), where the device has one.
+  /// True when the device reports an orientation (`orientation` holds it).
   bool hasOrientation = false;
+  /// Orientation as a unit quaternion (w, x, y, z); meaningful only when `hasOrientation`.
   std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};
 };
 
 /// What a device can reach and push. An empty workspace means unbounded.
 struct DeviceLimits
 {
+  /// The box the finger can reach, metres, world frame.
   Aabb workspace;
   /// Largest force magnitude in newtons the device can render.
   double maxForce = std::numeric_limits<double>::infinity();
 };
 
+/// A haptic device as the servo loop sees it: read the finger, write the force, once per tick.
+/// Implementations report errors in the samples and do not throw.
 class HapticDevice
 {
 public:

@@ -24,6 +24,7 @@
 namespace proxima
 {
 
+/// What a HapticSession runs with: the proxy's parameters, the servo's and the servo rate.
 struct HapticSessionSettings
 {
   /// The proxy: radius (metres), skin, iteration cap and work budget (ProxyParameters.h). Its
@@ -35,6 +36,8 @@ struct HapticSessionSettings
   double rate = 1000.0;
 };
 
+/// One scene, its proxy solver and the servo's force stage, stepped by the caller on a virtual
+/// clock. For one thread; not real-time safe (placing the proxy allocates).
 class HapticSession
 {
 public:
@@ -55,6 +58,7 @@ public:
   /// them; they are not reset when the proxy is placed again (a second `run` continues where the
   /// bodies are), and placing the proxy checks the objects where the scene placed them.
   void setDynamics(std::shared_ptr<TickDynamics> dynamics);
+  /// The bodies set by setDynamics(), or null when the scene has none.
   const TickDynamics* dynamics() const { return m_dynamics.get(); }
   /// One tick with the finger at `finger`: the proxy's update toward it and the force on the
   /// device, kp (proxy - finger) clamped to the servo's limit. The first tick places the proxy.
@@ -63,10 +67,14 @@ public:
   /// sample: one state per tick, as `proxima run` writes them to its trace.
   std::vector<HapticState> run(const FingerPath& path);
 
+  /// Where the proxy is now (metres, world frame): after the last tick or placement.
   const Vec3& proxy() const { return m_solver->proxy(); }
   /// Where the proxy was last placed, and whether it had to move out of an object.
   const ProxyStartPlacement& placement() const { return m_placement; }
+  /// The settings in use: those given, with the proxy's stiffness and time step set from the
+  /// servo's kp and the rate.
   const HapticSessionSettings& settings() const { return m_settings; }
+  /// The scene the session shares.
   const CollisionScene& scene() const { return *m_scene; }
 
 private:

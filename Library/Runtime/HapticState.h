@@ -16,6 +16,7 @@
 namespace proxima
 {
 
+/// What a haptic tick starts from: its number, its time and the device's sample.
 struct TickInput
 {
   /// Servo tick number: tick k of a run at rate f runs at startTime + k / f.
@@ -34,35 +35,46 @@ struct ContactSnapshot
   Vec3 point;
   /// The constraint plane's normal, into free space.
   Vec3 normal;
+  /// Index of the touched object in the scene.
   std::uint32_t object = 0;
+  /// Index, in that object's mesh, of the triangle that gave the plane.
   std::uint32_t triangle = 0;
-  /// Static and dynamic friction coefficients here (0 without friction): the cone half-angles are
-  /// atan(staticFriction) and atan(dynamicFriction).
+  /// Static friction coefficient here (0 without friction): the static cone's half-angle is
+  /// atan(staticFriction).
   double staticFriction = 0.0;
+  /// Dynamic friction coefficient here (0 without friction): the dynamic cone's half-angle is
+  /// atan(dynamicFriction).
   double dynamicFriction = 0.0;
   /// How far the spring presses into this plane (m; the goal solver's multiplier): the contacts
   /// share the force on the finger in proportion to it, and a moving body feels its share.
   double depth = 0.0;
 };
 
+/// What one haptic tick did: the proxy step's result, the force step's, and the conditions the
+/// tick met. One trace row.
 struct HapticState
 {
-  /// Servo tick that produced this state, its time on the runtime's clock (seconds), and the
-  /// finger the device reported then.
+  /// Servo tick that produced this state.
   std::uint64_t tick = 0;
+  /// The tick's time on the runtime's clock (seconds).
   double time = 0.0;
+  /// The finger the device reported for the tick (metres, world frame).
   Vec3 finger;
 
   // The proxy step (HapticStep.h: stepProxy).
+  /// Proxy centre after the tick's update (metres, world frame).
   Vec3 proxy;
+  /// Radius of the proxy sphere (m), the solver's.
   double proxyRadius = 0.0;
-  /// Active constraint planes (at most 3), and the touched object: the object of the first
-  /// active contact, -1 when free.
+  /// Number of active constraint planes, 0 to 3: the first entries of `contacts`.
   int numContacts = 0;
+  /// The active contacts; only the first `numContacts` are meaningful.
   ContactSnapshot contacts[3];
+  /// The touched object: the object of the first active contact, -1 when free.
   int contactObject = -1;
-  /// Move/update iterations of the proxy update, and triangles its queries tested.
+  /// Move/update iterations of the proxy update.
   int iterations = 0;
+  /// Triangles the proxy update's queries tested.
   std::uint32_t trianglesTested = 0;
   /// The factor on the servo's stiffness from stiffness maps at the contacts (1 elsewhere).
   double stiffnessScale = 1.0;

@@ -17,11 +17,14 @@
 namespace proxima
 {
 
+/// Which ticks a lockstep run plays, on its virtual clock.
 struct LockstepSettings
 {
   /// Servo rate in Hz: tick k runs at startTime + k / rate.
   double rate = 1000.0;
+  /// Time of tick 0 in seconds on the virtual clock (a path's first sample for lockstepCovering).
   double startTime = 0.0;
+  /// Number of ticks to run, 0, 1, ... numTicks - 1.
   std::uint64_t numTicks = 0;
 };
 

@@ -15,33 +15,44 @@ namespace proxima
 /// A copy of a loop's statistics at one moment.
 struct LoopStatistics
 {
-  /// Histogram bin width in nanoseconds, and the number of bins; the last bin holds everything
-  /// longer.
+  /// Histogram bin width in nanoseconds (1 us), for periods and wake-up latencies alike.
   static constexpr std::int64_t kBinNanoseconds = 1000;
+  /// Number of period bins (2048 us in all); the last bin holds everything longer.
   static constexpr int kBins = 2048;
   /// Wake-up latency bins (1 us each): 8 ms, because a shared virtual machine's p99.9 wake-up
   /// is a few milliseconds late; the last bin holds everything later.
   static constexpr int kWakeBins = 8192;
 
+  /// The loop's nominal rate in ticks per second (Hz), as given to reset().
   double rate = 0.0;
+  /// Periods recorded: wake-ups after the first (skipped deadlines count none).
   std::uint64_t ticks = 0;
   /// Deadlines missed: ticks that woke more than half a period after their deadline, plus the
   /// deadlines a late loop skipped (it then goes on from the next deadline in the future rather
   /// than bunching ticks).
   std::uint64_t missedDeadlines = 0;
+  /// Shortest period between consecutive wake-ups, in nanoseconds (0 before the first).
   std::int64_t minPeriodNanoseconds = 0;
+  /// Longest period between consecutive wake-ups, in nanoseconds (0 before the first).
   std::int64_t maxPeriodNanoseconds = 0;
   /// Longest time a tick's work took (from wake-up to done), in nanoseconds, and the ticks whose
   /// work took longer than one nominal period (over budget).
   std::int64_t maxWorkNanoseconds = 0;
+  /// Ticks whose work took longer than one nominal period.
   std::uint64_t overBudgetTicks = 0;
+  /// Periods per bin: bin i counts periods in [i, i + 1) times kBinNanoseconds; the last bin
+  /// also counts every longer one.
   std::array<std::uint64_t, kBins> periodHistogram{};
   /// Every wake-up from a deadline sleep (one more than `ticks`, which counts periods), those
   /// that came more than one period after their deadline, the latest one, and the histogram of
   /// wake-up latency (time from the deadline to the wake-up).
   std::uint64_t wakeUps = 0;
+  /// Wake-ups that came more than one period after their deadline.
   std::uint64_t lateWakeUps = 0;
+  /// The latest wake-up's latency after its deadline, in nanoseconds.
   std::int64_t maxWakeLatencyNanoseconds = 0;
+  /// Wake-ups per bin: bin i counts latencies in [i, i + 1) times kBinNanoseconds; the last bin
+  /// also counts every later one.
   std::array<std::uint64_t, kWakeBins> wakeLatencyHistogram{};
 
   /// Quantile q in [0, 1] of the tick period in nanoseconds, at the bin's upper edge.
@@ -57,6 +68,8 @@ struct LoopStatistics
 class LoopStatisticsRecorder
 {
 public:
+  /// Clears every count for a loop at `rate` ticks per second (Hz). Call before the loop starts,
+  /// not while it runs.
   void reset(double rate);
   /// A tick started `periodNanoseconds` after the previous one; `missed`: it started more than
   /// half a period after its deadline.
@@ -67,6 +80,8 @@ public:
   void recordMissed(std::uint64_t count);
   /// The loop woke `latencyNanoseconds` after its deadline; `late`: more than one period after.
   void recordWakeUp(std::int64_t latencyNanoseconds, bool late);
+  /// A copy of the counts so far; safe from any thread while the loop runs (each field is read
+  /// on its own, so fields may be a tick apart).
   LoopStatistics snapshot() const;
 
 private:

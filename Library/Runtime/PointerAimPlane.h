@@ -19,11 +19,15 @@
 namespace proxima
 {
 
+/// Turns a cursor's ray into a finger position, on a plane through the proxy (or the hover point)
+/// facing the camera and `depth` behind it. Keeps the depth and the last plane's point; for one
+/// thread (the window's).
 class PointerAimPlane
 {
 public:
   /// How far behind the plane the finger goes, in metres (negative is taken as 0).
   void setDepth(double depth);
+  /// How far behind the plane the finger goes, in metres (0 or more).
   double depth() const { return m_depth; }
 
   /// The finger's aim for a cursor whose ray starts at `rayOrigin` (the eye, or the near plane's

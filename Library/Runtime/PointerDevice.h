@@ -18,6 +18,7 @@
 namespace proxima
 {
 
+/// Where a PointerDevice's finger starts and how fast it may move.
 struct PointerDeviceSettings
 {
   /// Where the finger is before the first aim (the world's workspace centre).
@@ -28,9 +29,12 @@ struct PointerDeviceSettings
   double maxSpeed = 0.5;
 };
 
+/// A finger aimed by a mouse or other pointer from one thread and read by the servo thread, moving
+/// toward the aim no faster than `maxSpeed`. Renders no force.
 class PointerDevice final : public HapticDevice
 {
 public:
+  /// A finger at `settings.start`, aimed there until the first aimAt.
   explicit PointerDevice(const PointerDeviceSettings& settings);
 
   /// Any one thread (the window's): where the finger should go, and the buttons held.
@@ -41,11 +45,13 @@ public:
   /// The servo thread: the finger moved toward the aim by at most maxSpeed times the time since
   /// the last read (nothing on the first read, or if the clock went back).
   DeviceSample read(double time) override;
+  /// Keeps `force` for lastForce(); the pointer has no motors to render it.
   void writeForce(const Vec3& force, double time) override;
   const char* name() const override { return "mouse"; }
 
   /// The last force written, for display (any thread).
   Vec3 lastForce() const { return m_lastForce.read(); }
+  /// The finger's top speed in m/s, from the settings.
   double maxSpeed() const { return m_maxSpeed; }
 
 private:

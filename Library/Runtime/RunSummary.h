@@ -10,30 +10,47 @@
 namespace proxima
 {
 
+/// Counts and quantiles of a run's ticks, fed one HapticState at a time. For one thread: even the
+/// const quantile queries sort their samples in place.
 class RunSummary
 {
 public:
+  /// Counts one tick's state; keeps its solve time (and dynamics time, when above 0).
   void add(const HapticState& record);
 
+  /// Ticks added.
   std::uint64_t ticks() const { return m_ticks; }
+  /// Ticks with at least one active contact.
   std::uint64_t contactTicks() const { return m_contactTicks; }
+  /// Move/update iterations of all ticks added.
   std::uint64_t totalIterations() const { return m_totalIterations; }
+  /// The most iterations one tick took.
   int maxIterations() const { return m_maxIterations; }
+  /// Ticks that hit the solver's iteration cap (TickCondition::hitIterationCap).
   std::uint64_t iterationCapTicks() const { return m_capTicks; }
+  /// Ticks whose sample held no usable finger (TickCondition::fingerRefused).
   std::uint64_t refusedTicks() const { return m_refusedTicks; }
+  /// Ticks with more primitives in reach than the solver's buffers hold
+  /// (TickCondition::contactOverflow).
   std::uint64_t overflowTicks() const { return m_overflowTicks; }
+  /// Ticks whose force was clamped to the limit (TickCondition::forceClamped).
   std::uint64_t clampedTicks() const { return m_clampedTicks; }
-  /// Ticks whose force was fading (proxy stall, lost device, or back in after either), and ticks
-  /// with the device lost.
+  /// Ticks whose force was fading (proxy stall, lost device, or back in after either).
   std::uint64_t fadingTicks() const { return m_fadingTicks; }
+  /// Ticks the device reported itself disconnected (TickCondition::deviceLost).
   std::uint64_t deviceLostTicks() const { return m_deviceLostTicks; }
+  /// Ticks static friction held the proxy where it began (TickCondition::stuck).
   std::uint64_t stuckTicks() const { return m_stuckTicks; }
+  /// Ticks dynamic or viscous friction shortened the proxy's slide
+  /// (TickCondition::frictionLimited).
   std::uint64_t frictionLimitedTicks() const { return m_frictionLimitedTicks; }
   /// Ticks whose proxy began at a start moved out of a closed object (HapticState).
   std::uint64_t startedOutsideTicks() const { return m_startedOutsideTicks; }
+  /// The largest force magnitude commanded (N).
   double maxForce() const { return m_maxForce; }
   /// Quantile q in [0, 1] of the per-tick solve time in nanoseconds (nearest rank).
   double solveNanosecondsQuantile(double q) const;
+  /// Triangles tested per tick, on average (0 with no ticks).
   double meanTrianglesTested() const;
   /// Ticks a moving body pushed the proxy (TickCondition::pushedByObject).
   std::uint64_t pushedTicks() const { return m_pushedTicks; }
@@ -46,6 +63,7 @@ public:
   /// The distance in metres between where a budget-limited tick ended and where the same tick
   /// ends without a budget (measured by the caller, e.g. BudgetResidualProbe); one per call.
   void addBudgetResidual(double metres);
+  /// How many residuals were added.
   std::uint64_t budgetResiduals() const { return m_budgetResiduals.size(); }
   /// Quantile q in [0, 1] of those residuals (nearest rank), 0 with none.
   double budgetResidualQuantile(double q) const;
@@ -53,6 +71,7 @@ public:
   /// until the first tick that is not limited. recoveries() counts the runs that did recover;
   /// a run still going when the records end is unrecoveredLimitedTicks() long.
   std::uint64_t recoveries() const { return m_recoveryTicks.size(); }
+  /// Length of the run of budget-limited ticks still going at the last record (0: none).
   std::uint64_t unrecoveredLimitedTicks() const { return m_limitedRun; }
   /// Quantile q in [0, 1] of the recovered runs' lengths in ticks (nearest rank), 0 with none.
   double recoveryTicksQuantile(double q) const;

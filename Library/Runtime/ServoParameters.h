@@ -6,6 +6,7 @@
 namespace proxima
 {
 
+/// The spring, force clamp and safety rules of the servo's force stage.
 struct ServoParameters
 {
   /// Spring stiffness kp in N/m: force on the finger = kp (proxy - finger).
@@ -21,6 +22,7 @@ struct ServoParameters
   /// the force may change by at most this many newtons per second, for `sceneChangeWindow`
   /// seconds, so that a new model or a moved proxy does not kick the hand.
   double forceRateLimit = 200.0;
+  /// Seconds after a scene change or a start outside during which `forceRateLimit` applies.
   double sceneChangeWindow = 0.1;
 };
 

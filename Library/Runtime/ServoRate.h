@@ -10,7 +10,9 @@
 namespace proxima
 {
 
+/// The slowest real-time servo loop (Hz): the paper's fixed rate of at least 1 kHz.
 inline constexpr double kMinServoRate = 1000.0;
+/// The fastest real-time servo loop (Hz): the most a deadline loop on a desktop kernel keeps.
 inline constexpr double kMaxServoRate = 10000.0;
 
 /// True when the real-time servo loop can run at `rate` Hz (NaN is not a rate).

@@ -12,6 +12,8 @@
 namespace proxima
 {
 
+/// A lock-free snapshot of a trivially copyable `T`: one writer thread publishes whole values,
+/// any thread reads the last complete one.
 template <typename T>
 class SnapshotChannel
 {
@@ -20,6 +22,7 @@ class SnapshotChannel
     (sizeof(T) + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t);
 
 public:
+  /// Holds `T{}`, which counts as the first write.
   SnapshotChannel() { write(T{}); }
 
   /// Publishes `value`. One writer thread only.

@@ -14,6 +14,8 @@
 namespace proxima
 {
 
+/// A preallocated single-producer, single-consumer ring of trivially copyable `T`: the producer
+/// never waits nor allocates, and drops what does not fit.
 template <typename T>
 class StateStream
 {

@@ -22,6 +22,8 @@ inline constexpr int kDefaultTickBudgetIterations = 16;
 /// 250 us per period and runs on its own thread (paper section 8).
 inline constexpr double kTickSafetyCapSeconds = 200e-6;
 
+/// The work budget of one proxy tick: wall time, iterations or both, whichever ends the tick
+/// first, and the threaded runtime's safety cap.
 struct TickWorkBudget
 {
   /// Wall time in seconds (0: no time budget). Not deterministic: a lockstep run with a time
@@ -33,6 +35,7 @@ struct TickWorkBudget
   /// deterministic budget; lockstep ignores it (0: none).
   double safetyCapSeconds = 0.0;
 
+  /// True when neither a time nor an iteration budget is set (the safety cap aside).
   bool none() const { return !(seconds > 0.0) && iterations <= 0; }
 
   /// The real-time default: kDefaultTickBudgetIterations, with kTickSafetyCapSeconds in real time.
@@ -40,6 +43,7 @@ struct TickWorkBudget
   {
     return TickWorkBudget{0.0, kDefaultTickBudgetIterations, kTickSafetyCapSeconds};
   }
+  /// True when every field equals realtimeDefault()'s (text() then spells it "default").
   bool isRealtimeDefault() const
   {
     const TickWorkBudget byDefault = realtimeDefault();
@@ -72,6 +76,7 @@ struct TickWorkBudget
 /// The largest --tick-budget terms taken: a proxy tick of more than a second, or of more than a
 /// million iterations, is a typo, not a budget.
 inline constexpr double kMaxTickBudgetMicroseconds = 1e6;
+/// The largest --tick-budget iteration count taken (see kMaxTickBudgetMicroseconds).
 inline constexpr long kMaxTickBudgetIterations = 1000000;
 
 /// Parses a --tick-budget value: `none`, `default` (TickWorkBudget::realtimeDefault), or one or

@@ -19,15 +19,20 @@ namespace proxima
 /// threaded runtime can hand over without locks. The first kCapacity bodies of a scene.
 struct BodyPoses
 {
+  /// Most bodies a snapshot holds; a scene's bodies past it are left out.
   static constexpr int kCapacity = 16;
   /// The tick whose dynamics step left the bodies here.
   std::uint64_t tick = 0;
+  /// Number of bodies held, 0 to kCapacity: the first entries of `objects` and `poses`.
   int count = 0;
+  /// Scene object index of each body.
   std::uint32_t objects[kCapacity] = {};
   /// Each object's pose: where a point of the object as placed is now.
   RigidTransform poses[kCapacity];
 };
 
+/// The dynamics step of a haptic tick: moves a scene's bodies with the force the device renders.
+/// Implemented by the Dynamics layer; called by the runners on the thread that owns the solver.
 class TickDynamics
 {
 public:

@@ -12,16 +12,21 @@
 namespace proxima
 {
 
+/// Replays a proxy tick from a remembered solver state, to time its work without the platform's
+/// stalls or to find where it settles without a budget. For one thread, outside timed regions:
+/// each replay copies the whole solver.
 class TickReplay
 {
 public:
   /// Repeats per tick: five, as the benchmarks report.
   static constexpr int kDefaultRepeats = 5;
 
+  /// A replayer that times `repeats` updates per tick (below 1 is taken as 1).
   explicit TickReplay(int repeats = kDefaultRepeats)
     : m_repeats(repeats > 0 ? repeats : 1)
   {}
 
+  /// Updates timed per tick, at least 1.
   int repeats() const { return m_repeats; }
 
   /// Remembers `solver`'s state before its next update (a copy of it: ProxySolver's copy is a

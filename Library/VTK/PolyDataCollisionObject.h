@@ -17,6 +17,8 @@ class vtkPolyData;
 namespace proxima::vtk
 {
 
+/// How prepareCollisionObject and buildCollisionObject make an object of poly data: its scale,
+/// pose, shading, material and tree options.
 struct PolyDataObjectSettings
 {
   /// Units of the poly data to metres, applied before the pose.
@@ -27,17 +29,28 @@ struct PolyDataObjectSettings
   /// Force shading: uses the poly data's point normals, or makes them with `featureAngleDegrees`
   /// when it has none.
   bool shading = false;
+  /// The feature angle (degrees, 0 to 180) of the normals made for shading: edges sharper than
+  /// it stay sharp (IO/MeshPreparation/PointNormals.h).
   double featureAngleDegrees = 30.0;
+  /// The object's material; its `shading` is replaced by `shading` above.
   SurfaceMaterial material;
+  /// The sphere tree's options, for buildCollisionObject (prepareCollisionObject builds none).
   SphereTreeOptions tree;
 };
 
+/// What making an object found and how long it took, for a caller that reports it.
 struct PolyDataObjectReport
 {
+  /// Triangles of the object's mesh, after the poly data's polygons and strips were
+  /// triangulated.
   std::uint32_t numTriangles = 0;
+  /// Of those, the triangles of zero area (collinear or coincident corners).
   std::uint32_t numDegenerateTriangles = 0;
+  /// True when the point normals were made here (shading on, and the poly data had none).
   bool computedNormals = false;
+  /// Wall time of the checks, conversion, normals and pose (ms).
   double conversionMilliseconds = 0.0;
+  /// Wall time of the sphere tree's build (ms); set by buildCollisionObject only.
   double treeBuildMilliseconds = 0.0;
 };
 

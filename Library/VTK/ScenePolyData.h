@@ -14,6 +14,7 @@ namespace proxima::vtk
 
 /// Fills `output` with the triangles of every object of `scene`.
 void scenePolyData(const CollisionScene& scene, vtkPolyData* output);
+/// The same, into a new vtkPolyData.
 vtkSmartPointer<vtkPolyData> scenePolyData(const CollisionScene& scene);
 
 } // namespace proxima::vtk

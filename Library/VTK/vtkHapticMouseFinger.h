@@ -34,10 +34,16 @@ class PointerDevice;
 struct SphereTreeScratch;
 }
 
+/// The mouse as a haptic finger, for a person without a device: aims a PointerDevice at the
+/// cursor on the plane through the proxy that faces the camera, at a depth behind it that the
+/// wheel steps, a held space bar increases and Backspace sets to 0. Use it on the thread that
+/// renders.
 class vtkHapticMouseFinger : public vtkObject
 {
 public:
+  /// A new mouse finger, with no device, renderers or interactor yet.
   static vtkHapticMouseFinger* New();
+  /// Prints the properties and the depth.
   vtkTypeMacro(vtkHapticMouseFinger, vtkObject) void PrintSelf(ostream& os,
                                                                vtkIndent indent) override;
 
@@ -51,16 +57,22 @@ public:
   void SetInteractor(vtkRenderWindowInteractor* interactor);
 
   ///@{
-  /// Depth per wheel notch in metres (default 0.5 mm), and the speed of a held space bar in m/s
-  /// (default 5 mm/s). proxima view sets them from the proxy radius.
+  /// Depth per wheel notch in metres (default 0.5 mm); proxima view sets it to half the proxy
+  /// radius.
   vtkSetClampMacro(DepthStep, double, 0.0, VTK_DOUBLE_MAX);
+  /// Depth per wheel notch (m).
   vtkGetMacro(DepthStep, double);
+  /// Speed at which a held space bar presses the finger in, in m/s (default 5 mm/s); proxima
+  /// view sets it to five proxy radii per second.
   vtkSetClampMacro(PressSpeed, double, 0.0, VTK_DOUBLE_MAX);
+  /// Speed at which a held space bar presses the finger in (m/s).
   vtkGetMacro(PressSpeed, double);
   ///@}
 
   /// How far the finger is pressed behind the plane, in metres.
   double GetDepth() const { return m_aimPlane.depth(); }
+  /// Sets the depth in metres (negative or not finite is taken as 0); the finger moves at the
+  /// next aim.
   void SetDepth(double depth) { m_aimPlane.setDepth(depth); }
   /// Steps the depth by `notches` wheel notches (negative pulls out).
   void StepDepth(int notches);
@@ -79,8 +91,8 @@ protected:
   vtkHapticMouseFinger();
   ~vtkHapticMouseFinger() override;
 
-  double DepthStep = 0.0005;
-  double PressSpeed = 0.005;
+  double DepthStep = 0.0005; ///< Depth per wheel notch (m): SetDepthStep.
+  double PressSpeed = 0.005; ///< Speed of a held space bar's press (m/s): SetPressSpeed.
 
 private:
   vtkHapticMouseFinger(const vtkHapticMouseFinger&) = delete;

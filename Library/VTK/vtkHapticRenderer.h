@@ -30,15 +30,21 @@ class SimulatedDevice;
 class ThreadedRuntime;
 } // namespace proxima
 
+/// The bridge between a VTK pipeline and the haptic threads: owns the threaded runtime, runs its
+/// servo and proxy loops, publishes the scene to them and hands the latest state back. Call
+/// everything from one thread (the render thread).
 class vtkHapticRenderer : public vtkObject
 {
 public:
+  /// A new renderer, with no scene or device and no runtime until Start.
   static vtkHapticRenderer* New();
+  /// Prints the properties, whether the loops run, and the published and live scene versions.
   vtkTypeMacro(vtkHapticRenderer, vtkObject) void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// The scene to render (default none). UpdateScene updates it and publishes its snapshots.
   void SetScene(vtkHapticScene* scene);
+  /// The scene set with SetScene, or null (no new reference).
   vtkGetObjectMacro(Scene, vtkHapticScene);
   ///@}
 
@@ -61,22 +67,31 @@ public:
   /// the renderer owns. Set one before Start, or between Stop and the next Start (a device
   /// change: the next Start builds a new runtime on it).
   void SetDevice(proxima::HapticDevice* device);
+  /// A finger path, played by a simulated device the renderer owns, in place of a device. An
+  /// error, and no change, while the loops run or for an empty path.
   void SetFingerPath(const proxima::FingerPath& path);
   /// The same, a sample at a time (time in seconds, never going back; position in metres): the
   /// way in from VTK's Python, where FingerPath is not wrapped.
   void AddFingerSample(double time, double x, double y, double z);
 
   ///@{
-  /// Proxy radius in metres (default 0.001), spring stiffness kp in N/m (default 1000), force
-  /// clamp in N (default 10), solver iterations per tick (default 256). Read at Start and at
-  /// each published scene.
+  /// Proxy radius in metres (default 0.001). Read at Start and at each published scene.
   vtkSetClampMacro(ProxyRadius, double, 1e-9, VTK_DOUBLE_MAX);
+  /// Proxy radius (m).
   vtkGetMacro(ProxyRadius, double);
+  /// Spring stiffness kp in N/m (default 1000): the servo's, read at Start, and the one the proxy
+  /// update's viscous friction uses, read at each published scene.
   vtkSetClampMacro(Stiffness, double, 1e-9, VTK_DOUBLE_MAX);
+  /// Spring stiffness kp (N/m).
   vtkGetMacro(Stiffness, double);
+  /// Force clamp in N (default 10). Read at Start.
   vtkSetClampMacro(MaxForce, double, 1e-9, VTK_DOUBLE_MAX);
+  /// Force clamp (N).
   vtkGetMacro(MaxForce, double);
+  /// Move/update iterations allowed in one proxy update (default 256, 1 to 1000). Read at Start
+  /// and at each published scene.
   vtkSetClampMacro(MaxIterations, int, 1, 1000);
+  /// Move/update iterations allowed in one proxy update.
   vtkGetMacro(MaxIterations, int);
   ///@}
 
@@ -84,6 +99,7 @@ public:
   /// Contact skin in metres (ProxyParameters::skin; default 0: from the scene, see
   /// Documentation/Epsilons.md).
   vtkSetClampMacro(Skin, double, 0.0, VTK_DOUBLE_MAX);
+  /// Contact skin (m; 0: from the scene).
   vtkGetMacro(Skin, double);
   ///@}
 
@@ -95,10 +111,16 @@ public:
   /// period). All 0 means no budget. A budget-limited tick leaves the proxy feasible where it
   /// stopped; the next tick goes on from there. Read at Start.
   vtkSetClampMacro(TickBudgetSeconds, double, 0.0, 1.0);
+  /// The budget's wall time per tick (s; 0: none).
   vtkGetMacro(TickBudgetSeconds, double);
+  /// The budget's move/update iterations per tick (0: none). Read at Start.
   vtkSetClampMacro(TickBudgetIterations, int, 0, 1000000);
+  /// The budget's move/update iterations per tick (0: none).
   vtkGetMacro(TickBudgetIterations, int);
+  /// The wall-time safety cap per tick (s; 0: none), used when TickBudgetSeconds is 0. Read at
+  /// Start.
   vtkSetClampMacro(TickSafetyCapSeconds, double, 0.0, 1.0);
+  /// The wall-time safety cap per tick (s; 0: none).
   vtkGetMacro(TickSafetyCapSeconds, double);
   ///@}
 
@@ -108,12 +130,14 @@ public:
   /// error, keeps the rate it had and returns false, so that the loops and the proxy's time step
   /// (derived from the rate at each published scene) never disagree.
   bool SetServoRate(double rate);
+  /// Servo rate (Hz).
   vtkGetMacro(ServoRate, double);
   ///@}
 
   ///@{
   /// Proxy-update rate in Hz (default 0: the servo's).
   vtkSetClampMacro(ProxyRate, double, 0.0, 10000.0);
+  /// Proxy-update rate (Hz; 0: the servo's).
   vtkGetMacro(ProxyRate, double);
   ///@}
 
@@ -121,13 +145,18 @@ public:
   /// Ask for real-time (SCHED_FIFO) threads (default off: a desktop viewer rarely has the
   /// privilege; Start's message says whether it was granted).
   vtkSetMacro(RealtimeScheduling, vtkTypeBool);
+  /// Whether real-time threads are asked for.
   vtkGetMacro(RealtimeScheduling, vtkTypeBool);
+  /// Asks for real-time threads. Read at Start.
   vtkBooleanMacro(RealtimeScheduling, vtkTypeBool);
+  /// \fn void vtkHapticRenderer::RealtimeSchedulingOff()
+  /// Asks for threads of normal priority. Read at Start.
   ///@}
 
   ///@{
   /// The run ends by itself after this many seconds of servo clock (default 0: at Stop).
   vtkSetClampMacro(Duration, double, 0.0, VTK_DOUBLE_MAX);
+  /// The run's length on the servo clock (s; 0: until Stop).
   vtkGetMacro(Duration, double);
   ///@}
 
@@ -136,6 +165,7 @@ public:
   /// DrainStates hands over those published since its last call, for a live scorer that must
   /// see every tick rather than the latest at each frame. Default 0: no stream.
   vtkSetClampMacro(StateStreamCapacity, vtkIdType, 0, 10000000);
+  /// States the stream holds for DrainStates (0: no stream).
   vtkGetMacro(StateStreamCapacity, vtkIdType);
   ///@}
 
@@ -147,10 +177,15 @@ public:
   /// scene or device, or the threads did not start; GetStartMessage says why (and whether
   /// real-time scheduling was granted).
   bool Start();
+  /// Stops both loops and waits for them; the runtime stays (its state, statistics and streamed
+  /// states can still be read) until the next Start. Nothing when not running.
   void Stop();
+  /// True while the loops run: after a successful Start, until Stop or the end of Duration.
   bool IsRunning() const;
   /// The run reached Duration.
   bool IsFinished() const;
+  /// Why the last Start failed, or the runtime's message on a successful one (whether real-time
+  /// scheduling was granted).
   const std::string& GetStartMessage() const { return m_startMessage; }
 
   /// Updates the vtkHapticScene and, if it made a new snapshot, publishes it (or keeps it for
@@ -164,19 +199,25 @@ public:
   /// and the finger's centres (metres), the force on the device (N), the active contacts, and the
   /// servo tick that produced it. Each call reads the latest state anew.
   void GetProxyPosition(double position[3]) const;
+  /// The finger's centre in the latest state (m).
   void GetFingerPosition(double position[3]) const;
+  /// The force on the device in the latest state (N).
   void GetForce(double force[3]) const;
+  /// The active contacts in the latest state (0 to 3).
   int GetNumberOfContacts() const;
+  /// The servo tick that produced the latest state.
   vtkTypeUInt64 GetStateTick() const;
   ///@}
   /// The runtime's version of the scene the proxy loop uses (0 before the first is live).
   vtkTypeUInt64 GetLiveSceneVersion() const;
+  /// The servo loop's timing statistics (a default LoopStatistics before Start).
   proxima::LoopStatistics GetServoStatistics() const;
   /// Appends the ticks' states streamed since the last call (SetStateStreamCapacity) to `out`,
   /// in tick order; one reader thread. Returns how many.
   std::size_t DrainStates(std::vector<proxima::HapticState>& out);
   /// Streamed states dropped because DrainStates was called too seldom.
   vtkTypeUInt64 GetDroppedStates() const;
+  /// The proxy loop's timing statistics (a default LoopStatistics before Start).
   proxima::LoopStatistics GetProxyStatistics() const;
   /// The runtime itself (null before Start), for what this class does not forward.
   proxima::ThreadedRuntime* GetRuntime() { return m_runtime.get(); }
@@ -185,20 +226,22 @@ protected:
   vtkHapticRenderer();
   ~vtkHapticRenderer() override;
 
-  vtkHapticScene* Scene = nullptr;
-  vtkIdType StateStreamCapacity = 0;
-  double ProxyRadius = 0.001;
-  double Stiffness = 1000.0;
-  double MaxForce = 10.0;
-  int MaxIterations = 256;
-  double Skin = 0.0;
-  double TickBudgetSeconds = 0.0;
+  vtkHapticScene* Scene = nullptr;   ///< The scene (a reference held): SetScene.
+  vtkIdType StateStreamCapacity = 0; ///< States streamed: SetStateStreamCapacity.
+  double ProxyRadius = 0.001;        ///< Proxy radius (m): SetProxyRadius.
+  double Stiffness = 1000.0;         ///< Spring stiffness kp (N/m): SetStiffness.
+  double MaxForce = 10.0;            ///< Force clamp (N): SetMaxForce.
+  int MaxIterations = 256;           ///< Iterations per proxy update: SetMaxIterations.
+  double Skin = 0.0;                 ///< Contact skin (m; 0: from the scene): SetSkin.
+  double TickBudgetSeconds = 0.0;    ///< Tick budget's wall time (s): SetTickBudgetSeconds.
+  /// Tick budget's move/update iterations: SetTickBudgetIterations.
   int TickBudgetIterations = proxima::kDefaultTickBudgetIterations;
+  /// Wall-time safety cap per tick (s): SetTickSafetyCapSeconds.
   double TickSafetyCapSeconds = proxima::kTickSafetyCapSeconds;
-  double ServoRate = 4000.0;
-  double ProxyRate = 0.0;
-  vtkTypeBool RealtimeScheduling = 0;
-  double Duration = 0.0;
+  double ServoRate = 4000.0;          ///< Servo rate (Hz): SetServoRate.
+  double ProxyRate = 0.0;             ///< Proxy-update rate (Hz; 0: the servo's): SetProxyRate.
+  vtkTypeBool RealtimeScheduling = 0; ///< Ask for real-time threads: SetRealtimeScheduling.
+  double Duration = 0.0;              ///< Run length (s; 0: until Stop): SetDuration.
 
 private:
   vtkHapticRenderer(const vtkHapticRenderer&) = delete;

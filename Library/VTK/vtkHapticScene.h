@@ -25,10 +25,15 @@
 
 class vtkLinearTransform;
 
+/// The haptic scene as a pipeline sink: each input connection is one object with its own scale,
+/// pose and material, and executing builds the kernel's CollisionScene from them, rebuilding only
+/// the objects that changed. The output is the scene's surface as the proxy feels it, for drawing.
 class vtkHapticScene : public vtkPolyDataAlgorithm
 {
 public:
+  /// A new scene, with no objects.
   static vtkHapticScene* New();
+  /// Prints the properties, the scene version and each object's settings.
   vtkTypeMacro(vtkHapticScene, vtkPolyDataAlgorithm) void PrintSelf(ostream& os,
                                                                     vtkIndent indent) override;
 
@@ -38,7 +43,9 @@ public:
   /// calling its Modified() rebuilds the object at the next Update. AddObject(vtkPolyData*) is
   /// the same, for callers (VTK's Python) that pass a data set where a connection also goes.
   int AddObjectData(vtkPolyData* polyData);
+  /// Adds an object from a data set: the same as AddObjectData.
   int AddObject(vtkPolyData* polyData);
+  /// The objects added (the input connections).
   int GetNumberOfObjects();
 
   // The per-object setters refuse (vtkErrorMacro, no change) an index that is not an object's:
@@ -47,6 +54,7 @@ public:
   ///@{
   /// Per object: units to metres (default 1).
   void SetObjectScale(int object, double scale);
+  /// An object's scale (1 for an index that is not an object's).
   double GetObjectScale(int object) const;
   ///@}
 
@@ -54,6 +62,7 @@ public:
   /// Per object: a rigid pose (rotation and translation; null for none, the default). The
   /// transform is watched: modifying it rebuilds the object at the next Update.
   void SetObjectPose(int object, vtkLinearTransform* pose);
+  /// An object's pose (null for none, or for an index that is not an object's).
   vtkLinearTransform* GetObjectPose(int object) const;
   ///@}
 
@@ -63,14 +72,20 @@ public:
   /// angle when it has none (default off).
   void SetObjectFriction(int object, double staticFriction, double dynamicFriction,
                          double viscosity);
+  /// Per object: force shading on or off (default off).
   void SetObjectShading(int object, bool shading);
   ///@}
 
   ///@{
-  /// Tree options for every object (SphereTreeOptions; defaults 2 and 4).
+  /// Tree option for every object: SphereTreeOptions::leafSizeFactor (default 2; 0 gives one
+  /// leaf sphere per triangle). Changing it rebuilds every object at the next Update.
   vtkSetClampMacro(LeafSizeFactor, double, 0.0, 1e6);
+  /// SphereTreeOptions::leafSizeFactor of every object.
   vtkGetMacro(LeafSizeFactor, double);
+  /// Tree option for every object: SphereTreeOptions::maxLeafSpheresPerNode (default 4; 1 is
+  /// the paper's tree exactly). Changing it rebuilds every object at the next Update.
   vtkSetClampMacro(MaxLeafSpheresPerNode, int, 1, 64);
+  /// SphereTreeOptions::maxLeafSpheresPerNode of every object.
   vtkGetMacro(MaxLeafSpheresPerNode, int);
   ///@}
 
@@ -78,8 +93,12 @@ public:
   /// Build each changed object's sphere tree on every hardware thread (default on; off builds
   /// it on one). The tree is the same bit for bit either way (SphereTreeOptions::numBuildThreads).
   vtkSetMacro(ParallelTreeBuild, vtkTypeBool);
+  /// Whether the trees are built on every hardware thread.
   vtkGetMacro(ParallelTreeBuild, vtkTypeBool);
+  /// Builds the trees on every hardware thread.
   vtkBooleanMacro(ParallelTreeBuild, vtkTypeBool);
+  /// \fn void vtkHapticScene::ParallelTreeBuildOff()
+  /// Builds each tree on one thread.
   ///@}
 
   ///@{
@@ -91,8 +110,12 @@ public:
   /// the old scene meanwhile. One build at a time: an Update that executes the scene while a
   /// build runs waits for it first. The output surface is made from the new meshes at once.
   vtkSetMacro(BackgroundBuild, vtkTypeBool);
+  /// Whether the trees are built on the scene's worker thread.
   vtkGetMacro(BackgroundBuild, vtkTypeBool);
+  /// Builds the trees on the scene's worker thread.
   vtkBooleanMacro(BackgroundBuild, vtkTypeBool);
+  /// \fn void vtkHapticScene::BackgroundBuildOff()
+  /// Builds the trees within Update.
   ///@}
 
   /// True while a background build runs.
@@ -105,8 +128,12 @@ public:
   /// Make the output surface (default on). Off saves a copy of every mesh per rebuild where
   /// nothing draws the scene's own output.
   vtkSetMacro(GenerateSurface, vtkTypeBool);
+  /// Whether the output surface is made.
   vtkGetMacro(GenerateSurface, vtkTypeBool);
+  /// Makes the output surface.
   vtkBooleanMacro(GenerateSurface, vtkTypeBool);
+  /// \fn void vtkHapticScene::GenerateSurfaceOff()
+  /// Makes no output surface.
   ///@}
 
   /// The last snapshot built (null before the first successful Update). Immutable: the haptic
@@ -128,14 +155,18 @@ protected:
   vtkHapticScene();
   ~vtkHapticScene() override;
 
+  /// The one input port takes any number of vtkPolyData connections, one per object.
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// Rebuilds the changed objects and makes the new snapshot (or starts its background build)
+  /// and the output surface. Fails, keeping the previous scene, for no objects or an object
+  /// that cannot be built.
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double LeafSizeFactor = 2.0;
-  int MaxLeafSpheresPerNode = 4;
-  vtkTypeBool GenerateSurface = 1;
-  vtkTypeBool ParallelTreeBuild = 1;
-  vtkTypeBool BackgroundBuild = 0;
+  double LeafSizeFactor = 2.0;       ///< The trees' leaf size factor: SetLeafSizeFactor.
+  int MaxLeafSpheresPerNode = 4;     ///< Leaf spheres per leaf node: SetMaxLeafSpheresPerNode.
+  vtkTypeBool GenerateSurface = 1;   ///< Make the output surface: SetGenerateSurface.
+  vtkTypeBool ParallelTreeBuild = 1; ///< Trees on every hardware thread: SetParallelTreeBuild.
+  vtkTypeBool BackgroundBuild = 0;   ///< Trees on the worker thread: SetBackgroundBuild.
 
 private:
   vtkHapticScene(const vtkHapticScene&) = delete;

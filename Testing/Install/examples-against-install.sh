@@ -7,6 +7,7 @@
 #   - probe_mesh on the shared screw and its probe path (an STL icosphere and the bundled
 #     press-and-stroke path without the shared data), read through the VTK readers' module, against the installed `proxima run` on the same files: the proxy and
 #     force columns must be the same numbers, and the module must be the installed one;
+#   - the API reference (api/ in the same folder) when the build made one;
 #   - kernel_only (the kernel alone), also built with nothing but pkg-config's flags;
 #   - haptic_pipeline (the VTK pipeline with the threaded runtime), which checks its own answer;
 #   - the examples' own ctest suite (the exported scripted-path harness and oracle);
@@ -35,6 +36,12 @@ for file in LICENSE NOTICE; do
     exit 1
   fi
 done
+# The API reference goes with the installation when the build made it (PROXIMA_BUILD_DOCS).
+if grep -q '^PROXIMA_BUILD_DOCS:BOOL=ON' "$build/CMakeCache.txt" &&
+  ! grep -q 'ProxySolver' "$prefix/${docdir:-share/doc/proxima}/api/classproxima_1_1ProxySolver.html"; then
+  echo "the installation has no API reference in ${docdir:-share/doc/proxima}/api" >&2
+  exit 1
+fi
 
 cmake -G Ninja -S "$source/Examples" -B "$work/examples" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" \

@@ -9,9 +9,12 @@
 namespace proxima
 {
 
+/// A file or value the user gave that cannot be used; what() is "<path>: <defect>" on one line.
 class InputError : public std::runtime_error
 {
 public:
+  /// An error about `path` (a file, or an option such as "--max-ticks"); `defect` says what is
+  /// wrong, and its line breaks and runs of white space become single spaces.
   InputError(const std::string& path, const std::string& defect)
     : std::runtime_error(path + ": " + oneLine(defect))
     , m_path(path)

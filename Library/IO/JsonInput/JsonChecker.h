@@ -37,7 +37,9 @@ std::string cutShort(std::string text, std::size_t longest);
 class JsonChecker
 {
 public:
+  /// The JSON value the checks take: ordered, as the file wrote it.
   using Json = CheckedJson;
+  /// A braced list of JSON spellings: the known keys of an object, or the names of a choice.
   using Keys = std::initializer_list<std::string_view>;
 
   /// `path` names the file in messages; relative file paths in it are resolved against its folder.
@@ -53,17 +55,22 @@ public:
   {
     return where.empty() ? std::string(key) : where + "." + std::string(key);
   }
+  /// `where` and an array index below it: "objects" and 2 give "objects[2]".
   static std::string element(const std::string& where, std::size_t index)
   {
     return where + "[" + std::to_string(index) + "]";
   }
+  /// The Levenshtein distance of `a` and `b`: the fewest single-character insertions,
+  /// deletions and substitutions that turn one into the other.
   static std::size_t editDistance(std::string_view a, std::string_view b);
 
+  /// Throws the InputError "<path>: <where>: <defect>" ("top level" for an empty `where`).
   [[noreturn]] void fail(const std::string& where, const std::string& defect) const
   {
     throw InputError(m_path, (where.empty() ? std::string("top level") : where) + ": " + defect);
   }
 
+  /// Fails unless `value` is a JSON object.
   void requireObject(const Json& value, const std::string& where) const
   {
     if (!value.is_object())
@@ -72,7 +79,9 @@ public:
     }
   }
 
-  // Unknown keys are refused, so that a misspelt optional key is not silently ignored.
+  /// Fails at the first key of `object` that is not in `known`, suggesting the nearest known key
+  /// when it is a close misspelling (edit distance below 3), else listing them. Unknown keys are
+  /// refused so that a misspelt optional key is not silently ignored.
   void checkKeys(const Json& object, const std::string& where, Keys known) const
   {
     for (auto it = object.begin(); it != object.end(); ++it)
@@ -101,12 +110,14 @@ public:
     }
   }
 
+  /// The value of `key` in `object`, or nullptr if the key is absent.
   static const Json* find(const Json& object, std::string_view key)
   {
     const auto it = object.find(key);
     return it == object.end() ? nullptr : &*it;
   }
 
+  /// The value of `key` in `object`; fails at `where` if the key is absent.
   const Json& require(const Json& object, std::string_view key, const std::string& where) const
   {
     const Json* value = find(object, key);
@@ -117,7 +128,8 @@ public:
     return *value;
   }
 
-  // A number checked against `rule` (worded for the message, "a number >= 0").
+  /// A JSON number that `accept` takes; otherwise fails with "must be <rule>, got ...", `rule`
+  /// worded for the message ("a number >= 0").
   template <typename Accept>
   double number(const Json& value, const std::string& where, const std::string& rule,
                 Accept accept) const
@@ -130,18 +142,22 @@ public:
     return value.get<double>();
   }
 
+  /// Any number; fails if `value` is not one.
   double number(const Json& value, const std::string& where) const
   {
     return number(value, where, "a number", [](double) { return true; });
   }
 
-  // A number in one of the ranges the command line shares (ParameterRanges.h).
+  /// A number in one of the ranges the command line shares (ParameterRanges.h); the message
+  /// gives the range in words.
   double ranged(const Json& value, const std::string& where, const ParameterRange& range) const
   {
     return number(value, where, "a number " + describeRange(range),
                   [&range](double v) { return range.contains(v); });
   }
 
+  /// A non-empty string naming a file: returned as written if absolute, else resolved against
+  /// the folder of the JSON file.
   std::string filePath(const Json& value, const std::string& where) const
   {
     if (!value.is_string() || value.get<std::string>().empty())
@@ -154,7 +170,7 @@ public:
                                                      : (m_folder / written).string();
   }
 
-  // One of `names` (the JSON spellings), as its index.
+  /// One of `names` (the JSON spellings), as its index in `names`; fails listing them otherwise.
   std::size_t choice(const Json& value, const std::string& where, Keys names) const
   {
     if (value.is_string())
@@ -176,6 +192,8 @@ public:
     fail(where, "must be " + list + ", got " + quoted(value));
   }
 
+  /// An array of exactly `count` numbers; `meaning` describes them in the message
+  /// ("[x, y, z] in metres").
   std::vector<double> numbers(const Json& value, const std::string& where, std::size_t count,
                               const std::string& meaning) const
   {
@@ -203,7 +221,9 @@ public:
   }
 
 protected:
+  /// The file as the caller named it, for messages.
   std::string m_path;
+  /// The file's folder, against which relative file paths resolve; empty for a bare file name.
   std::filesystem::path m_folder;
 };
 

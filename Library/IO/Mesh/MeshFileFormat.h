@@ -7,14 +7,15 @@
 namespace proxima
 {
 
+/// A mesh file format Proxima reads.
 enum class MeshFileFormat
 {
-  Stl,
-  Obj,
-  Ply,
-  Vtp,
+  Stl,  ///< .stl, binary or ASCII
+  Obj,  ///< .obj (Wavefront)
+  Ply,  ///< .ply, binary or ASCII
+  Vtp,  ///< .vtp (VTK's XML polygonal data)
   Gltf, ///< .gltf (JSON with external or embedded buffers) and .glb (binary)
-  Off
+  Off   ///< .off (Object File Format)
 };
 
 /// The format named by the extension of `path`, compared case-insensitively (CAD tools write

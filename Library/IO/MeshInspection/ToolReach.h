@@ -29,6 +29,7 @@
 namespace proxima
 {
 
+/// How findToolReach() samples the surface and what it reports.
 struct ToolReachOptions
 {
   /// The tool's radius in metres (the soup's units), above 0.
@@ -43,20 +44,29 @@ struct ToolReachOptions
   std::function<void(double)> progress;
 };
 
+/// One sample point on a triangle and whether the tool reaches it (kept only with
+/// ToolReachOptions::keepSamples).
 struct ReachSample
 {
+  /// The sampled triangle's index in the soup.
   std::uint32_t triangle = 0;
+  /// The sample: the centroid of one triangle of the k x k split.
   Vec3 point;
   /// The side tested: the unit normal the tool's centre lies along.
   Vec3 side;
+  /// The area the sample stands for: its triangle's area over k x k (square metres).
   double area = 0.0;
+  /// True if the tool's tangent ball there holds no part of the surface (on either side, when
+  /// both are tested).
   bool reachable = true;
 };
 
+/// Unreachable triangles joined through shared vertices: one place for the user to look at.
 struct UnreachableRegion
 {
   /// The region's first triangle in the file's order.
   std::uint32_t triangle = 0;
+  /// How many unreachable triangles it holds.
   std::size_t triangles = 0;
   /// Area of the unreachable samples in it.
   double area = 0.0;
@@ -66,18 +76,26 @@ struct UnreachableRegion
   double largestReachingRadius = 0.0;
 };
 
+/// What findToolReach() finds: how much of the surface a ball tool cannot touch, and where.
 struct ToolReach
 {
+  /// The tool radius tested (m).
   double toolRadius = 0.0;
   /// True when only the outside was tested (a closed, consistently oriented mesh).
   bool outsideOnly = false;
+  /// Samples taken; degenerate triangles have none.
   std::size_t samples = 0;
+  /// Samples the tool cannot touch.
   std::size_t unreachableSamples = 0;
+  /// The area all samples stand for: the mesh's surface area (square metres).
   double area = 0.0;
+  /// The area the unreachable samples stand for (square metres).
   double unreachableArea = 0.0;
   /// Every triangle with an unreachable sample, in the file's order.
   std::vector<std::uint32_t> unreachableTriangles;
+  /// Unreachable regions in all, however many are listed.
   std::size_t regionCount = 0;
+  /// The first ToolReachOptions::locationsKept regions, in the order of their first triangle.
   std::vector<UnreachableRegion> regions;
   /// Only with ToolReachOptions::keepSamples.
   std::vector<ReachSample> sampleList;

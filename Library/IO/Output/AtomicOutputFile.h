@@ -15,6 +15,8 @@
 namespace proxima
 {
 
+/// One output file, all or nothing: written to a temporary beside the target and renamed over
+/// it by commit() (a target that is not a regular file is written in place). Not copyable.
 class AtomicOutputFile
 {
 public:

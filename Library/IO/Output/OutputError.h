@@ -11,6 +11,8 @@
 namespace proxima
 {
 
+/// An output that cannot be written in full, or is refused before it is written; made by
+/// cannotWrite(), refused() or standardOutput(), its what() one line like any InputError's.
 class OutputError : public InputError
 {
 public:

@@ -13,7 +13,9 @@ namespace proxima
 /// scene's objects[1]").
 struct NamedFile
 {
+  /// The path as given; empty when the option was not given (the file is then skipped).
   std::string path;
+  /// What names the file in messages: the option or the scene key.
   std::string role;
 };
 

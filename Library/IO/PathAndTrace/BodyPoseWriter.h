@@ -14,9 +14,12 @@
 namespace proxima
 {
 
+/// Writes the bodies file of a run: a header, one row per moving object per tick, and the file
+/// put in place only by close().
 class BodyPoseWriter
 {
 public:
+  /// The file's first line, its column names.
   static constexpr const char* kHeader = "tick,t,object,x,y,z,qw,qx,qy,qz,q";
 
   /// Starts `path` (under a temporary name until close()) with the header. Throws OutputError.
@@ -25,8 +28,10 @@ public:
   /// One row; `jointPosition` null for a joint with no single coordinate. Throws OutputError.
   void write(std::uint64_t tick, double time, std::uint32_t object, const Vec3& position,
              const double orientation[4], const double* jointPosition);
-  /// As TraceWriter: finish() writes out and checks, close() puts the file in place.
+  /// As TraceWriter::finish(): writes out the rest and checks that it reached the disk, without
+  /// putting the file in place yet. Throws OutputError.
   void finish();
+  /// As TraceWriter::close(): puts the complete file in place. Throws OutputError.
   void close();
 
 private:

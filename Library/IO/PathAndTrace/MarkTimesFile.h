@@ -9,6 +9,8 @@
 namespace proxima
 {
 
+/// The times of the marks file at `path`, in file order. Throws InputError naming the file and
+/// line for a missing header, a time that is not a finite number, or a time that goes back.
 std::vector<double> readMarkTimesFile(const std::string& path);
 
 } // namespace proxima

@@ -14,9 +14,12 @@
 namespace proxima
 {
 
+/// Writes a run's trace (v2): a header, one row per servo tick, and the file put in place only
+/// by close().
 class TraceWriter
 {
 public:
+  /// The file's first line, its column names.
   static constexpr const char* kHeader =
     "tick,t,finger_x,finger_y,finger_z,proxy_x,proxy_y,proxy_z,force_x,force_y,force_z,"
     "contacts,iterations,solve_ns,object,flags";

@@ -35,19 +35,26 @@ struct LoadedObject
 {
   /// The mesh file as it was read.
   std::string mesh;
+  /// Triangles of the built mesh.
   std::uint32_t numTriangles = 0;
+  /// Of them, those of zero area to double precision (TriangleMesh::numDegenerateTriangles).
   std::uint32_t numDegenerateTriangles = 0;
+  /// True if the proxy shades the object (shading On, or Auto with normals in the file).
   bool shaded = false;
+  /// Where the object's point normals came from.
   NormalsSource normals = NormalsSource::None;
   /// The feature angle the normals were made with (when `normals` is Computed).
   double featureAngleDegrees = 0.0;
+  /// True if the mesh has texture coordinates.
   bool texCoords = false;
 };
 
+/// A built scene, ready for the proxy, with what a report says about it.
 struct LoadedScene
 {
   /// On the heap so that its address, which a ProxySolver keeps, stays put when this moves.
   std::unique_ptr<CollisionScene> scene;
+  /// One entry per object, in the order of the description.
   std::vector<LoadedObject> objects;
   /// What the scene was built from (its bodies are made from it: IO/Scene/SceneBodies.h).
   SceneDescription description;

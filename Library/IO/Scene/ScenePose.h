@@ -12,10 +12,10 @@ namespace proxima
 /// A rotation as a unit quaternion w + x i + y j + z k (the identity by default).
 struct UnitQuaternion
 {
-  double w = 1.0;
-  double x = 0.0;
-  double y = 0.0;
-  double z = 0.0;
+  double w = 1.0; ///< Scalar part: the cosine of half the rotation angle.
+  double x = 0.0; ///< i component of the vector part.
+  double y = 0.0; ///< j component of the vector part.
+  double z = 0.0; ///< k component of the vector part.
 
   /// The rotation by `degrees` about `axis` (any length but zero; right-handed). Throws
   /// std::invalid_argument when the axis has no direction or a number is not finite.
@@ -28,9 +28,13 @@ struct UnitQuaternion
 /// A rigid placement: p_world = R p + translation, n_world = R n.
 struct ScenePose
 {
+  /// Where the object's origin goes (m), applied after the rotation.
   Vec3 translation;
+  /// The rotation R, applied first.
   UnitQuaternion rotation;
 
+  /// True if the pose leaves everything where it is: no translation, the identity rotation
+  /// exactly (w = 1; a quaternion of w = -1 is not taken for one).
   bool isIdentity() const
   {
     return translation == Vec3{} && rotation.w == 1.0 && rotation.x == 0.0 && rotation.y == 0.0 &&

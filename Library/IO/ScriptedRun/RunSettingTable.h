@@ -36,10 +36,10 @@ enum class RunSettingKind
 /// a scene file gives the Surface knobs per object instead (--scene excludes them).
 enum class RunSettingScope
 {
-  Proxy,
-  Servo,
-  Surface,
-  Budget,
+  Proxy,   ///< The proxy and the spring.
+  Servo,   ///< The loop and the force.
+  Surface, ///< The one object of a --mesh run.
+  Budget,  ///< The tick's work budget.
 };
 
 /// One knob. Exactly one of `number`, `whole` and `text` is set, by `kind`.
@@ -47,17 +47,24 @@ struct RunSetting
 {
   /// The command line's spelling without "--": "max-force".
   const char* option;
+  /// How the value is read and checked.
   RunSettingKind kind;
+  /// Which part of the run the knob belongs to.
   RunSettingScope scope;
   /// The field number of RunSettings in proxima_run_settings.proto; 0 for a File.
   int field;
+  /// The command line's help text, also the Python documentation's.
   const char* help;
   /// Number kinds: the accepted range.
   const ParameterRange* range;
   /// Choice: the accepted words, separated by '|'.
   const char* choices;
+  /// The knob's member of ScriptedRunSettings if it is a double (Number, NonZeroNumber); else
+  /// null.
   double ScriptedRunSettings::*number;
+  /// The knob's member if it is an int (WholeNumber); else null.
   int ScriptedRunSettings::*whole;
+  /// The knob's member if it is a string (Choice, TickBudget, File); else null.
   std::string ScriptedRunSettings::*text;
 
   /// "max_force": Python's keyword and the .proto's field name.

@@ -17,10 +17,13 @@
 namespace proxima
 {
 
+/// What a scripted run plays (a mesh or a scene, and a finger path) and its knobs, as plain
+/// values that the command line and the Python module fill in alike.
 struct ScriptedRunSettings
 {
   /// A mesh file, or (exclusive) a scene file.
   std::string mesh;
+  /// The scene file; empty when `mesh` is given instead.
   std::string scene;
   /// The finger path file (what messages about the path's start name).
   std::string path;
@@ -43,7 +46,9 @@ void checkScriptedRunSettings(const ScriptedRunSettings& settings);
 TickWorkBudget tickBudget(const ScriptedRunSettings& settings, const TickWorkBudget& byDefault);
 /// The scene of `scene`, or of `mesh` and its surface settings (one object at rest).
 LoadedScene loadScene(const ScriptedRunSettings& settings);
+/// The proxy solver's parameters the settings give (radius, skin, iterations, friction, ...).
 ProxyParameters proxyParameters(const ScriptedRunSettings& settings);
+/// The force stage's parameters the settings give (stiffness, force limit, rate, fades).
 ServoParameters servoParameters(const ScriptedRunSettings& settings);
 
 /// Throws InputError naming --radius when the proxy is larger than the whole scene (the
