@@ -11,7 +11,7 @@
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <cstdint>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // The worst tick on person-like probing (DESIGN.md section 5: "the tail is the headline"): the
-// seeded probe path of Runtime/PathGenerators.h on every shared mesh at proxy radii of 0.5, 1, 2
+// seeded probe path of Paths/PathGenerators.h on every shared mesh at proxy radii of 0.5, 1, 2
 // and 3 mm, several seeds each, and the four shared person-like paths at the scale and radius
 // their README gives, each played in lockstep as `proxima run` plays it. Per case: ticks,
 // contact ticks, per-tick solve time (median, p99, p99.9, max over contact ticks and over all
@@ -40,7 +40,7 @@
 #include "Proxy/ProxySolver.h"
 #include "Runtime/BudgetResidual.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "Runtime/RunSummary.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Runtime/TickBudget.h"

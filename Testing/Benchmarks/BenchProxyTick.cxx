@@ -9,7 +9,7 @@
 #include "Proxy/ProxySolver.h"
 #include "Proxy/SurfaceMaterial.h"
 #include "Proxy/TextureImage.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <benchmark/benchmark.h>
 

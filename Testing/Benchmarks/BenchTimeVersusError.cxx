@@ -22,7 +22,7 @@
 #include "Geometry/ProceduralMeshes.h"
 #include "IO/Mesh/MeshReader.h"
 #include "Proxy/ProxySolver.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <algorithm>
 #include <chrono>

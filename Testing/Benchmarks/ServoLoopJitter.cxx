@@ -13,7 +13,7 @@
 //                   [--mesh FILE]
 #include "IO/Mesh/MeshReader.h"
 #include "Runtime/DeadlineClock.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Runtime/ThreadedRuntime.h"
 

@@ -9,7 +9,7 @@
 #include "TestScenes.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

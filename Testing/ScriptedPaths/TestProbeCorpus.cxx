@@ -8,7 +8,7 @@
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/ProxySolver.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

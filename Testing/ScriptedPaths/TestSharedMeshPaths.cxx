@@ -13,7 +13,7 @@
 #include "ScriptedHarness.h"
 
 #include "IO/Mesh/MeshReader.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

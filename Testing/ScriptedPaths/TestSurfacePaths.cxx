@@ -8,7 +8,7 @@
 #include "Geometry/ProceduralMeshes.h"
 #include "IO/Mesh/MeshReader.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 #include "IO/Mesh/MeshWriter.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/CollisionScene.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // directions sampled on the sphere. Random with recorded seeds; the oracle watches every tick.
 #include "StressSupport.h"
 
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "TestScenes.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include "StressSupport.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "TestScenes.h"
 
 #include <gtest/gtest.h>

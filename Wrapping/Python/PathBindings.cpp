@@ -6,7 +6,7 @@
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <stdexcept>
 

@@ -3,7 +3,7 @@
 #include "Runtime/LockstepRuntime.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"
 
 #include <gtest/gtest.h>

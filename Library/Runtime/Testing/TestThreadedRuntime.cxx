@@ -7,7 +7,7 @@
 
 #include "Geometry/ProceduralMeshes.h"
 #include "Runtime/LockstepRuntime.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 #include "Runtime/SimulatedDevice.h"
 
 #if PROXIMA_WITH_MESH_IO

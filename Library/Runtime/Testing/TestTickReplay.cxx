@@ -4,7 +4,7 @@
 #include "Runtime/TickReplay.h"
 
 #include "Geometry/ProceduralMeshes.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

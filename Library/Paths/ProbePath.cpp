@@ -10,7 +10,7 @@
 // inside a soup's overlapping parts) is drawn again; a point with both (an open sheet) takes the
 // side its winding gives. On a closed mesh the clear side is always the outside, because the
 // inward line must leave the volume again through some triangle.
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <algorithm>
 #include <cmath>

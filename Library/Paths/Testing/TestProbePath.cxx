@@ -1,7 +1,7 @@
 // The probe path of PathGenerators.h against an independent oracle: on a faceted sphere the
 // depth of a row is measured from the analytic sphere, not from the mesh the generator used.
 #include "Geometry/ProceduralMeshes.h"
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 

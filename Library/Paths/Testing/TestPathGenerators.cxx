@@ -1,5 +1,5 @@
 // Path generators, as their header documents them: end points, durations, speeds, shapes.
-#include "Runtime/PathGenerators.h"
+#include "Paths/PathGenerators.h"
 
 #include <gtest/gtest.h>
 
