@@ -18,6 +18,8 @@ Command addRunCommand(CLI::App& parent);
 Command addViewCommand(CLI::App& parent);
 Command addPathCommand(CLI::App& parent);
 Command addTreeCommand(CLI::App& parent);
+/// `proxima tissue`: an organ surface wrapped and filled with tetrahedra (TissueCommand.cpp).
+Command addTissueCommand(CLI::App& parent);
 Command addInspectCommand(CLI::App& parent);
 Command addGenerateCommand(CLI::App& parent);
 Command addDevicesCommand(CLI::App& parent);

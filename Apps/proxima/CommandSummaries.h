@@ -26,6 +26,9 @@ inline constexpr CommandSummary kTreeSummary{
 inline constexpr CommandSummary kInspectSummary{
   "inspect", "Report a mesh's defects as JSON: holes, non-manifold and misoriented edges, "
              "degenerate, duplicate and self-intersecting triangles, pieces"};
+inline constexpr CommandSummary kTissueSummary{
+  "tissue", "Wrap an organ's surface into a closed one, fill it with tetrahedra of a given size "
+            "and write them as a .vtu file, with a report as JSON"};
 inline constexpr CommandSummary kGenerateSummary{
   "generate", "Write a procedural mesh (sizes in metres) to a file."};
 inline constexpr CommandSummary kDevicesSummary{
@@ -39,8 +42,8 @@ inline constexpr CommandSummary kRemoteSummary{
 
 // PROXIMA_HAS_NET: whether this build made the Net layer's commands (Apps/proxima/CMakeLists.txt).
 inline constexpr CommandSummary kCommandSummaries[] = {
-  kRunSummary,     kViewSummary,     kPathSummary,    kTreeSummary,
-  kInspectSummary, kGenerateSummary, kDevicesSummary,
+  kRunSummary,     kViewSummary,   kPathSummary,     kTreeSummary,
+  kInspectSummary, kTissueSummary, kGenerateSummary, kDevicesSummary,
 #if PROXIMA_HAS_NET
   kServeSummary,   kRemoteSummary,
 #endif

@@ -80,6 +80,9 @@ inline constexpr ParameterRange kLeafSpheresPerNodeRange{1.0, false, 1024.0, ""}
 /// The most pieces the leaf rule may split one triangle into.
 inline constexpr ParameterRange kPiecesPerTriangleRange{1.0, false, 1e6, ""};
 
+/// A tissue's tetrahedra's edge size (proxima tissue): above 0, at most 10 m.
+inline constexpr ParameterRange kTetSizeRange{0.0, true, 10.0, " m"};
+
 /// Mesh inspection (proxima inspect): places listed per kind of defect, the angle under which a
 /// triangle is a sliver (no triangle has all angles above 60), and the welding distance.
 inline constexpr ParameterRange kDefectLocationsRange{0.0, false, 100000.0, ""};
