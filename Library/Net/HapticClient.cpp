@@ -668,6 +668,17 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         return impl.streamContext.get();
       };
       detail::Reconnection reconnection(impl.connection, *impl.channel);
+      // A stream that ends UNAVAILABLE lost its server; one that ends CANCELLED without
+      // stopStateStream asking was cancelled by the transport or the server going away (a
+      // killed server's connection can end its calls either way): both wait for the server.
+      const auto lostServer = [&impl](const grpc::Status& status) {
+        if (status.error_code() == grpc::StatusCode::UNAVAILABLE)
+        {
+          return true;
+        }
+        const std::lock_guard<std::mutex> lock(impl.streamMutex);
+        return status.error_code() == grpc::StatusCode::CANCELLED && !impl.stopAsked;
+      };
       std::uint32_t reconnections = 0;
       std::string end;
       std::string lastError;
@@ -688,10 +699,14 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
           waiting->set_deadline(reconnection.deadline());
           const auto reader = impl.stub->StreamState(waiting, request);
           const bool answered = reader->Read(&message);
-          waiting->TryCancel();
+          if (answered)
+          {
+            // The call's work is done (a new call follows); a failed one is not cancelled, so
+            // that Finish reports why it failed (UNAVAILABLE is retried below), not CANCELLED.
+            waiting->TryCancel();
+          }
           const grpc::Status status = reader->Finish();
-          if (!answered && status.error_code() == grpc::StatusCode::UNAVAILABLE &&
-              reconnection.failed())
+          if (!answered && lostServer(status) && reconnection.failed())
           {
             // Refused by a server that is closing its connection: wait for the channel to notice,
             // then wait for the server again.
@@ -727,11 +742,11 @@ void HapticClient::startStateStream(double rateHz, std::function<void(const Live
         }
         const grpc::Status status = reader->Finish();
         lastError = "the stream failed: " + status.error_message();
-        if (status.error_code() == grpc::StatusCode::UNAVAILABLE && reconnection.failed())
+        if (lostServer(status) && reconnection.failed())
         {
           continue;
         }
-        if (status.error_code() == grpc::StatusCode::UNAVAILABLE && reconnection.waiting())
+        if (lostServer(status) && reconnection.waiting())
         {
           end = reconnection.gaveUp(status.error_message());
         }
