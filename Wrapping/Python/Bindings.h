@@ -29,6 +29,8 @@ ScriptedRunSettings settingsFromKeywords(const py::kwargs& keywords);
 FingerPath fingerPathFrom(const py::object& path, ScriptedRunSettings& settings);
 /// An (N, 4) float64 array of rows t, x, y, z.
 py::array_t<double> fingerPathArray(const FingerPath& path);
+/// A point or vector as a float64 array of 3: x, y, z.
+py::array_t<double> vectorArray(const Vec3& v);
 
 /// The ticks as named numpy columns, in the order and with the values of trace v2's CSV columns.
 py::dict traceColumns(const std::vector<HapticState>& ticks);

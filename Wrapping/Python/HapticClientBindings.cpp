@@ -122,16 +122,6 @@ private:
   std::vector<TouchChange> m_touches;
 };
 
-py::array_t<double> vectorArray(const Vec3& v)
-{
-  py::array_t<double> array(3);
-  double* out = array.mutable_data();
-  out[0] = v.x;
-  out[1] = v.y;
-  out[2] = v.z;
-  return array;
-}
-
 // A pose as the 4x4 matrix M with M (p, 1) = pose.apply(p).
 py::array_t<double> poseMatrix(const RigidTransform& pose)
 {

@@ -10,9 +10,7 @@
 
 namespace proxima::python
 {
-namespace
-{
-py::array_t<double> vector(const Vec3& v)
+py::array_t<double> vectorArray(const Vec3& v)
 {
   py::array_t<double> array(3);
   double* out = array.mutable_data();
@@ -22,6 +20,8 @@ py::array_t<double> vector(const Vec3& v)
   return array;
 }
 
+namespace
+{
 Vec3 point(const py::object& value)
 {
   const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
@@ -38,9 +38,9 @@ py::dict stateDict(const HapticState& state)
   py::dict tick;
   tick["tick"] = state.tick;
   tick["t"] = state.time;
-  tick["finger"] = vector(state.finger);
-  tick["proxy"] = vector(state.proxy);
-  tick["force"] = vector(state.force);
+  tick["finger"] = vectorArray(state.finger);
+  tick["proxy"] = vectorArray(state.proxy);
+  tick["force"] = vectorArray(state.force);
   tick["contacts"] = state.numContacts;
   tick["iterations"] = state.iterations;
   tick["solve_ns"] = state.solveNanoseconds;
@@ -94,7 +94,7 @@ public:
       }
       py::dict body;
       body["object"] = poses.objects[b];
-      body["translation"] = vector(pose.translation);
+      body["translation"] = vectorArray(pose.translation);
       body["rotation"] = rotation;
       list.append(body);
     }
@@ -117,10 +117,10 @@ public:
 
   py::array_t<double> place(const py::object& finger)
   {
-    return vector(m_session->placeProxy(point(finger)).position);
+    return vectorArray(m_session->placeProxy(point(finger)).position);
   }
 
-  py::array_t<double> proxy() const { return vector(m_session->proxy()); }
+  py::array_t<double> proxy() const { return vectorArray(m_session->proxy()); }
 
 private:
   std::unique_ptr<HapticSession> m_session;
