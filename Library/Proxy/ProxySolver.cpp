@@ -795,6 +795,15 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
       }
       break;
     }
+    if (tick.budget.secondHalf(result.iterations))
+    {
+      // The budget's second half is for plain slides (TickBudget::secondHalf).
+      if (retracedTrials(tick))
+      {
+        continue;
+      }
+      tick.stretch.forbid();
+    }
     const Vec3 step = nextStep(tick);
     const bool stretched = step != tick.solution.displacement;
     const Vec3 goal = m_proxy + step;

@@ -54,6 +54,19 @@ public:
     return m_timed && iterations > 0 && std::chrono::steady_clock::now() >= m_deadline;
   }
 
+  /// True once half an iteration budget is used: the rest is for plain slides, which never end
+  /// farther from the finger, so a budget-limited tick ends nearer than it began or settles. Were
+  /// stretched slides (trials, TrialChain) allowed to the end, a tick whose trials were still
+  /// pending when the budget ran out walked back to where it began, and with the finger at rest
+  /// every later tick did the same: on the shared bunny at r = 2 mm (probe seed 3) 253 ticks in a
+  /// row were limited at 16 iterations, where one unbudgeted tick of 49 settles. By iterations
+  /// only, so that a tick is a function of where it starts and the finger (a replay from the same
+  /// start ends where the tick did); never true without an iteration budget.
+  bool secondHalf(int iterations) const
+  {
+    return m_iterations > 0 && 2 * iterations >= m_iterations;
+  }
+
 private:
   int m_iterations = 0;
   bool m_timed = false;

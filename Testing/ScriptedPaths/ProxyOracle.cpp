@@ -820,12 +820,12 @@ void TickChecker::check(std::uint64_t tick, const Vec3& requestedFinger, const V
 
   // The chain of the tick's segments, as the solver recorded it replaying the tick from the
   // previous proxy: stopped by the cap where the live tick stopped (by the cap or its iteration
-  // budget), the budget dropped so that a time budget cannot stop the replay elsewhere.
+  // budget), with the live tick's iteration budget (its second half allows no stretched slides:
+  // TickBudget::secondHalf) and without its time budget, which could stop the replay elsewhere.
   std::vector<MovePoint> points{MovePoint{before, MovePointKind::Accepted}};
   if (iterations >= 1)
   {
     ProxyParameters capped = m_parameters;
-    capped.tickBudgetIterations = 0;
     capped.tickBudgetSeconds = 0.0;
     capped.maxIterations = iterations;
     m_replay->setScene(&m_scene, capped);

@@ -185,6 +185,8 @@ void expectInvariants(const std::string& name, const ScriptedOutcome& outcome)
   EXPECT_EQ(s.approachFailures, 0u) << name << ": a move stage went away from the finger";
   EXPECT_EQ(s.nonTerminating, 0u) << name << ": the move/update loop does not terminate";
   EXPECT_EQ(s.overflowTicks, 0u) << name << ": contact buffers overflowed";
+  EXPECT_EQ(s.coverageFailures, 0u) << name << ": the trace is not every tick of its path";
+  EXPECT_EQ(s.settleFailures, 0u) << name << ": (h) budget-limited long after the finger rested";
 }
 
 std::string goldenCsv(const std::vector<HapticState>& trace)

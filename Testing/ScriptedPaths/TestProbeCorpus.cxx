@@ -9,6 +9,7 @@
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/ProxySolver.h"
 #include "Paths/PathGenerators.h"
+#include "Runtime/TickBudget.h"
 
 #include <gtest/gtest.h>
 
@@ -283,6 +284,54 @@ TEST(SharedProbePathTicks, BunnyTick2630EndsNoFartherFromTheFinger)
   checker.reset(before);
   checker.check(2630, finger, result);
   EXPECT_EQ(checker.stats().failures(), 0u) << checker.stats().summary("bunny tick 2630");
+}
+} // namespace
+} // namespace proxima
+
+namespace proxima
+{
+namespace
+{
+// The real-time default budget (16 iterations) on the probe path of seed 3 over the shared bunny
+// (scale 0.4, radius 2 mm), 1.5 s around its tick 7849: with the finger at rest, one unbudgeted
+// tick of 49 iterations settles there. With the budget, a tick whose stretched slides were still
+// trials when the budget ran out walked back to where it began and left the solver as it had
+// found it, so every later tick made the same trials and walked back again: 253 ticks in a row
+// budget-limited with the finger still, where rule (h) of the oracle allows 20. A budget-limited
+// tick now hands its stretch trust region on to the next (ProxySolver::update). Every tick under
+// the oracle, rule (h) included.
+TEST(BudgetedProbePaths, BunnySeed3SettlesSoonAfterTheFingerRests)
+{
+  const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/stanford-bunny.obj";
+  if (!std::filesystem::exists(mesh))
+  {
+    GTEST_SKIP() << "shared mesh not found: " << mesh;
+  }
+  auto scene = std::make_unique<CollisionScene>();
+  scene->addObject(loadTriangleMesh(mesh, 0.4));
+  ProbeOptions options;
+  options.seed = 3;
+  const FingerPath whole = makeProbePath(scene->objects.front().mesh, options);
+  const oracle::MeshOracle oracle(*scene);
+  scripted::ScriptedCase c;
+  c.name = "stanford-bunny.obj/probe-seed-3/16it";
+  c.scene = scene.get();
+  c.oracle = &oracle;
+  c.proxy.radius = 0.002;
+  c.proxy.tickBudgetIterations = kDefaultTickBudgetIterations;
+  constexpr double kFrom = 7.1;
+  const double until = kFrom + 1.5 * environmentScale();
+  for (std::size_t i = 0; i < whole.size(); ++i)
+  {
+    if (whole.times[i] >= kFrom && whole.times[i] <= until)
+    {
+      c.path.append(whole.times[i] - kFrom, whole.positions[i]);
+    }
+  }
+  ASSERT_FALSE(c.path.empty());
+  const scripted::ScriptedOutcome outcome = scripted::runScriptedCase(c);
+  scripted::expectInvariants(c.name, outcome);
+  EXPECT_GT(outcome.stats.budgetLimitedTicks, 0u) << "the budget never bit: the case tests nothing";
 }
 } // namespace
 } // namespace proxima
