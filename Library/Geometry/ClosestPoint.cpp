@@ -164,8 +164,17 @@ ClosestPointResult closestPointOnTriangle(const Vec3& p, const Vec3& a, const Ve
   const double acac = dot(ac, ac);
   const double abac = dot(ab, ac);
   const double longestSquared = std::fmax(std::fmax(abab, acac), abab + acac - 2.0 * abac);
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp);
+  const double d6 = dot(ac, cp);
   if (!(abab * acac - abac * abac >= kThinSquared * longestSquared * longestSquared))
   {
+    // Corner c's test holds for any triangle, like a's and b's: at the apex of a fan of CAD
+    // slivers, where a proxy touches hundreds of them, most answers are a corner.
+    if (d6 >= 0.0 && d5 <= d6)
+    {
+      return vertexResult(p, c, 2);
+    }
     return closestOnThinTriangle(p, a, b, c);
   }
   const double vc = d1 * d4 - d3 * d2;
@@ -173,9 +182,6 @@ ClosestPointResult closestPointOnTriangle(const Vec3& p, const Vec3& a, const Ve
   {
     return edgeResult(p, a, b, 0, 1, TriangleFeature::EdgeAB);
   }
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp);
-  const double d6 = dot(ac, cp);
   if (d6 >= 0.0 && d5 <= d6)
   {
     return vertexResult(p, c, 2);
