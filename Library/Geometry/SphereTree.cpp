@@ -1,8 +1,10 @@
 #include "Geometry/SphereTree.h"
 
+#include "Geometry/Private/FloatRounding.h"
 #include "Geometry/Private/ParallelFor.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -19,31 +21,6 @@ struct BuildLeaf
   double radius;
   std::uint32_t triangle;
 };
-
-// Rounds a double radius up to the next float that is not smaller.
-float roundUpToFloat(double value)
-{
-  float f = static_cast<float>(value);
-  if (static_cast<double>(f) < value)
-  {
-    f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  }
-  return f;
-}
-
-// One coordinate rounded to the nearest float, widened back. Kept out of line on purpose: GCC 12.2
-// at -O2/-O3 vectorises the three conversions of a Vec3 and then folds the narrowing-widening pair
-// of the vector away, returning x and y unrounded (seen in the generated code; the tree's
-// containment test caught it). A scalar call per coordinate cannot be combined that way.
-[[gnu::noinline]] double roundToFloat(double value)
-{
-  return static_cast<double>(static_cast<float>(value));
-}
-
-Vec3 roundToFloatPrecision(const Vec3& v)
-{
-  return {roundToFloat(v.x), roundToFloat(v.y), roundToFloat(v.z)};
-}
 
 // Smallest sphere holding three points: the midpoint of the longest edge when the opposite angle
 // is right or obtuse (or the points are collinear), else the circumsphere.
@@ -87,11 +64,11 @@ BuildLeaf makeLeaf(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t tr
 {
   const Sphere exact = minimalSphere(a, b, c);
   BuildLeaf leaf;
-  leaf.center = roundToFloatPrecision(exact.center);
+  leaf.center = detail::roundToFloatPrecision(exact.center);
   const double reach =
     std::sqrt(std::max({squaredDistance(leaf.center, a), squaredDistance(leaf.center, b),
                         squaredDistance(leaf.center, c)}));
-  leaf.radius = static_cast<double>(roundUpToFloat(reach));
+  leaf.radius = static_cast<double>(detail::roundUpToFloat(reach));
   leaf.triangle = triangle;
   return leaf;
 }
@@ -256,7 +233,7 @@ SphereTreeNode storedNode(const std::vector<BuildLeaf>& leaves, const Sphere& sp
                           std::uint32_t rightOrFirst, std::uint32_t numLeafSpheres,
                           std::uint32_t begin, std::uint32_t end)
 {
-  const Vec3 center = roundToFloatPrecision(sphere.center);
+  const Vec3 center = detail::roundToFloatPrecision(sphere.center);
   double radius = 0.0;
   for (std::uint32_t i = begin; i < end && numLeafSpheres > 0; ++i)
   {
@@ -270,7 +247,7 @@ SphereTreeNode storedNode(const std::vector<BuildLeaf>& leaves, const Sphere& sp
   node.center[0] = static_cast<float>(center.x);
   node.center[1] = static_cast<float>(center.y);
   node.center[2] = static_cast<float>(center.z);
-  node.radius = roundUpToFloat(radius);
+  node.radius = detail::roundUpToFloat(radius);
   node.rightOrFirst = rightOrFirst;
   node.numLeafSpheres = numLeafSpheres;
   return node;
@@ -689,6 +666,122 @@ void SphereTree::build(const TriangleMesh& mesh, const SphereTreeOptions& option
   };
   detail::parallelFor(0, leaves.size(), kTrianglesPerChunk, storeLeaves, threads);
   m_nodes.shrink_to_fit();
+}
+
+namespace
+{
+// True when the sphere (centre, radius) holds `point` with room for rounding. Squares only, no
+// square root: the radius is a float, so its square is exact in double, and the relative margin
+// covers the rounding of the squared distance.
+bool holdsPoint(const Vec3& center, double radius, const Vec3& point)
+{
+  return squaredDistance(center, point) <= radius * radius * (1.0 - 1e-14);
+}
+
+// True when the sphere (center, radius) holds the sphere (inner, innerRadius).
+bool holdsSphere(const Vec3& center, double radius, const Vec3& inner, double innerRadius)
+{
+  const double room = radius - innerRadius;
+  return room >= 0.0 && squaredDistance(center, inner) <= room * room * (1.0 - 1e-14);
+}
+
+// Stores `center` rounded to float and returns the stored centre widened back.
+Vec3 storeCenter(float (&stored)[3], const Vec3& center)
+{
+  stored[0] = static_cast<float>(center.x);
+  stored[1] = static_cast<float>(center.y);
+  stored[2] = static_cast<float>(center.z);
+  return {static_cast<double>(stored[0]), static_cast<double>(stored[1]),
+          static_cast<double>(stored[2])};
+}
+} // namespace
+
+void SphereTree::refit(const TriangleMesh& mesh, double margin)
+{
+  if (mesh.numTriangles() != m_numTriangles || m_nodes.empty())
+  {
+    return;
+  }
+  margin = margin > 0.0 ? margin : 0.0;
+  // Leaves first. One that still holds its triangle is kept; one that does not is made again
+  // around the whole triangle, from its centroid (no division: a little looser than the build's
+  // smallest sphere), larger by `margin` so that the next small motions leave it be. A split
+  // triangle's pieces each get the whole triangle's sphere.
+  // The corners are read through the point indices rather than the mesh's corner copies: the
+  // leaves visit the triangles in the tree's spatial order, and the indices and points (a third
+  // of the bytes) stay in cache where the corner copies do not.
+  const std::vector<Vec3>& points = mesh.points();
+  for (LeafSphere& leaf : m_leaves)
+  {
+    const std::array<std::uint32_t, 3>& corner = mesh.indices(leaf.triangle);
+    const Vec3 a = points[corner[0]] - m_origin;
+    const Vec3 b = points[corner[1]] - m_origin;
+    const Vec3 c = points[corner[2]] - m_origin;
+    const Vec3 center = centerOf(leaf);
+    const auto radius = static_cast<double>(leaf.radius);
+    if (holdsPoint(center, radius, a) && holdsPoint(center, radius, b) &&
+        holdsPoint(center, radius, c))
+    {
+      continue;
+    }
+    const Vec3 stored = storeCenter(leaf.center, (a + b + c) * (1.0 / 3.0));
+    const double reach = std::sqrt(std::max(
+      {squaredDistance(stored, a), squaredDistance(stored, b), squaredDistance(stored, c)}));
+    leaf.radius = detail::roundUpToFloatWithoutBranch(reach + margin);
+  }
+  // Then the nodes, bottom-up: in depth-first order every child comes after its parent, so a walk
+  // from the last node to the first meets the children first. A node that still holds its
+  // children is kept; otherwise a leaf node becomes the sphere around its leaf spheres' box
+  // centre and an internal node the sphere around its two children, each larger by `margin`,
+  // its radius measured from the stored float centre and rounded up.
+  for (std::size_t k = m_nodes.size(); k-- > 0;)
+  {
+    SphereTreeNode& node = m_nodes[k];
+    const Vec3 current = centerOf(node);
+    const auto currentRadius = static_cast<double>(node.radius);
+    if (node.numLeafSpheres > 0)
+    {
+      const std::uint32_t first = node.rightOrFirst;
+      const std::uint32_t end = first + node.numLeafSpheres;
+      bool holds = true;
+      for (std::uint32_t i = first; i < end && holds; ++i)
+      {
+        holds = holdsSphere(current, currentRadius, centerOf(m_leaves[i]),
+                            static_cast<double>(m_leaves[i].radius));
+      }
+      if (holds)
+      {
+        continue;
+      }
+      Aabb box;
+      for (std::uint32_t i = first; i < end; ++i)
+      {
+        box.expand(centerOf(m_leaves[i]), static_cast<double>(m_leaves[i].radius));
+      }
+      const Vec3 stored = storeCenter(node.center, box.center());
+      double radius = 0.0;
+      for (std::uint32_t i = first; i < end; ++i)
+      {
+        radius = std::max(radius, distance(stored, centerOf(m_leaves[i])) +
+                                    static_cast<double>(m_leaves[i].radius));
+      }
+      node.radius = detail::roundUpToFloatWithoutBranch(radius + margin);
+      continue;
+    }
+    const SphereTreeNode& left = m_nodes[k + 1];
+    const SphereTreeNode& right = m_nodes[node.rightOrFirst];
+    const Sphere leftSphere{centerOf(left), static_cast<double>(left.radius)};
+    const Sphere rightSphere{centerOf(right), static_cast<double>(right.radius)};
+    if (holdsSphere(current, currentRadius, leftSphere.center, leftSphere.radius) &&
+        holdsSphere(current, currentRadius, rightSphere.center, rightSphere.radius))
+    {
+      continue;
+    }
+    const Sphere around = enclosingTwo(leftSphere, rightSphere);
+    const Vec3 stored = storeCenter(node.center, around.center);
+    node.radius =
+      detail::roundUpToFloatWithoutBranch(around.radius + distance(stored, around.center) + margin);
+  }
 }
 
 std::size_t SphereTree::memoryBytes() const

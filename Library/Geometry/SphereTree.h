@@ -204,6 +204,19 @@ public:
   NearestTriangle nearest(const TriangleMesh& mesh, const Vec3& point, double maxDistance,
                           SphereTreeScratch& scratch, QueryStats* stats = nullptr) const;
 
+  /// Refits the tree to `mesh`: the mesh it was built over with its points moved (the same
+  /// triangles, as TriangleMesh::movePoints leaves them), a deforming surface. The hierarchy
+  /// stays. Bottom-up, a leaf sphere that still holds its triangle is kept and one that does not
+  /// is made again around the whole triangle, from its centroid, larger by `margin` (m); a node
+  /// that still holds its children is kept and one that does not is made again around them,
+  /// larger by `margin`. A margin of a fraction of the triangles' size lets the small motions of
+  /// most simulation steps pass with containment checks alone (squares, no root); the queries
+  /// stay exact whatever the margin and only slow down as spheres grow or the surface strays from
+  /// the shape the hierarchy was built for. A split triangle's pieces each get the whole
+  /// triangle's sphere: build a tree that will be refit with one sphere per triangle
+  /// (SphereTreeOptions::leafSizeFactor 0). O(leaf spheres + nodes), allocates nothing; a mesh
+  /// with another number of triangles is ignored.
+  void refit(const TriangleMesh& mesh, double margin = 0.0);
   /// Number of nodes; 0 before build() or for an empty mesh.
   std::uint32_t numNodes() const { return static_cast<std::uint32_t>(m_nodes.size()); }
   /// Number of leaf spheres: at least one per triangle, more where triangles were split.

@@ -1,5 +1,6 @@
 #include "Geometry/TriangleMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -140,6 +141,38 @@ void TriangleMesh::placeAs(const TriangleMesh& placed, const RigidTransform& pos
   }
   m_bounds = bounds;
   m_maxAbsCoordinate = std::max(maxAbsComponent(bounds.lower), maxAbsComponent(bounds.upper));
+}
+
+bool TriangleMesh::movePoints(const Vec3* points, std::size_t count)
+{
+  if (count != m_soup.points.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!isFinite(points[i]))
+    {
+      return false;
+    }
+  }
+  std::copy(points, points + count, m_soup.points.begin());
+  Aabb bounds;
+  std::uint32_t numDegenerate = 0;
+  for (std::size_t t = 0; t < m_corners.size(); ++t)
+  {
+    const auto& tri = m_soup.triangles[t];
+    m_corners[t] =
+      TriangleCorners{m_soup.points[tri[0]], m_soup.points[tri[1]], m_soup.points[tri[2]]};
+    bounds.expand(m_corners[t].a);
+    bounds.expand(m_corners[t].b);
+    bounds.expand(m_corners[t].c);
+    numDegenerate += isDegenerate(m_corners[t]) ? 1u : 0u;
+  }
+  m_bounds = bounds;
+  m_maxAbsCoordinate = std::max(maxAbsComponent(bounds.lower), maxAbsComponent(bounds.upper));
+  m_numDegenerate = numDegenerate;
+  return true;
 }
 
 std::size_t TriangleMesh::memoryBytes() const

@@ -45,7 +45,7 @@ struct MeshError
 };
 
 /// The kernel's triangle mesh: a TriangleSoup that build() validated, with each triangle's corners
-/// copied out for the exact tests. It does not change after build() except through placeAs().
+/// copied out for the exact tests. It does not change after build() except through placeAs() and movePoints().
 class TriangleMesh
 {
 public:
@@ -92,6 +92,12 @@ public:
   /// of `placed` it allocates nothing, so the haptic thread may call it each tick a body moves;
   /// O(points + triangles).
   void placeAs(const TriangleMesh& placed, const RigidTransform& pose);
+
+  /// Moves the points to `points` (`count` of them, as many as numPoints(), all finite), keeping
+  /// the triangles: a deforming surface where it is now (corners, bounds and the degenerate count
+  /// follow; point normals and texture coordinates stay as they were). Returns false and changes
+  /// nothing for another count or a non-finite point. Allocates nothing; O(points + triangles).
+  bool movePoints(const Vec3* points, std::size_t count);
 
   /// Bytes held by the mesh (soup and the per-triangle corner copies).
   std::size_t memoryBytes() const;

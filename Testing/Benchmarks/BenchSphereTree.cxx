@@ -310,6 +310,65 @@ void buildSphereTree(benchmark::State& state, const std::string& name)
   state.counters["depth"] = d->tree.depth();
 }
 
+// A deforming surface (issue 35): the tree built once with one sphere per triangle, then refit
+// after each simulation step moves the points (target: at most 200 us for 20,000 triangles).
+// Argument 0, the worst case: each step shifts the whole surface by two median edges one way or
+// the other, so every sphere is made again (margin 0). Argument 1, a tissue's steps: each moves
+// every point a hundredth of a median edge along a slowly turning direction, and the refit's
+// margin is a tenth of an edge, so spheres are remade only as the motion adds up. Timed: the
+// refit alone; `move_points_us` is TriangleMesh::movePoints, which a step pays as well.
+void refitSphereTree(benchmark::State& state, const std::string& name)
+{
+  Dataset* d = datasetOrSkip(state, name);
+  if (d == nullptr)
+  {
+    return;
+  }
+  const bool worstCase = state.range(0) == 0;
+  TriangleMesh mesh = d->mesh;
+  SphereTreeOptions options;
+  options.leafSizeFactor = 0.0;
+  SphereTree tree;
+  tree.build(mesh, options);
+  const std::vector<Vec3> rest = mesh.points();
+  std::vector<Vec3> moved = rest;
+  double edge = 0.0;
+  {
+    std::vector<double> edges;
+    for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
+    {
+      edges.push_back(distance(mesh.corners(t).a, mesh.corners(t).b));
+    }
+    std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
+    edge = edges[edges.size() / 2];
+  }
+  const double margin = worstCase ? 0.0 : 0.1 * edge;
+  double movingNs = 0.0;
+  std::int64_t step = 0;
+  for (auto _ : state)
+  {
+    state.PauseTiming();
+    const auto before = std::chrono::steady_clock::now();
+    ++step;
+    const Vec3 shift =
+      worstCase
+        ? Vec3{(step % 2 == 0 ? 2.0 : -2.0) * edge, 0.0, 0.0}
+        : Vec3{std::cos(0.01 * double(step)), std::sin(0.01 * double(step)), 0.0} * (0.01 * edge);
+    for (std::size_t i = 0; i < moved.size(); ++i)
+    {
+      moved[i] = worstCase ? rest[i] + shift : moved[i] + shift;
+    }
+    mesh.movePoints(moved.data(), moved.size());
+    movingNs +=
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - before).count();
+    state.ResumeTiming();
+    tree.refit(mesh, margin);
+    benchmark::DoNotOptimize(tree.nodes().data());
+  }
+  state.counters["triangles"] = mesh.numTriangles();
+  state.counters["move_points_us"] = step > 0 ? movingNs / double(step) / 1e3 : 0.0;
+}
+
 void buildCgalTree(benchmark::State& state, const std::string& name)
 {
   Dataset* d = datasetOrSkip(state, name);
@@ -655,6 +714,14 @@ int main(int argc, char** argv)
     benchmark::RegisterBenchmark(("Build/CgalAabb/" + name).c_str(), buildCgalTree, name)
       ->Unit(benchmark::kMillisecond)
       ->Iterations(name == "icosphere5" ? 20 : 3);
+    if (name == "icosphere5")
+    {
+      benchmark::RegisterBenchmark(("Refit/SphereTree/" + name).c_str(), refitSphereTree, name)
+        ->Unit(benchmark::kMicrosecond)
+        ->ArgName("tissue_steps")
+        ->Arg(0)
+        ->Arg(1);
+    }
     benchmark::RegisterBenchmark(("FirstContact/SphereTree/" + name).c_str(), sweepSphereTree, name)
       ->Unit(benchmark::kNanosecond);
     benchmark::RegisterBenchmark(("FirstContact/CgalAabb/" + name).c_str(), sweepCgal, name)

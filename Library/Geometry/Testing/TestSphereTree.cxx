@@ -827,6 +827,74 @@ TEST(SphereTree, SliverCylinderLeavesAreTight)
               static_cast<double>(allCandidates) / static_cast<double>(allReached));
 }
 
+// A tree refit after its mesh deformed (SphereTree::refit, TriangleMesh::movePoints) answers as
+// brute force over the deformed triangles does, and keeps every invariant: every point of every
+// triangle in one of its leaf spheres, every node holding its leaves. The deformation is large
+// against the triangles (a twist, a bulge and a per-point jitter, several triangle sizes in all),
+// so the hierarchy no longer fits the surface well; only speed may suffer, never an answer. Each
+// mesh is deformed twice in a row, refitting each time (the second time with a margin, so that
+// the spheres that still hold their triangles are kept), with one sphere per triangle (how a
+// deforming surface is built) and with the default split leaves. Then it is moved back a little
+// (less than the margin) and refit: the spheres that still hold are kept, the answers the same.
+TEST(SphereTree, RefitAfterDeformingAgreesWithBruteForce)
+{
+  Random random(0x7ee00006);
+  FailureTally tally;
+  std::vector<NamedMesh> meshes;
+  meshes.push_back({"icosphere 4", buildMesh(makeIcosphere(4, 0.05))});
+  meshes.push_back({"grid 40", buildMesh(makeGrid(2.0, 40, 0.5))});
+  meshes.push_back({"random soup", buildMesh(makeRandomSoup(random, 1500, Vec3{}))});
+  for (double leafSizeFactor : {0.0, 2.0})
+  {
+    for (const NamedMesh& original : meshes)
+    {
+      TriangleMesh mesh = original.mesh;
+      SphereTreeOptions options;
+      options.leafSizeFactor = leafSizeFactor;
+      SphereTree tree;
+      tree.build(mesh, options);
+      const double size = mesh.diagonal();
+      const double edge = medianEdgeLength(mesh);
+      for (int round = 1; round <= 2; ++round)
+      {
+        std::vector<Vec3> points = mesh.points();
+        for (Vec3& p : points)
+        {
+          const double angle = 0.4 * round * p.z / size;
+          const double c = std::cos(angle);
+          const double s = std::sin(angle);
+          p = Vec3{c * p.x - s * p.y, s * p.x + c * p.y, p.z};
+          p = p + Vec3{0.0, 0.0, 0.1 * size * std::exp(-squaredNorm(p) / (size * size))};
+          p = p + random.inCube(0.5 * edge);
+        }
+        ASSERT_TRUE(mesh.movePoints(points.data(), points.size()));
+        tree.refit(mesh, round == 1 ? 0.0 : 0.1 * edge);
+        const std::string label = original.name + " deformed " + std::to_string(round) +
+                                  "x (leafSizeFactor " + std::to_string(leafSizeFactor) + ")";
+        checkInvariants(mesh, tree, options, random, label, tally);
+        AgreementStats stats;
+        compareWithBruteForce(mesh, tree, random, 400, label, stats, tally);
+        printStats(label, tree, mesh, stats);
+        EXPECT_GT(stats.numSweepHits, stats.numSweeps / 10) << label << ": too few hits to judge";
+      }
+      std::vector<Vec3> nudged = mesh.points();
+      for (Vec3& p : nudged)
+      {
+        p = p + random.inCube(0.02 * edge);
+      }
+      ASSERT_TRUE(mesh.movePoints(nudged.data(), nudged.size()));
+      tree.refit(mesh, 0.1 * edge);
+      const std::string label =
+        original.name + " nudged (leafSizeFactor " + std::to_string(leafSizeFactor) + ")";
+      checkInvariants(mesh, tree, options, random, label, tally);
+      AgreementStats stats;
+      compareWithBruteForce(mesh, tree, random, 200, label, stats, tally);
+    }
+  }
+  tally.print();
+  EXPECT_EQ(tally.total(), 0) << "seed 0x7ee00006";
+}
+
 TEST(SphereTree, EmptyTreeAnswersNothing)
 {
   TriangleMesh empty;

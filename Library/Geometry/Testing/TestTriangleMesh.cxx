@@ -8,9 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace proxima::test
 {
@@ -138,6 +140,48 @@ TEST(TriangleMesh, ARefusedBuildLeavesTheOldMesh)
   EXPECT_EQ(mesh.numTriangles(), 12u);
   EXPECT_EQ(mesh.corners(5).a, before.a);
   EXPECT_TRUE(mesh.hasPointNormals());
+}
+
+// movePoints: the corners and bounds follow the moved points (checked against the triangles'
+// indices, independently of how the mesh stores them), a collapsed triangle counts as degenerate,
+// and a wrong count or a NaN point changes nothing.
+TEST(TriangleMesh, MovePointsMovesCornersAndBoundsOrNothing)
+{
+  Random random(0x3e5a0005);
+  TriangleMesh mesh;
+  MeshError error;
+  ASSERT_TRUE(mesh.build(makeSoup(random, 10, 12, true), error)) << error.message;
+  std::vector<Vec3> moved = mesh.points();
+  for (Vec3& p : moved)
+  {
+    p = p * 2.0 + Vec3{5.0, -1.0, 0.5};
+  }
+  const std::array<std::uint32_t, 3> first = mesh.indices(0);
+  moved[first[1]] = moved[first[0]]; // triangle 0 collapses onto an edge
+  ASSERT_TRUE(mesh.movePoints(moved.data(), moved.size()));
+  Aabb expected;
+  for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
+  {
+    const std::array<std::uint32_t, 3>& tri = mesh.indices(t);
+    EXPECT_EQ(mesh.corners(t).a, moved[tri[0]]) << t;
+    EXPECT_EQ(mesh.corners(t).b, moved[tri[1]]) << t;
+    EXPECT_EQ(mesh.corners(t).c, moved[tri[2]]) << t;
+    for (std::uint32_t k : tri)
+    {
+      expected.expand(moved[k]);
+    }
+  }
+  EXPECT_EQ(mesh.bounds().lower, expected.lower);
+  EXPECT_EQ(mesh.bounds().upper, expected.upper);
+  EXPECT_GE(mesh.numDegenerateTriangles(), 1u);
+
+  const TriangleCorners before = mesh.corners(5);
+  std::vector<Vec3> bad = moved;
+  bad[3].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(mesh.movePoints(bad.data(), bad.size()));
+  EXPECT_FALSE(mesh.movePoints(moved.data(), moved.size() - 1));
+  EXPECT_EQ(mesh.corners(5).a, before.a);
+  EXPECT_EQ(mesh.points()[3], moved[3]);
 }
 
 TEST(TriangleMesh, CountsDegenerateTrianglesAndKeepsThem)
