@@ -1,6 +1,7 @@
 // One thing the proxy collides with: a triangle mesh, its sphere tree and its surface material.
 // Built once off the haptic thread and then never changed, so that scenes can share it: a scene
-// edit makes new objects only for what changed and points at the rest (CollisionScene.h).
+// edit makes new objects only for what changed and points at the rest (CollisionScene.h). A
+// deforming object's own copy (Proxy/DeformingObjects.h) is the exception, refit in place.
 #pragma once
 
 #include "Geometry/SphereTree.h"
@@ -8,6 +9,7 @@
 #include "Proxy/SurfaceMaterial.h"
 #include "Proxy/TriangleFilter.h"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -34,6 +36,17 @@ struct CollisionObject
   {
     tree.build(mesh, options);
     filters = makeTriangleFilters(mesh);
+  }
+  /// After `mesh`'s points moved (TriangleMesh::movePoints): refits the tree (SphereTree::refit,
+  /// with `margin`) and remakes every filter record in place. For an object one owner deforms,
+  /// never one scenes share. Allocates nothing; O(triangles).
+  void refitQueries(double margin)
+  {
+    tree.refit(mesh, margin);
+    for (std::uint32_t t = 0; t < mesh.numTriangles() && t < filters.size(); ++t)
+    {
+      filters[t] = makeTriangleFilter(mesh.corners(t));
+    }
   }
 };
 

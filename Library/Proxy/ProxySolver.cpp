@@ -123,6 +123,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_cacheMargin = m_coherenceMargin;
   m_cache.invalidate();
   m_planesValid = false;
+  m_deforming = nullptr;
   m_reachRadius = 0.0;
   if (scene != nullptr && !scene->objects.empty())
   {
@@ -208,6 +209,124 @@ void ProxySolver::followMovingObjects(ProxyTickResult& result)
   }
 }
 
+void ProxySolver::setDeformingObjects(const std::vector<std::uint32_t>& objects)
+{
+  m_deforming =
+    m_scene != nullptr && !objects.empty() ? makeDeformingObjects(*m_scene, objects) : nullptr;
+  if (m_deforming != nullptr && m_deforming->entries.empty())
+  {
+    m_deforming = nullptr;
+  }
+  m_cache.invalidate();
+  m_planesValid = false;
+}
+
+bool ProxySolver::setObjectPoints(std::uint32_t object, const Vec3* points, std::size_t count)
+{
+  const int deforming = m_deforming != nullptr ? m_deforming->indexOf(object) : -1;
+  if (deforming < 0)
+  {
+    return false;
+  }
+  DeformingObjectSet::Entry& entry = m_deforming->entries[static_cast<std::size_t>(deforming)];
+  if (count != entry.pending.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!isFinite(points[i]))
+    {
+      return false;
+    }
+  }
+  std::copy(points, points + count, entry.pending.begin());
+  entry.hasPending = true;
+  return true;
+}
+
+bool ProxySolver::followDeformingObjects(ProxyTickResult& result)
+{
+  bool moved = false;
+  bool pushed = false;
+  const double radius = m_parameters.radius;
+  const double rest = radius + 0.5 * m_skin;
+  for (DeformingObjectSet::Entry& entry : m_deforming->entries)
+  {
+    if (!entry.hasPending)
+    {
+      continue;
+    }
+    entry.hasPending = false;
+    moved = true;
+    CollisionObject& object = entry.current;
+    const std::vector<Vec3>& before = object.mesh.points();
+    double largestSquared = 0.0;
+    for (std::size_t i = 0; i < before.size(); ++i)
+    {
+      largestSquared = std::max(largestSquared, squaredDistance(entry.pending[i], before[i]));
+    }
+    // The surface point nearest the proxy, among those the step could bring within its reach,
+    // carries the proxy along the contact normal as far as that point comes toward it: a tissue
+    // pressed back by the proxy's own force lifts it as a body's surface does.
+    Vec3 lastNormal;
+    const NearestTriangle near =
+      object.tree.nearest(object.mesh, m_proxy, rest + contactEpsilon() + std::sqrt(largestSquared),
+                          m_scratch, &result.queries);
+    if (near.found)
+    {
+      const Vec3 away = m_proxy - near.closest.point;
+      const double length = norm(away);
+      if (length > 0.0)
+      {
+        lastNormal = away / length;
+        const auto& corner = object.mesh.indices(near.triangle);
+        Vec3 shift;
+        for (int k = 0; k < 3; ++k)
+        {
+          shift += (entry.pending[corner[k]] - before[corner[k]]) * near.closest.weights[k];
+        }
+        const double height = dot(m_proxy - (near.closest.point + shift), lastNormal);
+        if (height < rest)
+        {
+          m_proxy += lastNormal * (rest - height);
+          pushed = true;
+        }
+      }
+    }
+    object.mesh.movePoints(entry.pending.data(), entry.pending.size());
+    object.refitQueries(entry.refitMargin);
+    // Whatever of the new surface still overlaps the proxy (a fold, a neighbour that rose more
+    // than the carried point) pushes it out along its own normal, nearest first.
+    for (int k = 0; k < kMaxDeformationPushes; ++k)
+    {
+      const NearestTriangle inside =
+        object.tree.nearest(object.mesh, m_proxy, radius, m_scratch, &result.queries);
+      if (!inside.found)
+      {
+        break;
+      }
+      const Vec3 away = m_proxy - inside.closest.point;
+      const double length = norm(away);
+      const Vec3 normal = length > 0.0 ? away / length : lastNormal;
+      if (!(squaredNorm(normal) > 0.0))
+      {
+        break; // the centre on the surface with no contact seen before: no side to choose
+      }
+      m_proxy = inside.closest.point + normal * rest;
+      lastNormal = normal;
+      pushed = true;
+    }
+  }
+  if (moved)
+  {
+    m_planesValid = false;
+    result.proxy = m_proxy;
+    result.conditions.set(TickCondition::pushedByObject, pushed);
+  }
+  return moved;
+}
+
 void ProxySolver::refreshCache(QueryStats& stats)
 {
   // The geometry may have moved since the last tick's gathers.
@@ -229,9 +348,10 @@ void ProxySolver::refreshCache(QueryStats& stats)
 
 bool ProxySolver::cacheNeedsRebuild() const
 {
-  if (!m_parameters.temporalCoherence || m_scene == nullptr || m_moving != nullptr)
+  if (!m_parameters.temporalCoherence || m_scene == nullptr || m_moving != nullptr ||
+      m_deforming != nullptr)
   {
-    return false; // moving objects: the cached triangles would move under the cache
+    return false; // moving or deforming objects: the cached triangles would move under the cache
   }
   // Valid, and the proxy within half the cached margin of the centre: the next moves are likely
   // to stay covered.
@@ -320,7 +440,7 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
   }
   for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
   {
-    const CollisionObject& object = m_scene->objects[objectIndex];
+    const CollisionObject& object = queryObject(objectIndex);
     const RigidTransform* pose = treePose(objectIndex);
     SweepQuery inObject = query;
     if (pose != nullptr)
@@ -383,7 +503,7 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
   {
     for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
     {
-      const CollisionObject& object = m_scene->objects[objectIndex];
+      const CollisionObject& object = queryObject(objectIndex);
       const RigidTransform* pose = treePose(objectIndex);
       const std::uint32_t room = kMaxNearbyTriangles - stored;
       const std::uint32_t found = object.tree.gatherWithin(
@@ -774,6 +894,10 @@ ProxyTickResult ProxySolver::update(const Vec3& requestedFinger)
   if (m_moving != nullptr)
   {
     followMovingObjects(result);
+  }
+  if (m_deforming != nullptr && followDeformingObjects(result))
+  {
+    m_lastTravel = 0.0;
   }
   ProxyTickState tick(m_parameters, withinReach(requestedFinger), m_proxy, m_skin);
   if (m_moveRecord != nullptr)

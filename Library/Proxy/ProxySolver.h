@@ -10,6 +10,7 @@
 #include "Geometry/SphereTree.h"
 #include "Proxy/CandidateCache.h"
 #include "Proxy/CollisionScene.h"
+#include "Proxy/DeformingObjects.h"
 #include "Proxy/GoalSolver.h"
 #include "Proxy/MoveRecord.h"
 #include "Proxy/MovingObjects.h"
@@ -167,12 +168,48 @@ public:
   const RigidTransform& objectPose(std::uint32_t object) const;
   /// True when the solver uses a non-empty set of moving objects.
   bool hasMovingObjects() const { return m_moving != nullptr && !m_moving->entries.empty(); }
-  /// Object `object`'s mesh where it is now: the moved copy of a moving object, or the scene's.
+  /// Object `object`'s mesh where it is now: the moved copy of a moving object, the current copy
+  /// of a deforming one, or the scene's.
   const TriangleMesh& placedMesh(std::uint32_t object) const
   {
     const int moving = m_moving != nullptr ? m_moving->indexOf(object) : -1;
-    return moving < 0 ? m_scene->objects[object].mesh
-                      : m_moving->entries[static_cast<std::size_t>(moving)].mesh;
+    if (moving >= 0)
+    {
+      return m_moving->entries[static_cast<std::size_t>(moving)].mesh;
+    }
+    return queryObject(object).mesh;
+  }
+
+  /// Lets the listed objects deform (issue 35: tissue). Each gets its own copy (mesh, a sphere
+  /// tree of one sphere per triangle, filter records) that setObjectPoints moves and refits; the
+  /// scene's object is never changed. A scene with deforming objects answers every query from
+  /// the trees (no candidate cache). An object should not also be moving. Allocates: call after
+  /// setScene, off the haptic thread. An empty list: nothing deforms.
+  void setDeformingObjects(const std::vector<std::uint32_t>& objects);
+  /// Gives deforming object `object` its `count` points (as many as its mesh has, all finite,
+  /// in the scene's frame) where a simulation step left them. The next update first moves the
+  /// object there: the surface point the proxy rests on carries the proxy along its contact
+  /// normal as far as that point comes toward it, the tree is refit, and a proxy the new surface
+  /// still overlaps is pushed out along its nearest point's normal (at most
+  /// kMaxDeformationPushes times); then the tick runs as usual against the new surface. Returns
+  /// false and changes nothing for an object that does not deform or another count. Copies the
+  /// points; allocates nothing.
+  bool setObjectPoints(std::uint32_t object, const Vec3* points, std::size_t count);
+  /// How many times, at most, a tick's start pushes the proxy out of a deformed surface it
+  /// overlaps, each time to its nearest point's normal at the radius plus half the skin.
+  static constexpr int kMaxDeformationPushes = 8;
+  /// True when the solver has a non-empty set of deforming objects.
+  bool hasDeformingObjects() const
+  {
+    return m_deforming != nullptr && !m_deforming->entries.empty();
+  }
+  /// The collision object the queries use for scene object `object`: a deforming object's current
+  /// copy, or the scene's.
+  const CollisionObject& queryObject(std::uint32_t object) const
+  {
+    const int deforming = m_deforming != nullptr ? m_deforming->indexOf(object) : -1;
+    return deforming < 0 ? m_scene->objects[object]
+                         : m_deforming->entries[static_cast<std::size_t>(deforming)].current;
   }
 
   /// One tick: moves the proxy as far toward `finger` as the constraints allow. A finger farther
@@ -309,6 +346,9 @@ private:
 
   /// At a tick's start: moves each moving object whose pose changed, letting it push the proxy.
   void followMovingObjects(ProxyTickResult& result);
+  /// At a tick's start: moves each deforming object that was given new points, letting its
+  /// surface carry and push the proxy (setObjectPoints). Returns whether anything moved.
+  bool followDeformingObjects(ProxyTickResult& result);
   /// The pose a query in the world reaches object `object`'s tree through, or null for a static
   /// object.
   const RigidTransform* treePose(std::uint32_t object) const
@@ -323,6 +363,8 @@ private:
   /// with copies, so that a copy's m_moving never dangles).
   MovingObjectSet* m_moving = nullptr;
   std::shared_ptr<MovingObjectSet> m_ownedMoving;
+  /// The deforming objects (null: none), shared with copies like the moving objects.
+  std::shared_ptr<DeformingObjectSet> m_deforming;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;

@@ -33,9 +33,9 @@ public:
   /// replica). Call before each tick that is to be replayed.
   void remember(const ProxySolver& solver) { m_start = solver; }
 
-  /// Whether the remembered solver can be replayed exactly: a scene with moving objects shares
-  /// its moved meshes with every copy, so replaying a tick would move them again.
-  bool replayable() const { return !m_start.hasMovingObjects(); }
+  /// Whether the remembered solver can be replayed exactly: a scene with moving or deforming
+  /// objects shares its moved meshes with every copy, so replaying a tick would move them again.
+  bool replayable() const { return !m_start.hasMovingObjects() && !m_start.hasDeformingObjects(); }
 
   /// The least wall time in nanoseconds over repeats() updates toward `finger`, each from the
   /// remembered state; -1 when the state is not replayable.
