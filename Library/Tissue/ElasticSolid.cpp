@@ -301,11 +301,45 @@ void ElasticSolid::applySystem(const std::vector<Vec3>& v, std::vector<Vec3>& ou
       out[element.vertices[i]] = out[element.vertices[i]] + r * local * (h * h * element.volume);
     }
   }
+  for (int k = 0; k < m_numSprings; ++k)
+  {
+    const ContactSpring& spring = m_springs[k];
+    double along = 0.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      along += spring.weights[j] * dot(spring.normal, v[spring.vertices[j]]);
+    }
+    const Vec3 push = spring.normal * (h * h * spring.stiffness * along);
+    for (int j = 0; j < 3; ++j)
+    {
+      out[spring.vertices[j]] = out[spring.vertices[j]] + push * spring.weights[j];
+    }
+  }
   for (std::size_t i = 0; i < v.size(); ++i)
   {
     if (m_fixed[i] != 0)
     {
       out[i] = Vec3{};
+    }
+  }
+}
+
+void ElasticSolid::setContactSprings(const ContactSpring* springs, int count)
+{
+  m_numSprings = 0;
+  for (int k = 0; k < count && m_numSprings < kMaxContactSprings; ++k)
+  {
+    const ContactSpring& spring = springs[k];
+    bool usable = std::isfinite(spring.stiffness) && spring.stiffness >= 0.0 &&
+                  std::isfinite(spring.normal.x) && std::isfinite(spring.normal.y) &&
+                  std::isfinite(spring.normal.z);
+    for (int j = 0; j < 3 && usable; ++j)
+    {
+      usable = spring.vertices[j] < m_positions.size() && std::isfinite(spring.weights[j]);
+    }
+    if (usable)
+    {
+      m_springs[m_numSprings++] = spring;
     }
   }
 }
@@ -347,6 +381,19 @@ void ElasticSolid::step()
       d[0] += scale * (lm * rb.x * rb.x + shear);
       d[1] += scale * (lm * rb.y * rb.y + shear);
       d[2] += scale * (lm * rb.z * rb.z + shear);
+    }
+  }
+  for (int k = 0; k < m_numSprings; ++k)
+  {
+    const ContactSpring& spring = m_springs[k];
+    const Vec3& normal = spring.normal;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double scale = h * h * spring.stiffness * spring.weights[j] * spring.weights[j];
+      double* d = &m_diagonal[3 * spring.vertices[j]];
+      d[0] += scale * normal.x * normal.x;
+      d[1] += scale * normal.y * normal.y;
+      d[2] += scale * normal.z * normal.z;
     }
   }
   const auto precondition = [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {

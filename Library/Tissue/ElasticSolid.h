@@ -46,6 +46,25 @@ struct ElasticSolidSettings
   double solverTolerance = 0.0;
 };
 
+/// A spring pressing on a point of the solid's surface along one direction: a proxy's contact
+/// (TissueContact). The point is a weighted sum of three vertices (a surface triangle's corners
+/// by the contact point's weights); the spring's force on it changes by -stiffness n n^T times
+/// the point's motion.
+struct ContactSpring
+{
+  /// The three vertices the point is made of.
+  std::array<std::uint32_t, 3> vertices{};
+  /// Their weights (barycentric: at least 0, summing to 1).
+  std::array<double, 3> weights{};
+  /// The unit direction the spring acts along.
+  Vec3 normal;
+  /// Its stiffness (N/m), at least 0.
+  double stiffness = 0.0;
+};
+
+/// The most contact springs one step takes: a proxy has at most this many contact planes.
+inline constexpr int kMaxContactSprings = 32;
+
 /// A tetrahedral solid with per-element stiffness, fixed vertices and external forces.
 class ElasticSolid
 {
@@ -73,6 +92,19 @@ public:
   void setExternalForce(std::uint32_t vertex, const Vec3& force);
   /// Sets every vertex's external force to 0.
   void clearExternalForces();
+  /// The external force on `vertex` (N), as setExternalForce last set it.
+  const Vec3& externalForce(std::uint32_t vertex) const { return m_externalForces[vertex]; }
+  /// The springs the next steps take implicitly, beside the external forces (which hold their
+  /// force at the current positions): their stiffness joins the elastic stiffness in the step's
+  /// system, so that a stiff spring pressing a soft, light solid stays stable at the solid's step
+  /// (with the force held explicitly, a 1000 N/m proxy spring threw a 5 kPa block's surface
+  /// centimetres a step). At most kMaxContactSprings (more are ignored); vertices out of range
+  /// and non-finite values are ignored too; `count` 0 clears them. Allocates nothing.
+  void setContactSprings(const ContactSpring* springs, int count);
+  /// The springs setContactSprings kept.
+  int numContactSprings() const { return m_numSprings; }
+  /// Spring `k` of those, below numContactSprings().
+  const ContactSpring& contactSpring(int k) const { return m_springs[k]; }
 
   /// One implicit Euler step of settings().timeStep: no allocation, a fixed amount of work.
   void step();
@@ -116,7 +148,8 @@ private:
   void build(const std::vector<ElasticMaterial>& materials);
   /// Each element's rotation from the current positions: a step's few turns, or converged.
   void updateRotations(bool converge);
-  /// out = (1 + h damping) M v + h^2 K_rot v, with fixed vertices' rows and columns left out.
+  /// out = (1 + h damping) M v + h^2 (K_rot + K_springs) v, with fixed vertices' rows and columns
+  /// left out.
   void applySystem(const std::vector<Vec3>& v, std::vector<Vec3>& out) const;
   /// The elastic forces at the current positions, added to `forces`.
   void addElasticForces(std::vector<Vec3>& forces) const;
@@ -129,6 +162,8 @@ private:
   std::vector<Vec3> m_positions;
   std::vector<Vec3> m_velocities;
   std::vector<Vec3> m_externalForces;
+  ContactSpring m_springs[kMaxContactSprings];
+  int m_numSprings = 0;
   // The solver's work space, sized once: step() allocates nothing.
   std::vector<Vec3> m_rhs, m_residual, m_direction, m_product, m_preconditioned;
   std::vector<double> m_diagonal;
