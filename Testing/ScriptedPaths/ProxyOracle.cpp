@@ -289,6 +289,18 @@ struct MeshOracle::Impl
   }
 };
 
+MeshOracle::MeshOracle(const TriangleMesh& mesh)
+  : MeshOracle([&mesh] {
+    std::vector<TriangleCorners> corners;
+    corners.reserve(mesh.numTriangles());
+    for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
+    {
+      corners.push_back(mesh.corners(t));
+    }
+    return corners;
+  }())
+{}
+
 MeshOracle::MeshOracle(std::vector<TriangleCorners> triangles)
   : m_impl(std::make_unique<Impl>())
 {

@@ -51,6 +51,8 @@ public:
   };
 
   explicit MeshOracle(std::vector<TriangleCorners> triangles);
+  /// Over every triangle of `mesh` as it is now (a moved or deformed copy, say).
+  explicit MeshOracle(const TriangleMesh& mesh);
   /// All triangles of all objects of `scene`.
   explicit MeshOracle(const CollisionScene& scene);
   ~MeshOracle();

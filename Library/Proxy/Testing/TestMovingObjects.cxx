@@ -33,16 +33,6 @@ RigidTransform turnAbout(const Vec3& axis, double radians, const Vec3& translati
                                         translation);
 }
 
-std::vector<TriangleCorners> cornersOf(const TriangleMesh& mesh)
-{
-  std::vector<TriangleCorners> corners;
-  for (std::uint32_t t = 0; t < mesh.numTriangles(); ++t)
-  {
-    corners.push_back(mesh.corners(t));
-  }
-  return corners;
-}
-
 TEST(MovingObjects, PosedObjectAnswersAsTheSameMeshPlacedThere)
 {
   const RigidTransform pose = turnAbout(Vec3{1.0, 2.0, 0.5}, 0.7, Vec3{0.2, -0.05, 0.03});
@@ -115,7 +105,7 @@ TEST(MovingObjects, PosedObjectAnswersAsTheSameMeshPlacedThere)
 TEST(MovingObjects, ASphereMovingIntoTheProxyPushesItAndNeverHoldsIt)
 {
   const auto scene = scenes::makeScene(makeIcosphere(4, kSphereRadius));
-  const oracle::MeshOracle sphere(cornersOf(scene->objects[0].mesh));
+  const oracle::MeshOracle sphere(scene->objects[0].mesh);
   ProxyParameters parameters;
   parameters.radius = kRadius;
   auto solver = std::make_unique<ProxySolver>();

@@ -1,0 +1,196 @@
+// The tissue touched by the proxy (TissueContact, TetBoundary). The surface of a tetrahedral box
+// against what a box's surface must be; then a soft block, fixed at its base, pressed and
+// released by a finger through the proxy, in lockstep at 1 kHz with the solid stepping at 200 Hz:
+// - no tick leaves the proxy inside the block's surface as that tick has it (the scripted suites'
+//   oracle: CGAL, 128-bit distances, built over each tick's surface);
+// - the block gives way under the press and the proxy stays on it, still while the finger is;
+// - no energy gain: at every step the solid's energy (kinetic and elastic) is at most the work
+//   the proxy's force has done on it so far, and after the release it comes back to rest.
+#include "Tissue/TissueContact.h"
+
+#include "Proxy/CollisionScene.h"
+#include "Tissue/BoxTetMesh.h"
+#include "Tissue/TetBoundary.h"
+
+#include "ProxyOracle.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace proxima
+{
+namespace
+{
+TEST(TetBoundary, ABoxOfTetrahedraIsBoundedByItsSixFacesFacedOut)
+{
+  const int nx = 3;
+  const int ny = 2;
+  const int nz = 4;
+  const TetMesh mesh = makeBoxTetMesh(Vec3{-0.01, 0.0, 0.02}, Vec3{0.02, 0.01, 0.05}, nx, ny, nz);
+  const auto triangles = boundaryTriangles(mesh);
+  // Two triangles per cell face on the box's surface.
+  EXPECT_EQ(triangles.size(), static_cast<std::size_t>(4 * (nx * ny + ny * nz + nz * nx)));
+  // Closed and consistently oriented: every directed edge once, and its reverse once.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]}];
+    }
+  }
+  for (const auto& [edge, count] : directed)
+  {
+    EXPECT_EQ(count, 1) << edge.first << "-" << edge.second;
+    EXPECT_EQ(directed.count({edge.second, edge.first}), 1u) << edge.first << "-" << edge.second;
+  }
+  // Faced out: the volume the faces enclose (divergence theorem) is the tetrahedra's, positive.
+  double enclosed = 0.0;
+  for (const auto& t : triangles)
+  {
+    enclosed += dot(mesh.points[t[0]], cross(mesh.points[t[1]], mesh.points[t[2]])) / 6.0;
+  }
+  EXPECT_NEAR(enclosed, totalVolume(mesh), 1e-15);
+  EXPECT_NEAR(enclosed, 0.03 * 0.01 * 0.03, 1e-15);
+  // Every point of the box's surface is on a triangle; the inside points on none.
+  const TriangleSoup soup = boundarySoup(mesh);
+  EXPECT_EQ(soup.points.size(), mesh.points.size());
+  EXPECT_EQ(soup.triangles, triangles);
+}
+
+// A block of 4 x 4 x 2 cm (cells of 5 mm), 5 kPa, fixed along its base; a proxy of 5 mm radius
+// on a 1000 N/m spring. The finger comes down from 1 cm above the top's centre to 3 mm below it
+// in 0.4 s, holds 1 s, goes back up in 0.4 s and waits 1.2 s.
+TEST(TissueContact, APressAndReleaseOnASoftBlock)
+{
+  constexpr double kRadius = 0.005;
+  constexpr double kStiffness = 1000.0;
+  constexpr double kRate = 1000.0;
+  constexpr int kTicksPerStep = 5; // the solid at 200 Hz
+  const TetMesh block = makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
+  ElasticSolidSettings settings;
+  settings.timeStep = kTicksPerStep / kRate;
+  settings.damping = 20.0;
+  ElasticSolid solid(block, ElasticMaterial{5000.0, 0.45}, settings);
+  for (std::uint32_t v = 0; v < block.points.size(); ++v)
+  {
+    if (block.points[v].z < -0.02 + 1e-9)
+    {
+      solid.fixVertex(v);
+    }
+  }
+  CollisionScene scene;
+  TriangleMesh surface;
+  MeshError error;
+  ASSERT_TRUE(surface.build(boundarySoup(block), error)) << error.message;
+  scene.addObject(std::move(surface));
+  ProxyParameters parameters;
+  parameters.radius = kRadius;
+  parameters.stiffness = kStiffness;
+  parameters.timeStep = 1.0 / kRate;
+  auto solver = std::make_unique<ProxySolver>();
+  solver->setScene(&scene, parameters);
+  TissueContact contact(solid, *solver, 0, kStiffness);
+
+  auto fingerAt = [](double t) {
+    const double high = 0.01;
+    const double low = -0.003;
+    double z = low;
+    if (t < 0.4)
+    {
+      z = high + (low - high) * t / 0.4;
+    }
+    else if (t >= 1.4 && t < 1.8)
+    {
+      z = low + (high - low) * (t - 1.4) / 0.4;
+    }
+    else if (t >= 1.8)
+    {
+      z = high;
+    }
+    return Vec3{0.0, 0.0, z + kRadius};
+  };
+  solver->resetProxy(fingerAt(0.0));
+  double deepest = -1.0; // how far into the proxy radius the surface came, worst tick
+  double work = 0.0;     // by the proxy's force on the solid, so far
+  double excess = -1.0;  // the largest energy - work
+  double indentation = 0.0;
+  double heldForce = 0.0;
+  double restless = 0.0; // the largest move of the proxy between ticks late in the hold
+  Vec3 lastProxy;
+  const int ticks = static_cast<int>(3.0 * kRate);
+  std::vector<Vec3> before = solid.positions();
+  for (int i = 0; i < ticks; ++i)
+  {
+    const Vec3 finger = fingerAt(i / kRate);
+    const ProxyTickResult result = solver->update(finger);
+    const oracle::MeshOracle surfaceNow(solver->placedMesh(0));
+    deepest = std::max(deepest, kRadius - surfaceNow.distance(result.proxy, 2.0 * kRadius));
+    contact.addTick(result);
+    if ((i + 1) % kTicksPerStep == 0)
+    {
+      before = solid.positions();
+      contact.step();
+      // The work of the step's force: the held force times each vertex's displacement, less
+      // what the implicit springs gave back as the surface gave way (a linear spring's force
+      // falls by k s over a displacement s along its normal: its work is f0 s - k s^2 / 2).
+      const std::vector<Vec3>& after = solid.positions();
+      for (std::size_t v = 0; v < after.size(); ++v)
+      {
+        work += dot(solid.externalForce(static_cast<std::uint32_t>(v)), after[v] - before[v]);
+      }
+      for (int k = 0; k < solid.numContactSprings(); ++k)
+      {
+        const ContactSpring& spring = solid.contactSpring(k);
+        double along = 0.0;
+        for (int j = 0; j < 3; ++j)
+        {
+          along += spring.weights[static_cast<std::size_t>(j)] *
+                   dot(spring.normal, after[spring.vertices[static_cast<std::size_t>(j)]] -
+                                        before[spring.vertices[static_cast<std::size_t>(j)]]);
+        }
+        work -= 0.5 * spring.stiffness * along * along;
+      }
+      excess = std::max(excess, solid.kineticEnergy() + solid.elasticEnergy() - work);
+    }
+    if (i >= static_cast<int>(1.0 * kRate) && i < static_cast<int>(1.4 * kRate))
+    {
+      // Late in the hold, with the finger still: the proxy must be still too.
+      if (i > static_cast<int>(1.0 * kRate))
+      {
+        restless = std::max(restless, distance(result.proxy, lastProxy));
+      }
+      lastProxy = result.proxy;
+    }
+    if (i == static_cast<int>(1.39 * kRate))
+    {
+      indentation = -(result.proxy.z - kRadius);
+      heldForce = kStiffness * norm(finger - result.proxy);
+    }
+  }
+  const double restEnergy = solid.kineticEnergy() + solid.elasticEnergy();
+  std::printf("[ measured ] surface at most %.3g m into the proxy; held: indentation %.3g m, "
+              "force %.3g N; work %.3g J, largest energy - work %.3g J, energy at the end %.3g J, "
+              "largest displacement at the end %.3g m; late in the hold the proxy moved at most "
+              "%.3g m a tick\n",
+              deepest, indentation, heldForce, work, excess, restEnergy, contact.maxDisplacement(),
+              restless);
+  EXPECT_LE(deepest, 1e-9) << "the proxy was left inside the block's surface";
+  EXPECT_GT(indentation, 0.001) << "the block did not give way";
+  EXPECT_GT(heldForce, 0.01) << "the proxy lost the block while pressed";
+  // Loaded only where the proxy's planes touched, the block flipped the proxy from one side of
+  // the dent to the other every step (0.6 mm apart) with the finger still.
+  EXPECT_LT(restless, 1e-6) << "the proxy chatters on the block with the finger at rest";
+  EXPECT_GT(work, 0.0);
+  EXPECT_LE(excess, 1e-6 * work) << "the solid gained energy the proxy did not put in";
+  EXPECT_LT(restEnergy, 1e-3 * work) << "the block is not back at rest after the release";
+  EXPECT_LT(contact.maxDisplacement(), 1e-4);
+}
+} // namespace
+} // namespace proxima

@@ -1,0 +1,146 @@
+#include "Tissue/TissueContact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace proxima
+{
+TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object,
+                             double stiffness)
+  : m_solid(solid)
+  , m_solver(solver)
+  , m_object(object)
+  , m_stiffness(stiffness)
+{
+  const std::size_t count = solid.positions().size();
+  if (solver.placedMesh(object).numPoints() != count)
+  {
+    throw std::invalid_argument("TissueContact: the object's mesh has " +
+                                std::to_string(solver.placedMesh(object).numPoints()) +
+                                " points, the solid " + std::to_string(count));
+  }
+  solver.setDeformingObjects({object});
+  m_footprint.resize(kMaxFootprint);
+  m_scratch = std::make_unique<SphereTreeScratch>();
+  m_forceSum.assign(count, Vec3{});
+  m_isLoaded.assign(count, 0);
+  m_loaded.reserve(count);
+}
+
+void TissueContact::addTick(const ProxyTickResult& result)
+{
+  ++m_ticks;
+  m_numSprings = 0;
+  Vec3 force;
+  double stiffness = 0.0;
+  for (int k = 0; k < result.numContacts; ++k)
+  {
+    const ContactPlane& plane = result.contacts[k];
+    if (plane.object == m_object && plane.depth > 0.0)
+    {
+      force += plane.normal * (-m_stiffness * plane.stiffnessScale * plane.depth);
+      stiffness = std::max(stiffness, m_stiffness * plane.stiffnessScale);
+    }
+  }
+  if (!(stiffness > 0.0))
+  {
+    return;
+  }
+  const CollisionObject& object = m_solver.queryObject(m_object);
+  const double radius = m_solver.parameters().radius;
+  const double gap = kFootprintGap * radius;
+  const std::uint32_t found = object.tree.gatherWithin(
+    object.mesh, result.proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
+  const std::uint32_t count = std::min(found, kMaxFootprint);
+  // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles) go to the
+  // triangles that carry the most.
+  std::sort(m_footprint.begin(), m_footprint.begin() + count,
+            [](const NearbyTriangle& a, const NearbyTriangle& b) {
+              return a.closest.squaredDistance < b.closest.squaredDistance ||
+                     (a.closest.squaredDistance == b.closest.squaredDistance &&
+                      a.triangle < b.triangle);
+            });
+  double total = 0.0;
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    const double clearance = std::sqrt(m_footprint[i].closest.squaredDistance) - radius;
+    total += std::max(0.0, 1.0 - clearance / gap);
+  }
+  if (!(total > 0.0))
+  {
+    return;
+  }
+  const int maxSpringTriangles = kMaxContactSprings / 3;
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    const NearbyTriangle& near = m_footprint[i];
+    const double clearance = std::sqrt(near.closest.squaredDistance) - radius;
+    const double share = std::max(0.0, 1.0 - clearance / gap) / total;
+    if (!(share > 0.0))
+    {
+      continue;
+    }
+    const auto& corner = object.mesh.indices(near.triangle);
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t vertex = corner[static_cast<std::size_t>(c)];
+      m_forceSum[vertex] += force * (share * near.closest.weights[c]);
+      if (m_isLoaded[vertex] == 0)
+      {
+        m_isLoaded[vertex] = 1;
+        m_loaded.push_back(vertex);
+      }
+    }
+    if (static_cast<int>(i) >= maxSpringTriangles)
+    {
+      continue;
+    }
+    // The footprint held by the spring in every direction during the step, its stiffness shared
+    // as the force is: along the force alone, the tangential part stayed explicit.
+    const Vec3 axes[3] = {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}, Vec3{0.0, 0.0, 1.0}};
+    for (const Vec3& axis : axes)
+    {
+      ContactSpring& spring = m_springs[m_numSprings++];
+      spring.vertices = corner;
+      spring.weights = {near.closest.weights[0], near.closest.weights[1], near.closest.weights[2]};
+      spring.normal = axis;
+      spring.stiffness = stiffness * share;
+    }
+  }
+}
+
+void TissueContact::step()
+{
+  const double share = m_ticks > 0 ? 1.0 / static_cast<double>(m_ticks) : 0.0;
+  m_solid.clearExternalForces();
+  m_lastForce = Vec3{};
+  for (const std::uint32_t vertex : m_loaded)
+  {
+    const Vec3 force = m_forceSum[vertex] * share;
+    m_solid.setExternalForce(vertex, force);
+    m_lastForce += force;
+    m_forceSum[vertex] = Vec3{};
+    m_isLoaded[vertex] = 0;
+  }
+  m_loaded.clear();
+  m_ticks = 0;
+  m_solid.setContactSprings(m_springs, m_numSprings);
+  m_solid.step();
+  const std::vector<Vec3>& positions = m_solid.positions();
+  m_solver.setObjectPoints(m_object, positions.data(), positions.size());
+}
+
+double TissueContact::maxDisplacement() const
+{
+  double largest = 0.0;
+  const std::vector<Vec3>& positions = m_solid.positions();
+  const std::vector<Vec3>& rest = m_solid.rest().points;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+  {
+    largest = std::max(largest, distance(positions[i], rest[i]));
+  }
+  return largest;
+}
+} // namespace proxima

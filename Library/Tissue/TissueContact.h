@@ -1,0 +1,75 @@
+// A tissue touched by the proxy, in lockstep: the force the proxy's spring presses a deforming
+// object with goes to the corners of the triangles it touches, the elastic solid steps under it
+// at its own rate, and the proxy solver is given the surface where the step left it (issue 35,
+// item 3). The surface is the solid's boundary over the solid's own points (boundarySoup), so
+// the solid's positions are the object's points as they are.
+#pragma once
+
+#include "Core/Vec3.h"
+#include "Proxy/ProxySolver.h"
+#include "Tissue/ElasticSolid.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace proxima
+{
+/// Couples an ElasticSolid to scene object `object` of a ProxySolver, which this makes deforming
+/// (ProxySolver::setDeformingObjects). Per proxy tick, addTick(); per simulation step, step().
+/// Neither allocates after construction.
+class TissueContact
+{
+public:
+  /// `object`'s mesh must have the solid's points, in order (a scene object built from
+  /// boundarySoup(solid.rest())); `stiffness` is the spring's kp (N/m), the one the servo renders
+  /// the proxy's force with. Throws std::invalid_argument when the counts differ.
+  TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object, double stiffness);
+
+  /// After a proxy tick: the force the spring presses the object with, the sum of kp mu_i along
+  /// -n_i over its contact planes (eq. 19, with each plane's stiffness scale), is spread over the
+  /// proxy's footprint and added to the sum for the next step. The footprint is every triangle of
+  /// the object within kFootprintGap radii of the proxy's surface, each weighted by how close it
+  /// comes (1 at the surface, 0 at the gap), its share applied at its point nearest the proxy by
+  /// that point's weights. A soft surface wraps around a pressing sphere; loaded at the one or
+  /// two points the proxy's planes touch, a block's surface was dented into a pit whose sides the
+  /// proxy then pressed in turn, flipping from one to the other every step.
+  void addTick(const ProxyTickResult& result);
+  /// How far beyond the proxy's radius, as a fraction of it, the footprint reaches.
+  static constexpr double kFootprintGap = 0.25;
+  /// The most triangles a footprint spreads the force over (the nearest first).
+  static constexpr std::uint32_t kMaxFootprint = 512;
+  /// One step of the solid under the mean of the forces added since the last step, then the
+  /// solver is given the new positions (ProxySolver::setObjectPoints). The force is the proxy's
+  /// sampled at the servo rate and held over the slower step, and the last tick's contacts press
+  /// on as springs of stiffness kp along their normals, taken implicitly by the step
+  /// (ElasticSolid::setContactSprings): as the surface gives way under the proxy the spring's
+  /// force falls within the step, as the hand's would. Held explicitly alone, a 1000 N/m spring
+  /// on a 5 kPa block threw its surface centimetres a step and the block gained energy.
+  void step();
+
+  /// The force the last step applied to the solid, summed over its vertices (N).
+  const Vec3& lastForce() const { return m_lastForce; }
+  /// The largest distance of any vertex from where it rests (m).
+  double maxDisplacement() const;
+
+private:
+  ElasticSolid& m_solid;
+  ProxySolver& m_solver;
+  std::uint32_t m_object;
+  double m_stiffness;
+  /// Per vertex, the force summed over the ticks since the last step.
+  std::vector<Vec3> m_forceSum;
+  /// The vertices with a force in m_forceSum (each once), to clear them after a step.
+  std::vector<std::uint32_t> m_loaded;
+  std::vector<char> m_isLoaded;
+  int m_ticks = 0;
+  Vec3 m_lastForce;
+  /// The last tick's footprint, as springs for the next step.
+  ContactSpring m_springs[kMaxContactSprings];
+  int m_numSprings = 0;
+  /// The footprint's triangles, and the scratch of the query that finds them.
+  std::vector<NearbyTriangle> m_footprint;
+  std::unique_ptr<SphereTreeScratch> m_scratch;
+};
+} // namespace proxima
