@@ -45,7 +45,8 @@ struct MeshError
 };
 
 /// The kernel's triangle mesh: a TriangleSoup that build() validated, with each triangle's corners
-/// copied out for the exact tests. It does not change after build() except through placeAs() and movePoints().
+/// copied out for the exact tests. It does not change after build() except through placeAs() and
+/// movePoints().
 class TriangleMesh
 {
 public:

@@ -293,13 +293,13 @@ namespace proxima
 namespace
 {
 // The real-time default budget (16 iterations) on the probe path of seed 3 over the shared bunny
-// (scale 0.4, radius 2 mm), 1.5 s around its tick 7849: with the finger at rest, one unbudgeted
-// tick of 49 iterations settles there. With the budget, a tick whose stretched slides were still
-// trials when the budget ran out walked back to where it began and left the solver as it had
-// found it, so every later tick made the same trials and walked back again: 253 ticks in a row
-// budget-limited with the finger still, where rule (h) of the oracle allows 20. A budget-limited
-// tick now hands its stretch trust region on to the next (ProxySolver::update). Every tick under
-// the oracle, rule (h) included.
+// (scale 0.4, radius 2 mm), from 7.1 to 8.0 s, around its tick 7849: with the finger at rest, one
+// unbudgeted tick of 49 iterations settles there. With the budget, a tick whose stretched slides
+// were still trials when the budget ran out walked back to where it began and left the solver as
+// it had found it, so every later tick made the same trials and walked back again: 253 ticks in a
+// row budget-limited with the finger still, where the oracle's rest rule allows 20. The second
+// half of a budget is now for plain slides (TickBudget::secondHalf), so a limited tick always
+// ends nearer. Every tick under the oracle, the rest rule included.
 TEST(BudgetedProbePaths, BunnySeed3SettlesSoonAfterTheFingerRests)
 {
   const std::string mesh = std::string(PROXIMA_SHARED_MESHES) + "/stanford-bunny.obj";
@@ -319,8 +319,11 @@ TEST(BudgetedProbePaths, BunnySeed3SettlesSoonAfterTheFingerRests)
   c.oracle = &oracle;
   c.proxy.radius = 0.002;
   c.proxy.tickBudgetIterations = kDefaultTickBudgetIterations;
+  // Not shortened by PROXIMA_STRESS_SCALE as the other windows are: the budget bites only at
+  // 7.84-7.85 s, and the rest after it is what the case checks (the sanitizer build's quarter
+  // window ended before either).
   constexpr double kFrom = 7.1;
-  const double until = kFrom + 1.5 * environmentScale();
+  constexpr double until = 8.0;
   for (std::size_t i = 0; i < whole.size(); ++i)
   {
     if (whole.times[i] >= kFrom && whole.times[i] <= until)
