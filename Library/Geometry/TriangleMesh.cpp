@@ -129,6 +129,11 @@ void TriangleMesh::placeAs(const TriangleMesh& placed, const RigidTransform& pos
   {
     m_soup.pointNormals[i] = pose.rotate(placed.m_soup.pointNormals[i]);
   }
+  copyCornersFromPoints();
+}
+
+void TriangleMesh::copyCornersFromPoints()
+{
   Aabb bounds;
   for (std::size_t t = 0; t < m_corners.size(); ++t)
   {
@@ -157,20 +162,13 @@ bool TriangleMesh::movePoints(const Vec3* points, std::size_t count)
     }
   }
   std::copy(points, points + count, m_soup.points.begin());
-  Aabb bounds;
+  copyCornersFromPoints();
+  // A deformation, unlike a rigid placement, can collapse a triangle or open a collapsed one.
   std::uint32_t numDegenerate = 0;
-  for (std::size_t t = 0; t < m_corners.size(); ++t)
+  for (const TriangleCorners& corners : m_corners)
   {
-    const auto& tri = m_soup.triangles[t];
-    m_corners[t] =
-      TriangleCorners{m_soup.points[tri[0]], m_soup.points[tri[1]], m_soup.points[tri[2]]};
-    bounds.expand(m_corners[t].a);
-    bounds.expand(m_corners[t].b);
-    bounds.expand(m_corners[t].c);
-    numDegenerate += isDegenerate(m_corners[t]) ? 1u : 0u;
+    numDegenerate += isDegenerate(corners) ? 1u : 0u;
   }
-  m_bounds = bounds;
-  m_maxAbsCoordinate = std::max(maxAbsComponent(bounds.lower), maxAbsComponent(bounds.upper));
   m_numDegenerate = numDegenerate;
   return true;
 }

@@ -104,6 +104,10 @@ public:
   std::size_t memoryBytes() const;
 
 private:
+  /// Remakes every triangle's corner copy, the bounds and the largest coordinate from the points
+  /// as they now are (placeAs and movePoints). Allocates nothing.
+  void copyCornersFromPoints();
+
   TriangleSoup m_soup;
   std::vector<TriangleCorners> m_corners;
   Aabb m_bounds;
