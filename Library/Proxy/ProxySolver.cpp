@@ -322,7 +322,11 @@ bool ProxySolver::followDeformingObjects(ProxyTickResult& result)
   {
     m_planesValid = false;
     result.proxy = m_proxy;
-    result.conditions.set(TickCondition::pushedByObject, pushed);
+    if (pushed)
+    {
+      // Only ever set here: a moving object may already have pushed the proxy this tick.
+      result.conditions.set(TickCondition::pushedByObject);
+    }
   }
   return moved;
 }
