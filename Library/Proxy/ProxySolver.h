@@ -203,6 +203,11 @@ public:
   {
     return m_deforming != nullptr && !m_deforming->entries.empty();
   }
+  /// True when scene object `object` is one of the deforming objects.
+  bool isDeforming(std::uint32_t object) const
+  {
+    return m_deforming != nullptr && m_deforming->indexOf(object) >= 0;
+  }
   /// The collision object the queries use for scene object `object`: a deforming object's current
   /// copy, or the scene's.
   const CollisionObject& queryObject(std::uint32_t object) const

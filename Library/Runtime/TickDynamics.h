@@ -51,8 +51,9 @@ public:
   virtual void poses(BodyPoses& out) const = 0;
 
   /// For one thread that owns `solver`: lets the bodies' objects move in it (after its
-  /// setScene; allocates their moved copies) at their present poses.
-  void attach(ProxySolver& solver) const
+  /// setScene; allocates their moved copies) at their present poses. A dynamics whose objects
+  /// deform instead (Tissue/TissueDynamics.h) makes them deforming here.
+  virtual void attach(ProxySolver& solver)
   {
     solver.setMovingObjects(movingObjects());
     placeBodies(solver);

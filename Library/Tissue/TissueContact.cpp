@@ -21,7 +21,10 @@ TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint
                                 std::to_string(solver.placedMesh(object).numPoints()) +
                                 " points, the solid " + std::to_string(count));
   }
-  solver.setDeformingObjects({object});
+  if (!solver.isDeforming(object))
+  {
+    solver.setDeformingObjects({object});
+  }
   m_footprint.resize(kMaxFootprint);
   m_scratch = std::make_unique<SphereTreeScratch>();
   m_forceSum.assign(count, Vec3{});
@@ -31,8 +34,6 @@ TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint
 
 void TissueContact::addTick(const ProxyTickResult& result)
 {
-  ++m_ticks;
-  m_numSprings = 0;
   Vec3 force;
   double stiffness = 0.0;
   for (int k = 0; k < result.numContacts; ++k)
@@ -44,6 +45,13 @@ void TissueContact::addTick(const ProxyTickResult& result)
       stiffness = std::max(stiffness, m_stiffness * plane.stiffnessScale);
     }
   }
+  addPress(result.proxy, force, stiffness);
+}
+
+void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffness)
+{
+  ++m_ticks;
+  m_numSprings = 0;
   if (!(stiffness > 0.0))
   {
     return;
@@ -52,7 +60,7 @@ void TissueContact::addTick(const ProxyTickResult& result)
   const double radius = m_solver.parameters().radius;
   const double gap = kFootprintGap * radius;
   const std::uint32_t found = object.tree.gatherWithin(
-    object.mesh, result.proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
+    object.mesh, proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
   const std::uint32_t count = std::min(found, kMaxFootprint);
   // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles) go to the
   // triangles that carry the most.

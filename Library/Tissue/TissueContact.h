@@ -22,7 +22,8 @@ class TissueContact
 {
 public:
   /// `object`'s mesh must have the solid's points, in order (a scene object built from
-  /// boundarySoup(solid.rest())); `stiffness` is the spring's kp (N/m), the one the servo renders
+  /// boundarySoup(solid.rest())); it is made deforming unless it already is (setDeformingObjects
+  /// with every tissue of the scene first, for a scene of several); `stiffness` is the spring's kp (N/m), the one the servo renders
   /// the proxy's force with. Throws std::invalid_argument when the counts differ.
   TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object, double stiffness);
 
@@ -35,6 +36,10 @@ public:
   /// two points the proxy's planes touch, a block's surface was dented into a pit whose sides the
   /// proxy then pressed in turn, flipping from one to the other every step.
   void addTick(const ProxyTickResult& result);
+  /// The same for a tick seen from outside the solver: the proxy at `proxy` presses the object
+  /// with `force` (N) through a spring of `stiffness` (N/m, kp times the contacts' stiffness
+  /// scale); a stiffness of 0 is a tick without contact on the object.
+  void addPress(const Vec3& proxy, const Vec3& force, double stiffness);
   /// How far beyond the proxy's radius, as a fraction of it, the footprint reaches.
   static constexpr double kFootprintGap = 0.25;
   /// The most triangles a footprint spreads the force over (the nearest first).

@@ -1,0 +1,163 @@
+#include "Tissue/TissueDynamics.h"
+
+#include "Geometry/ClosestPoint.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace proxima
+{
+
+TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffness, double rate)
+  : m_stiffness(stiffness)
+{
+  if (tissues.empty())
+  {
+    throw std::invalid_argument("TissueDynamics: no tissue");
+  }
+  if (!(stiffness > 0.0) || !(rate > 0.0) || !std::isfinite(stiffness) || !std::isfinite(rate))
+  {
+    throw std::invalid_argument("TissueDynamics: the stiffness and rate must be above 0");
+  }
+  // One step for all, a whole number of ticks: the solids step on the servo's clock, so that a
+  // lockstep run is the same at any speed of the machine.
+  const double ticks = std::round(tissues.front().settings.timeStep * rate);
+  m_ticksPerStep = static_cast<int>(std::clamp(ticks, 1.0, 1e6));
+  m_tissues.reserve(tissues.size());
+  for (TissueObject& given : tissues)
+  {
+    ElasticSolidSettings settings = given.settings;
+    settings.timeStep = m_ticksPerStep / rate;
+    Tissue tissue;
+    tissue.object = given.object;
+    tissue.solid = std::make_unique<ElasticSolid>(given.tets, given.materials, settings);
+    for (const std::uint32_t vertex : given.fixedVertices)
+    {
+      if (vertex >= given.tets.points.size())
+      {
+        throw std::invalid_argument("TissueDynamics: fixed vertex " + std::to_string(vertex) +
+                                    " of " + std::to_string(given.tets.points.size()));
+      }
+      tissue.solid->fixVertex(vertex);
+    }
+    m_tissues.push_back(std::move(tissue));
+  }
+}
+
+TissueDynamics::~TissueDynamics() = default;
+
+void TissueDynamics::attach(ProxySolver& solver)
+{
+  std::vector<std::uint32_t> objects;
+  for (const Tissue& tissue : m_tissues)
+  {
+    objects.push_back(tissue.object);
+  }
+  solver.setDeformingObjects(objects);
+  for (Tissue& tissue : m_tissues)
+  {
+    tissue.contact =
+      std::make_unique<TissueContact>(*tissue.solid, solver, tissue.object, m_stiffness);
+  }
+  placeBodies(solver);
+}
+
+void TissueDynamics::placeBodies(ProxySolver& solver) const
+{
+  for (const Tissue& tissue : m_tissues)
+  {
+    const std::vector<Vec3>& positions = tissue.solid->positions();
+    solver.setObjectPoints(tissue.object, positions.data(), positions.size());
+  }
+}
+
+double TissueDynamics::indentationAt(const Tissue& tissue, const ProxySolver& solver,
+                                     std::uint32_t triangle, const Vec3& point,
+                                     const Vec3& proxy) const
+{
+  // The contact point's weights on its triangle as it is now give the same material point at
+  // rest, and the triangle's corners at rest its tangent plane there: the indentation is how far
+  // the proxy's deepest point along that plane's normal lies below it (Hertz's d, for a surface
+  // that was flat under the proxy).
+  const TriangleMesh& mesh = solver.queryObject(tissue.object).mesh;
+  const auto& corner = mesh.indices(triangle);
+  const std::vector<Vec3>& now = mesh.points();
+  const ClosestPointResult on =
+    closestPointOnTriangle(point, now[corner[0]], now[corner[1]], now[corner[2]]);
+  const std::vector<Vec3>& rest = tissue.solid->rest().points;
+  const Vec3& a = rest[corner[0]];
+  const Vec3& b = rest[corner[1]];
+  const Vec3& c = rest[corner[2]];
+  const Vec3 atRest = a * on.weights[0] + b * on.weights[1] + c * on.weights[2];
+  const Vec3 across = cross(b - a, c - a);
+  const double area = norm(across);
+  if (!(area > 0.0))
+  {
+    return 0.0;
+  }
+  return dot(atRest - proxy, across / area) + solver.parameters().radius;
+}
+
+void TissueDynamics::step(HapticState& state, ProxySolver& solver)
+{
+  const auto begin = std::chrono::steady_clock::now();
+  for (Tissue& tissue : m_tissues)
+  {
+    // The spring's press on this tissue, plane by plane (eq. 19): kp mu_i along -n_i.
+    Vec3 force;
+    double deepest = 0.0;
+    int deepestContact = -1;
+    for (int k = 0; k < state.numContacts; ++k)
+    {
+      const ContactSnapshot& contact = state.contacts[k];
+      if (contact.object == tissue.object && contact.depth > 0.0)
+      {
+        force += contact.normal * (-m_stiffness * state.stiffnessScale * contact.depth);
+        if (contact.depth > deepest)
+        {
+          deepest = contact.depth;
+          deepestContact = k;
+        }
+      }
+    }
+    const double stiffness = deepestContact >= 0 ? m_stiffness * state.stiffnessScale : 0.0;
+    tissue.contact->addPress(state.proxy, force, stiffness);
+    TissueReading& reading = tissue.reading;
+    reading.force = norm(force);
+    reading.touched = false;
+    reading.indentation = 0.0;
+    for (int k = 0; k < state.numContacts; ++k)
+    {
+      const ContactSnapshot& contact = state.contacts[k];
+      if (contact.object == tissue.object)
+      {
+        // The contact the spring presses hardest, or any contact on the tissue.
+        const int chosen = deepestContact >= 0 ? deepestContact : k;
+        const ContactSnapshot& touched = state.contacts[chosen];
+        reading.touched = true;
+        reading.indentation =
+          indentationAt(tissue, solver, touched.triangle, touched.point, state.proxy);
+        tissue.deepest = std::max(tissue.deepest, reading.indentation);
+        break;
+      }
+    }
+  }
+  if (++m_ticksSinceStep >= m_ticksPerStep)
+  {
+    m_ticksSinceStep = 0;
+    ++m_steps;
+    for (Tissue& tissue : m_tissues)
+    {
+      tissue.contact->step();
+      tissue.reading.maxDisplacement = tissue.contact->maxDisplacement();
+    }
+  }
+  const auto end = std::chrono::steady_clock::now();
+  state.dynamicsNanoseconds =
+    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+}
+
+} // namespace proxima

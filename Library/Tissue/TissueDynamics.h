@@ -1,0 +1,114 @@
+// A scene's tissues as the runners' dynamics step (Runtime/TickDynamics.h): each tissue object's
+// elastic solid coupled to the proxy (TissueContact), pressed by the proxy's spring every tick and
+// stepped at its own slower rate, its surface handed to the solver for the next tick. What a
+// scene file's "tissue" objects become (IO/Scene/SceneTissue.h); `proxima run --scene` plays it
+// in lockstep, so that a run with tissue is reproducible bit for bit.
+#pragma once
+
+#include "Runtime/TickDynamics.h"
+#include "Tissue/ElasticSolid.h"
+#include "Tissue/TetMesh.h"
+#include "Tissue/TissueContact.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace proxima
+{
+
+/// One deforming object of a scene: its tetrahedra at rest in the scene's frame, whose boundary
+/// (boundarySoup) is the scene object's mesh, point for point.
+struct TissueObject
+{
+  /// The scene object whose surface the solid is.
+  std::uint32_t object = 0;
+  /// The solid at rest, in the scene's frame.
+  TetMesh tets;
+  /// One material per tetrahedron (a nodule is an inclusion of stiffer ones).
+  std::vector<ElasticMaterial> materials;
+  /// Density, damping, step and solver iterations.
+  ElasticSolidSettings settings;
+  /// The vertices held where they rest (the organ's attachment).
+  std::vector<std::uint32_t> fixedVertices;
+};
+
+/// What a tissue is doing after a tick, for `--tissue-out` and the summary.
+struct TissueReading
+{
+  /// The largest distance of any vertex from its rest position (m), as the last step left it.
+  double maxDisplacement = 0.0;
+  /// How far the proxy presses into the tissue (m): the depth of its deepest point below the
+  /// tangent plane, at rest, of the surface point it touches (that point's weights on its
+  /// triangle give the same material point at rest); Hertz's indentation where the surface was
+  /// flat. 0 when the proxy does not touch the tissue.
+  double indentation = 0.0;
+  /// The magnitude of the force the proxy's spring pressed the tissue with this tick (N).
+  double force = 0.0;
+  /// True when the proxy touched the tissue this tick.
+  bool touched = false;
+};
+
+/// The tissues of a scene, stepped by the runners once per tick (after the force stage) on the
+/// thread that owns the solver. The solids step every ticksPerStep() ticks.
+class TissueDynamics : public TickDynamics
+{
+public:
+  /// `stiffness` is the servo's kp (N/m) and `rate` its tick rate (Hz). Each solid's step is its
+  /// settings' timeStep rounded to a whole number of ticks (at least one), the same for every
+  /// tissue: the first one's. Throws std::invalid_argument for materials or settings the solid
+  /// refuses (ElasticSolid), a fixed vertex out of range, or no tissue.
+  TissueDynamics(std::vector<TissueObject> tissues, double stiffness, double rate);
+  ~TissueDynamics() override;
+
+  /// None: tissues deform, they do not move as rigid bodies.
+  std::vector<std::uint32_t> movingObjects() const override { return {}; }
+  /// Makes the tissue objects deforming in `solver` (after its setScene; allocates) and couples
+  /// each solid to it, then gives it the solids' present surfaces.
+  void attach(ProxySolver& solver) override;
+  /// Gives `solver` the solids' present surfaces (after attach). Allocates nothing.
+  void placeBodies(ProxySolver& solver) const override;
+  /// Presses each tissue with the tick's contacts on it (kp times their depths along their
+  /// normals), and on every ticksPerStep()-th tick steps the solids under the mean press and
+  /// hands the solver their surfaces. Sets `state.dynamicsNanoseconds`. Allocates nothing.
+  void step(HapticState& state, ProxySolver& solver) override;
+  /// No rigid poses: count 0.
+  void poses(BodyPoses& out) const override { out.count = 0; }
+
+  /// The number of tissues.
+  std::size_t numTissues() const { return m_tissues.size(); }
+  /// Tissue `k`'s scene object.
+  std::uint32_t object(std::size_t k) const { return m_tissues[k].object; }
+  /// Tissue `k`'s solid.
+  const ElasticSolid& solid(std::size_t k) const { return *m_tissues[k].solid; }
+  /// Tissue `k` after the last tick.
+  const TissueReading& reading(std::size_t k) const { return m_tissues[k].reading; }
+  /// The largest indentation tissue `k` has had in the run so far (m).
+  double deepestIndentation(std::size_t k) const { return m_tissues[k].deepest; }
+  /// The ticks between two steps of the solids.
+  int ticksPerStep() const { return m_ticksPerStep; }
+  /// The solids' steps so far.
+  std::uint64_t steps() const { return m_steps; }
+
+private:
+  struct Tissue
+  {
+    std::uint32_t object = 0;
+    std::unique_ptr<ElasticSolid> solid;
+    std::unique_ptr<TissueContact> contact;
+    TissueReading reading;
+    double deepest = 0.0;
+  };
+  /// The indentation of `tissue` by the proxy at `proxy` touching triangle `triangle` at `point`.
+  double indentationAt(const Tissue& tissue, const ProxySolver& solver, std::uint32_t triangle,
+                       const Vec3& point, const Vec3& proxy) const;
+
+  std::vector<Tissue> m_tissues;
+  double m_stiffness = 0.0;
+  int m_ticksPerStep = 1;
+  int m_ticksSinceStep = 0;
+  std::uint64_t m_steps = 0;
+};
+
+} // namespace proxima
