@@ -83,6 +83,15 @@ inline constexpr ParameterRange kPiecesPerTriangleRange{1.0, false, 1e6, ""};
 /// A tissue's tetrahedra's edge size (proxima tissue): above 0, at most 10 m.
 inline constexpr ParameterRange kTetSizeRange{0.0, true, 10.0, " m"};
 
+/// A tissue's Young's modulus: above 0, at most 1 GPa (soft tissue is a few kPa, cartilage MPa).
+inline constexpr ParameterRange kYoungsModulusRange{0.0, true, 1e9, " Pa"};
+/// A tissue's Poisson's ratio: from 0 to 0.499 (0.5, incompressible, locks linear tetrahedra).
+inline constexpr ParameterRange kPoissonRatioRange{0.0, false, 0.499, ""};
+/// A tissue's density: above 0, at most 1e5 kg/m^3.
+inline constexpr ParameterRange kTissueDensityRange{0.0, true, 1e5, " kg/m^3"};
+/// A tissue's mass-proportional damping: from 0 to 1e4 per second.
+inline constexpr ParameterRange kTissueDampingRange{0.0, false, 1e4, " 1/s"};
+
 /// Mesh inspection (proxima inspect): places listed per kind of defect, the angle under which a
 /// triangle is a sliver (no triangle has all angles above 60), and the welding distance.
 inline constexpr ParameterRange kDefectLocationsRange{0.0, false, 100000.0, ""};

@@ -4,6 +4,9 @@
 #include "IO/MeshPreparation/PointNormals.h"
 #include "IO/Scene/SceneFile.h"
 #include "IO/Scene/TextureImageFile.h"
+#include "IO/TissueMeshing/TetMeshFile.h"
+#include "IO/TissueMeshing/TissueMeshing.h"
+#include "Tissue/TetBoundary.h"
 
 #include <chrono>
 #include <map>
@@ -36,6 +39,30 @@ std::shared_ptr<const TextureImage> imageFor(const SceneTexture& texture, ImageC
            .first;
   }
   return it->second;
+}
+// A tissue's tetrahedra in the scene's frame: read from its .vtu file and scaled as the mesh
+// is, or made by wrapping and filling the (scaled) mesh; then placed by the object's pose.
+TetMesh tissueTets(const SceneObject& object, const TriangleSoup& scaled)
+{
+  TetMesh tets;
+  if (!object.tissue.tets.empty())
+  {
+    tets = readTetMeshFile(object.tissue.tets);
+    for (Vec3& point : tets.points)
+    {
+      point = point * object.scale;
+    }
+  }
+  else
+  {
+    TissueMeshingOptions options;
+    options.tetSize = object.tissue.tetSize;
+    tets = meshTissue(scaled, options, object.mesh).tets;
+  }
+  TriangleSoup points;
+  points.points = std::move(tets.points);
+  tets.points = posed(std::move(points), object.pose).points;
+  return tets;
 }
 } // namespace
 
@@ -89,7 +116,23 @@ LoadedScene buildScene(const SceneDescription& description, const SphereTreeOpti
       info.normals = NormalsSource::Computed;
       info.featureAngleDegrees = object.material.featureAngleDegrees;
     }
-    soup = posed(std::move(soup), object.pose);
+    if (object.hasTissue)
+    {
+      // The object's surface is its solid's boundary over the solid's own points, so that each
+      // step's positions are the surface's points as they are (Tissue/TissueDynamics.h).
+      const auto tissueStart = std::chrono::steady_clock::now();
+      LoadedTissue tissue;
+      tissue.object = static_cast<std::uint32_t>(i);
+      tissue.tets = tissueTets(object, soup);
+      tissue.seconds = millisecondsSince(tissueStart) / 1000.0;
+      soup = boundarySoup(tissue.tets);
+      info.tetrahedra = static_cast<std::uint32_t>(tissue.tets.tets.size());
+      loaded.tissues.push_back(std::move(tissue));
+    }
+    else
+    {
+      soup = posed(std::move(soup), object.pose);
+    }
     info.texCoords = !soup.texCoords.empty();
 
     SurfaceMaterial material;

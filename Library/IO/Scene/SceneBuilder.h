@@ -7,6 +7,7 @@
 #include "IO/InputChecks/InputError.h"
 #include "IO/Scene/SceneDescription.h"
 #include "Proxy/CollisionScene.h"
+#include "Tissue/TetMesh.h"
 
 #include <cstdint>
 #include <memory>
@@ -47,6 +48,20 @@ struct LoadedObject
   double featureAngleDegrees = 0.0;
   /// True if the mesh has texture coordinates.
   bool texCoords = false;
+  /// For a tissue object, its solid's tetrahedra (0 for a rigid one).
+  std::uint32_t tetrahedra = 0;
+};
+
+/// A tissue object's solid as the scene was built: its tetrahedra at rest in the scene's frame,
+/// whose boundary (boundarySoup) is the object's mesh, point for point.
+struct LoadedTissue
+{
+  /// The scene object.
+  std::uint32_t object = 0;
+  /// The tetrahedra, placed.
+  TetMesh tets;
+  /// Wall time of reading or making them (s).
+  double seconds = 0.0;
 };
 
 /// A built scene, ready for the proxy, with what a report says about it.
@@ -56,6 +71,9 @@ struct LoadedScene
   std::unique_ptr<CollisionScene> scene;
   /// One entry per object, in the order of the description.
   std::vector<LoadedObject> objects;
+  /// The tissue objects' solids, in the order of the objects (IO/Scene/SceneTissue.h couples
+  /// them).
+  std::vector<LoadedTissue> tissues;
   /// What the scene was built from (its bodies are made from it: IO/Scene/SceneBodies.h).
   SceneDescription description;
   /// Wall time of reading meshes and images and preparing the meshes.
@@ -68,11 +86,14 @@ struct LoadedScene
 /// with shading On and no point normals in the file, makes them with the object's feature angle;
 /// places points and normals by the pose; reads the texture images (an image used twice with
 /// the same channel is read once and shared); builds the mesh and its sphere tree with `options`.
-/// Shading Auto shades exactly when the mesh file has point normals.
+/// Shading Auto shades exactly when the mesh file has point normals. A tissue object's mesh is
+/// wrapped and filled with tetrahedra (or they are read from its `tets` file), and its surface
+/// is their boundary.
 ///
 /// Throws InputError for a mesh or image that cannot be used (the reader's, naming that file),
 /// and for texture maps on a mesh without texture coordinates (naming the scene file and the
-/// object's location when the description came from a file, else the mesh). Throws
+/// object's location when the description came from a file, else the mesh), and as meshTissue
+/// and readTetMeshFile do for a tissue. Throws
 /// std::invalid_argument for a description without objects.
 LoadedScene buildScene(const SceneDescription& description,
                        const SphereTreeOptions& options = SphereTreeOptions{});

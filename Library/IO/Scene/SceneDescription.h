@@ -98,6 +98,44 @@ struct SceneBody
   double mass = 0.0;
 };
 
+/// A stiffer (or softer) sphere inside a tissue: the tetrahedra whose centroids it holds take its
+/// Young's modulus (a nodule that is felt).
+struct SceneInclusion
+{
+  /// The sphere's centre (m, scene frame).
+  Vec3 center;
+  /// Its radius (m).
+  double radius = 0.0;
+  /// The Young's modulus inside it (Pa).
+  double youngsModulus = 0.0;
+};
+
+/// A deformable object (scene file version 3, Documentation/Tissue.md): the mesh is wrapped and
+/// filled with tetrahedra when the scene is built (or they are read from `tets`), and an elastic
+/// solid steps under the proxy. Lengths and the fixed box are in the scene's frame.
+struct SceneTissue
+{
+  /// Young's modulus of the tissue (Pa).
+  double youngsModulus = 3000.0;
+  /// Poisson's ratio, in [0, 0.5).
+  double poissonRatio = 0.45;
+  /// kg/m^3.
+  double density = 1000.0;
+  /// Mass-proportional damping (1/s).
+  double damping = 1.0;
+  /// The tetrahedra's edge size when the mesh is filled (m); unused with `tets`.
+  double tetSize = 0.005;
+  /// A .vtu file of tetrahedra (resolved against the scene file's folder), in the mesh file's
+  /// units (the object's scale and pose apply); empty: the mesh is wrapped and filled.
+  std::string tets;
+  /// The box whose vertices are held (scene frame): corners low and high.
+  Vec3 fixedLow;
+  /// The fixed box's upper corner.
+  Vec3 fixedHigh;
+  /// Stiffer spheres inside, in the file's order.
+  std::vector<SceneInclusion> inclusions;
+};
+
 /// One object of a scene: its mesh, how the mesh is scaled and placed, its material, and the
 /// body it moves as, if any.
 struct SceneObject
@@ -114,6 +152,10 @@ struct SceneObject
   bool hasBody = false;
   /// The object's body; used only when `hasBody`.
   SceneBody body;
+  /// The object is deformable tissue when `hasTissue` (never with a body).
+  bool hasTissue = false;
+  /// The object's tissue; used only when `hasTissue`.
+  SceneTissue tissue;
 };
 
 /// A whole scene as a scene file gives it, checked but not loaded (buildScene() loads it).
@@ -121,7 +163,7 @@ struct SceneDescription
 {
   /// The scene file as the caller named it (empty for a description made in code).
   std::string path;
-  /// The scene file version: 1, or 2 for bodies, gravity and MJCF.
+  /// The scene file version: 1, 2 for bodies, gravity and MJCF, or 3 for tissue.
   int version = 1;
   /// The objects, in the file's order; buildScene() needs at least one.
   std::vector<SceneObject> objects;
@@ -136,6 +178,18 @@ struct SceneDescription
     for (const SceneObject& object : objects)
     {
       if (object.hasBody)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  /// True if any object is tissue.
+  bool hasTissue() const
+  {
+    for (const SceneObject& object : objects)
+    {
+      if (object.hasTissue)
       {
         return true;
       }

@@ -43,10 +43,11 @@ public:
     // unknown keys.
     if (const Json* version = find(root, "version"))
     {
-      if (!version->is_number() ||
-          (version->get<double>() != 1.0 && version->get<double>() != kSceneFileVersion))
+      const double given = version->is_number() ? version->get<double>() : 0.0;
+      if (!version->is_number() || !(given >= 1.0 && given <= kSceneFileVersion) ||
+          given != std::floor(given))
       {
-        fail("version", "must be 1 or " + std::to_string(kSceneFileVersion) +
+        fail("version", "must be 1, 2 or " + std::to_string(kSceneFileVersion) +
                           " (the scene file versions this program reads), got " + quoted(*version));
       }
       scene.version = static_cast<int>(version->get<double>());
@@ -97,7 +98,7 @@ private:
   SceneObject readObject(const Json& value, const std::string& where) const
   {
     requireObject(value, where);
-    checkKeys(value, where, {"mesh", "scale", "pose", "material", "body"});
+    checkKeys(value, where, {"mesh", "scale", "pose", "material", "body", "tissue"});
     SceneObject object;
     object.mesh = filePath(require(value, "mesh", where), child(where, "mesh"));
     if (const Json* scale = find(value, "scale"))
@@ -118,7 +119,126 @@ private:
       object.hasBody = true;
       object.body = readBody(*body, child(where, "body"));
     }
+    if (const Json* tissue = find(value, "tissue"))
+    {
+      const std::string at = child(where, "tissue");
+      if (m_version < 3)
+      {
+        fail(at, "tissue needs \"version\": 3 at the top level (this file reads as version " +
+                   std::to_string(m_version) + ")");
+      }
+      if (object.hasBody)
+      {
+        fail(at, "an object is either a rigid body or tissue, not both");
+      }
+      // The tissue's surface is remade from its tetrahedra at every step: it has no point
+      // normals to shade with, nor texture coordinates.
+      if (object.material.shading == SceneShading::On)
+      {
+        fail(child(child(where, "material"), "shading"),
+             "tissue is not shaded (its surface is remade from the tetrahedra)");
+      }
+      if (!object.material.textures.empty())
+      {
+        fail(child(child(where, "material"), "textures"),
+             "tissue takes no texture maps (its surface has no texture coordinates)");
+      }
+      object.hasTissue = true;
+      object.tissue = readTissue(*tissue, at);
+    }
     return object;
+  }
+
+  SceneTissue readTissue(const Json& value, const std::string& where) const
+  {
+    requireObject(value, where);
+    checkKeys(value, where,
+              {"youngs_modulus", "poisson_ratio", "density", "damping", "tet_size", "tets", "fixed",
+               "inclusions"});
+    SceneTissue tissue;
+    tissue.youngsModulus = ranged(require(value, "youngs_modulus", where),
+                                  child(where, "youngs_modulus"), kYoungsModulusRange);
+    if (const Json* nu = find(value, "poisson_ratio"))
+    {
+      tissue.poissonRatio = ranged(*nu, child(where, "poisson_ratio"), kPoissonRatioRange);
+    }
+    if (const Json* density = find(value, "density"))
+    {
+      tissue.density = ranged(*density, child(where, "density"), kTissueDensityRange);
+    }
+    if (const Json* damping = find(value, "damping"))
+    {
+      tissue.damping = ranged(*damping, child(where, "damping"), kTissueDampingRange);
+    }
+    const Json* size = find(value, "tet_size");
+    const Json* tets = find(value, "tets");
+    if ((size == nullptr) == (tets == nullptr))
+    {
+      fail(where, std::string(size == nullptr ? "needs" : "takes only") +
+                    " one of \"tet_size\" (m: the mesh is wrapped and filled) and \"tets\" (a "
+                    ".vtu file of tetrahedra)");
+    }
+    if (size != nullptr)
+    {
+      tissue.tetSize = ranged(*size, child(where, "tet_size"), kTetSizeRange);
+    }
+    else
+    {
+      tissue.tets = filePath(*tets, child(where, "tets"));
+    }
+    // A solid held nowhere drifts away under the finger: the organ's attachment is required.
+    const std::string fixedAt = child(where, "fixed");
+    const Json& fixed = require(value, "fixed", where);
+    requireObject(fixed, fixedAt);
+    checkKeys(fixed, fixedAt, {"box"});
+    const std::string boxAt = child(fixedAt, "box");
+    const Json& box = require(fixed, "box", fixedAt);
+    if (!box.is_array() || box.size() != 2)
+    {
+      fail(boxAt, "must be [[x0, y0, z0], [x1, y1, z1]] in metres, got " + quoted(box));
+    }
+    const std::vector<double> low = numbers(box[0], element(boxAt, 0), 3, "[x0, y0, z0] in metres");
+    const std::vector<double> high =
+      numbers(box[1], element(boxAt, 1), 3, "[x1, y1, z1] in metres");
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (!(low[axis] <= high[axis]))
+      {
+        fail(boxAt, "the first corner must be below the second on every axis, got " + quoted(box));
+      }
+    }
+    tissue.fixedLow = {low[0], low[1], low[2]};
+    tissue.fixedHigh = {high[0], high[1], high[2]};
+    if (const Json* inclusions = find(value, "inclusions"))
+    {
+      const std::string at = child(where, "inclusions");
+      if (!inclusions->is_array())
+      {
+        fail(at, "must be an array of inclusions [{\"center\": [x, y, z], \"radius\": r, "
+                 "\"youngs_modulus\": E}], got " +
+                   quoted(*inclusions));
+      }
+      for (std::size_t i = 0; i < inclusions->size(); ++i)
+      {
+        tissue.inclusions.push_back(readInclusion((*inclusions)[i], element(at, i)));
+      }
+    }
+    return tissue;
+  }
+
+  SceneInclusion readInclusion(const Json& value, const std::string& where) const
+  {
+    requireObject(value, where);
+    checkKeys(value, where, {"center", "radius", "youngs_modulus"});
+    SceneInclusion inclusion;
+    const std::vector<double> c =
+      numbers(require(value, "center", where), child(where, "center"), 3, "[x, y, z] in metres");
+    inclusion.center = {c[0], c[1], c[2]};
+    inclusion.radius =
+      ranged(require(value, "radius", where), child(where, "radius"), kStiffnessRegionRadiusRange);
+    inclusion.youngsModulus = ranged(require(value, "youngs_modulus", where),
+                                     child(where, "youngs_modulus"), kYoungsModulusRange);
+    return inclusion;
   }
 
   void needsVersion2(const std::string& where) const

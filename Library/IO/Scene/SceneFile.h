@@ -13,7 +13,7 @@ namespace proxima
 {
 
 /// The scene file format version this build reads ("version" in the file).
-inline constexpr int kSceneFileVersion = 2;
+inline constexpr int kSceneFileVersion = 3;
 
 /// Reads and checks a scene file; mesh and image paths come back resolved against the file's
 /// folder (absolute paths stay as written). Reads no mesh or image.

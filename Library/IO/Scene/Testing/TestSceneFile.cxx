@@ -253,8 +253,112 @@ TEST_F(SceneFile, UnknownTopLevelKeySuggestsTheNearOne)
 TEST_F(SceneFile, UnsupportedVersion)
 {
   // Reported before the unknown key a newer version might bring.
-  expectRefused(write("v3.json", R"({"version": 3, "lights": [], "objects": [{"mesh": "m.obj"}]})"),
-                "version: must be 1 or 2 (the scene file versions this program reads), got 3");
+  expectRefused(write("v4.json", R"({"version": 4, "lights": [], "objects": [{"mesh": "m.obj"}]})"),
+                "version: must be 1, 2 or 3 (the scene file versions this program reads), got 4");
+  expectRefused(write("v2.5.json", R"({"version": 2.5, "objects": [{"mesh": "m.obj"}]})"),
+                "version: must be 1, 2 or 3 (the scene file versions this program reads), got 2.5");
+}
+
+/// A version 3 scene of one object `{"mesh": "m.obj", "tissue": <tissue>}`.
+static std::string tissueScene(const std::string& tissue, int version = 3)
+{
+  return R"({"version": )" + std::to_string(version) +
+         R"(, "objects": [{"mesh": "m.obj", "tissue": )" + tissue + "}]}";
+}
+
+TEST_F(SceneFile, TissueComesBackAsWritten)
+{
+  const std::string path = write(
+    "tissue.json", tissueScene(R"({"youngs_modulus": 4000, "poisson_ratio": 0.4, "density": 1060,
+                    "damping": 15, "tet_size": 0.006,
+                    "fixed": {"box": [[-1, -1, -1], [1, 1, -0.05]]},
+                    "inclusions": [{"center": [0.07, 0.3, 0.0], "radius": 0.01,
+                                    "youngs_modulus": 40000}]})"));
+  const SceneDescription scene = proxima::readSceneFile(path);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.version, 3);
+  EXPECT_TRUE(scene.hasTissue());
+  EXPECT_FALSE(scene.hasBodies());
+  const proxima::SceneTissue& tissue = scene.objects[0].tissue;
+  EXPECT_EQ(tissue.youngsModulus, 4000.0);
+  EXPECT_EQ(tissue.poissonRatio, 0.4);
+  EXPECT_EQ(tissue.density, 1060.0);
+  EXPECT_EQ(tissue.damping, 15.0);
+  EXPECT_EQ(tissue.tetSize, 0.006);
+  EXPECT_TRUE(tissue.tets.empty());
+  EXPECT_EQ(tissue.fixedLow, (proxima::Vec3{-1.0, -1.0, -1.0}));
+  EXPECT_EQ(tissue.fixedHigh, (proxima::Vec3{1.0, 1.0, -0.05}));
+  ASSERT_EQ(tissue.inclusions.size(), 1u);
+  EXPECT_EQ(tissue.inclusions[0].center, (proxima::Vec3{0.07, 0.3, 0.0}));
+  EXPECT_EQ(tissue.inclusions[0].radius, 0.01);
+  EXPECT_EQ(tissue.inclusions[0].youngsModulus, 40000.0);
+
+  // The defaults, and a .vtu file resolved against the scene's folder.
+  const SceneDescription plain = proxima::readSceneFile(
+    write("plain.json", tissueScene(R"({"youngs_modulus": 3000, "tets": "t.vtu",
+                                        "fixed": {"box": [[0, 0, 0], [1, 1, 1]]}})")));
+  const proxima::SceneTissue& defaults = plain.objects[0].tissue;
+  EXPECT_EQ(defaults.poissonRatio, 0.45);
+  EXPECT_EQ(defaults.density, 1000.0);
+  EXPECT_EQ(defaults.damping, 1.0);
+  EXPECT_EQ(fs::path(defaults.tets).filename(), "t.vtu");
+  EXPECT_TRUE(fs::path(defaults.tets).is_absolute() ||
+              defaults.tets.find(fs::path(path).parent_path().string()) == 0);
+  EXPECT_TRUE(defaults.inclusions.empty());
+}
+
+TEST_F(SceneFile, BadTissueIsRefusedWhereItIs)
+{
+  const std::string fixed = R"("fixed": {"box": [[0, 0, 0], [1, 1, 1]]})";
+  expectRefused(
+    write("v2.json",
+          tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005, )" + fixed + "}", 2)),
+    "objects[0].tissue: tissue needs \"version\": 3 at the top level (this file "
+    "reads as version 2)");
+  expectRefused(write("both.json",
+                      R"({"version": 3, "objects": [{"mesh": "m.obj",
+                          "body": {"joint": {"type": "free"}, "density": 1000},
+                          "tissue": {"youngs_modulus": 3000, "tet_size": 0.005, )" +
+                        fixed + "}}]}"),
+                "objects[0].tissue: an object is either a rigid body or tissue, not both");
+  expectRefused(write("shaded.json",
+                      R"({"version": 3, "objects": [{"mesh": "m.obj",
+                          "material": {"shading": "on"},
+                          "tissue": {"youngs_modulus": 3000, "tet_size": 0.005, )" +
+                        fixed + "}}]}"),
+                "objects[0].material.shading: tissue is not shaded (its surface is remade from "
+                "the tetrahedra)");
+  expectRefused(write("no-size.json", tissueScene(R"({"youngs_modulus": 3000, )" + fixed + "}")),
+                "objects[0].tissue: needs one of \"tet_size\" (m: the mesh is wrapped and "
+                "filled) and \"tets\" (a .vtu file of tetrahedra)");
+  expectRefused(
+    write("two-sizes.json",
+          tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005, "tets": "t.vtu", )" + fixed +
+                      "}")),
+    "objects[0].tissue: takes only one of \"tet_size\" (m: the mesh is wrapped and filled) and "
+    "\"tets\" (a .vtu file of tetrahedra)");
+  expectRefused(
+    write("no-fixed.json", tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005})")),
+    "objects[0].tissue: missing the required key \"fixed\"");
+  expectRefused(write("flat-box.json", tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005,
+                                      "fixed": {"box": [[0, 0, 1], [1, 1, 0]]}})")),
+                "objects[0].tissue.fixed.box: the first corner must be below the second on every "
+                "axis, got [[0,0,1],[1,1,0]]");
+  expectRefused(write("nu.json", tissueScene(R"({"youngs_modulus": 3000, "poisson_ratio": 0.5,
+                                                 "tet_size": 0.005, )" +
+                                             fixed + "}")),
+                "objects[0].tissue.poisson_ratio: must be a number from 0 to 0.499, got 0.5");
+  expectRefused(
+    write("e.json", tissueScene(R"({"youngs_modulus": -5, "tet_size": 0.005, )" + fixed + "}")),
+    "objects[0].tissue.youngs_modulus: must be a number above 0 and at most 1e+09 Pa, got -5");
+  expectRefused(write("inclusion.json",
+                      tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005, )" + fixed +
+                                  R"(, "inclusions": [{"center": [0, 0, 0], "radius": 0.01}]})")),
+                "objects[0].tissue.inclusions[0]: missing the required key \"youngs_modulus\"");
+  expectRefused(write("typo.json", tissueScene(R"({"youngs_modulus": 3000, "tet_size": 0.005,
+                                                   "dampin": 3, )" +
+                                               fixed + "}")),
+                "objects[0].tissue.dampin: unknown key (did you mean \"damping\"?)");
 }
 
 /// A version 2 scene of one object `{"mesh": "m.obj", "body": <body>}`.
@@ -444,7 +548,7 @@ TEST_F(SceneFile, UnknownObjectKeyListsTheKnownOnes)
 {
   expectRefused(
     oneObject("colour.json", R"("colour": "red")"),
-    "objects[0].colour: unknown key (the keys here are mesh, scale, pose, material, body)");
+    "objects[0].colour: unknown key (the keys here are mesh, scale, pose, material, body, tissue)");
 }
 
 TEST_F(SceneFile, ScaleNotPositive)
@@ -726,9 +830,10 @@ TEST_F(SceneFile, LongTokensAreCutShortInJsonErrors)
 TEST_F(SceneFile, LongKeysAreCutShortInTheLocation)
 {
   const std::string key(1000, 'k');
-  expectRefused(oneObject("key.json", "\"" + key + "\": 1"),
-                "objects[0]." + std::string(36, 'k') +
-                  " ...: unknown key (the keys here are mesh, scale, pose, material, body)");
+  expectRefused(
+    oneObject("key.json", "\"" + key + "\": 1"),
+    "objects[0]." + std::string(36, 'k') +
+      " ...: unknown key (the keys here are mesh, scale, pose, material, body, tissue)");
   expectRefused(oneObject("key2.json", "\"" + key + "\": 1, \"" + key + "\": 2"),
                 "objects[0]." + std::string(36, 'k') +
                   " ...: the key appears twice in the same object");
