@@ -15,6 +15,12 @@ std::vector<NamedFile> sceneMeshInputs(const LoadedScene& loaded)
   {
     meshes.push_back(
       {loaded.objects[i].mesh, "the mesh of the scene's objects[" + std::to_string(i) + "]"});
+    const SceneObject& object = loaded.description.objects[i];
+    if (object.hasTissue && !object.tissue.tets.empty())
+    {
+      meshes.push_back({object.tissue.tets,
+                        "the tetrahedra of the scene's objects[" + std::to_string(i) + "].tissue"});
+    }
   }
   return meshes;
 }

@@ -12,6 +12,7 @@
 #include "Dynamics/BodyCoupling.h"
 #include "IO/Output/AtomicOutputFile.h"
 #include "IO/PathAndTrace/BodyPoseWriter.h"
+#include "IO/PathAndTrace/TissueStateWriter.h"
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
@@ -44,6 +45,7 @@ struct RunOptions
   SceneOptions scene;
   std::string out;
   std::string bodiesOut;
+  std::string tissueOut;
   std::string summary;
   DeviceChoiceOptions device;
   bool realtime = false;
@@ -212,10 +214,22 @@ int run(const RunOptions& options)
   {
     refuseBodiesOutWithoutBodies();
   }
+  const std::unique_ptr<TissueDynamics> tissue = std::move(prepared.tissue);
+  if (tissue != nullptr && options.realtime)
+  {
+    // The threaded runtime would step a solid inside the proxy's tick.
+    refuseSceneTissue(loaded, "a run on the real clock (--realtime)");
+  }
+  if (tissue == nullptr && !options.tissueOut.empty())
+  {
+    throw InputError("--tissue-out", "the scene has no tissue (a scene file's objects with a "
+                                     "\"tissue\", Documentation/Tissue.md)");
+  }
   // Before the trace's temporary exists: a run never replaces what it reads, nor writes two
   // outputs into one file.
   refuseOverlappingFiles({{options.out, "--out"},
                           {options.bodiesOut, "--bodies-out"},
+                          {options.tissueOut, "--tissue-out"},
                           {options.summary, "--summary"},
                           {options.device.recordDevice, "--record-device"}},
                          runInputs(shared, loaded, options.device));
@@ -230,11 +244,25 @@ int run(const RunOptions& options)
   {
     poses = std::make_unique<BodyPoseWriter>(options.bodiesOut);
   }
+  std::unique_ptr<TissueStateWriter> tissueStates;
+  if (!options.tissueOut.empty())
+  {
+    tissueStates = std::make_unique<TissueStateWriter>(options.tissueOut);
+  }
   const auto writeTick = [&](const HapticState& record) {
     trace.write(record);
     if (poses != nullptr)
     {
       writeBodyPoses(*poses, *bodies, record);
+    }
+    if (tissueStates != nullptr)
+    {
+      for (std::size_t k = 0; k < tissue->numTissues(); ++k)
+      {
+        const TissueReading& reading = tissue->reading(k);
+        tissueStates->write(record.tick, record.time, tissue->object(k), reading.maxDisplacement,
+                            reading.indentation, reading.force, reading.touched);
+      }
     }
   };
   ScriptedRunOutcome outcome;
@@ -266,8 +294,12 @@ int run(const RunOptions& options)
     Progress progress(numTicks);
     outcome = playScriptedPath(
       shared, scene, fingerPath, device.device(), writeTick,
-      [&progress](std::uint64_t done) { progress.update(done); }, bodies.get());
+      [&progress](std::uint64_t done) { progress.update(done); }, bodies.get(), tissue.get());
     progress.finish();
+    if (tissue != nullptr)
+    {
+      outcome.tissues = tissueOutcomes(*tissue, loaded);
+    }
   }
   // The trace is put in place last, once the recording and the summary are written: a failure
   // of either then leaves no trace behind.
@@ -275,6 +307,10 @@ int run(const RunOptions& options)
   if (poses != nullptr)
   {
     poses->finish();
+  }
+  if (tissueStates != nullptr)
+  {
+    tissueStates->finish();
   }
   device.finish();
 
@@ -288,6 +324,10 @@ int run(const RunOptions& options)
   if (poses != nullptr)
   {
     poses->close();
+  }
+  if (tissueStates != nullptr)
+  {
+    tissueStates->close();
   }
   writeStandardOutput(text);
   return kExitOk;
@@ -309,6 +349,10 @@ Command addRunCommand(CLI::App& parent)
   app->add_option("--bodies-out", options->bodiesOut,
                   "With a scene that has bodies: write their poses, one row per body per tick "
                   "(tick,t,object,x,y,z,qw,qx,qy,qz,q; Documentation/Dynamics.md)");
+  app->add_option("--tissue-out", options->tissueOut,
+                  "With a scene that has tissue: write its state, one row per tissue per tick "
+                  "(tick,t,object,max_displacement,indentation,force,touched; "
+                  "Documentation/Tissue.md)");
   addDeviceOptions(*app, options->device);
   app->add_flag("--realtime", options->realtime,
                 "Run on the real clock through the threaded runtime (servo and proxy threads at "

@@ -470,6 +470,7 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
   inputs.hinges = sceneHinges(inputs.loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
   inputs.bodies = sceneBodies(shared, inputs.loaded);
+  refuseSceneTissue(inputs.loaded, "proxima view");
   inputs.fingerPath = shared.path.empty() ? mouseStartPath(*inputs.loaded.scene, shared.radius)
                                           : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, inputs.loaded);

@@ -115,6 +115,7 @@ void addOracleBindings(py::module_& module)
         py::gil_scoped_release released;
         LoadedScene loaded = loadScene(settings);
         refuseSceneBodies(loaded, "the oracle check");
+        refuseSceneTissue(loaded, "the oracle check");
         const CollisionScene& scene = *loaded.scene;
         ProxyParameters parameters = proxyParameters(settings);
         tickBudget(settings, TickWorkBudget{}).applyTo(parameters);

@@ -13,6 +13,7 @@ ProbeMeasurements playProbeSession(const ScriptedRunSettings& settings, const Fi
   checkScriptedRunSettings(settings);
   const LoadedScene loaded = loadScene(settings);
   refuseSceneBodies(loaded, "the inspector");
+  refuseSceneTissue(loaded, "the inspector");
   checkRadiusAgainstScene(settings, loaded);
   checkPathStart(settings, loaded, path);
   ProbeMeter meter(*loaded.scene, meterSettings);

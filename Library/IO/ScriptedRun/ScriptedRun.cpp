@@ -34,7 +34,7 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     HapticDevice& device,
                                     const std::function<void(const HapticState&)>& onTick,
                                     const std::function<void(std::uint64_t)>& progress,
-                                    BodyCoupling* bodies)
+                                    BodyCoupling* bodies, TissueDynamics* tissue)
 {
   ScriptedRunOutcome outcome;
   // Lockstep runs default to no budget, so that their traces stay reproducible bit for bit.
@@ -47,9 +47,15 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
   // A finger that starts inside a closed object would trap the proxy there: it starts outside.
   outcome.start = placeProxyStart(scene, parameters, path.positions.front());
   resetProxyTo(*solver, outcome.start);
-  if (bodies != nullptr)
+  // A scene's bodies or its tissues: the step that ends each tick.
+  TickDynamics* dynamics = bodies;
+  if (tissue != nullptr)
   {
-    bodies->attach(*solver);
+    dynamics = tissue;
+  }
+  if (dynamics != nullptr)
+  {
+    dynamics->attach(*solver);
   }
 
   LockstepSettings lockstep;
@@ -66,9 +72,10 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
     [&](const HapticState& record) {
       onTick(record);
       outcome.summary.add(record);
-      if (record.conditions.has(TickCondition::budgetLimited) && bodies == nullptr)
+      if (record.conditions.has(TickCondition::budgetLimited) && dynamics == nullptr)
       {
-        // (With bodies the replay would need their motion too: no residual is measured.)
+        // (With bodies or tissue the replay would need their motion too: no residual is
+        // measured.)
         const auto replayStart = std::chrono::steady_clock::now();
         outcome.summary.addBudgetResidual(
           residualProbe.residual(tickStart, record.finger, record.proxy));
@@ -80,7 +87,7 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
         progress(record.tick);
       }
     },
-    bodies);
+    dynamics);
   if (progress)
   {
     progress(lockstep.numTicks);
@@ -91,6 +98,37 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
     outcome.bodies = bodyOutcomes(*bodies);
   }
   return outcome;
+}
+
+std::vector<TissueOutcome> tissueOutcomes(const TissueDynamics& tissue, const LoadedScene& loaded)
+{
+  std::vector<TissueOutcome> reports;
+  for (std::size_t k = 0; k < tissue.numTissues(); ++k)
+  {
+    const ElasticSolid& solid = tissue.solid(k);
+    TissueOutcome report;
+    report.object = tissue.object(k);
+    report.tetrahedra = solid.rest().tets.size();
+    report.vertices = solid.rest().points.size();
+    for (std::uint32_t v = 0; v < report.vertices; ++v)
+    {
+      report.fixedVertices += solid.isFixed(v) ? 1u : 0u;
+    }
+    report.ticksPerStep = tissue.ticksPerStep();
+    report.steps = tissue.steps();
+    report.deepestIndentation = tissue.deepestIndentation(k);
+    report.maxDisplacement = tissue.reading(k).maxDisplacement;
+    report.energy = solid.kineticEnergy() + solid.elasticEnergy();
+    for (const LoadedTissue& built : loaded.tissues)
+    {
+      if (built.object == report.object)
+      {
+        report.meshingSeconds = built.seconds;
+      }
+    }
+    reports.push_back(report);
+  }
+  return reports;
 }
 
 void forEachBodyPose(const BodyCoupling& bodies, const HapticState& record,
@@ -169,6 +207,10 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded)
 {
+  // The real-time runners would step a solid inside the proxy's tick: its servo-rate local
+  // model is not built yet (Documentation/Tissue.md).
+  refuseSceneTissue(loaded, "a real-time run (--realtime, proxima view, proxima serve, Python's "
+                            "live sessions)");
 #ifdef PROXIMA_WITH_DYNAMICS
   return std::shared_ptr<TickDynamics>(sceneBodies(settings, loaded));
 #else
@@ -198,6 +240,7 @@ PreparedScriptedRun prepareScriptedRun(const ScriptedRunSettings& settings, cons
   checkPathStart(settings, prepared.loaded, path);
   // A body too light or a mesh with no volume is bad input, found before any output exists.
   prepared.bodies = sceneBodies(settings, prepared.loaded);
+  prepared.tissue = buildSceneTissue(prepared.loaded, settings.stiffness, settings.rate);
   return prepared;
 }
 
@@ -223,8 +266,12 @@ std::string runScriptedPath(const ScriptedRunSettings& settings, const FingerPat
     }
   };
   const LoadedScene& loaded = prepared.loaded;
-  const ScriptedRunOutcome outcome =
-    playScriptedPath(settings, *loaded.scene, path, device, tickAndPoses, {}, bodies.get());
+  ScriptedRunOutcome outcome = playScriptedPath(settings, *loaded.scene, path, device, tickAndPoses,
+                                                {}, bodies.get(), prepared.tissue.get());
+  if (prepared.tissue != nullptr)
+  {
+    outcome.tissues = tissueOutcomes(*prepared.tissue, loaded);
+  }
   return scriptedRunSummaryJson(settings, loaded, *loaded.scene, outcome, report);
 }
 

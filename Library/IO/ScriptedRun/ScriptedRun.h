@@ -6,6 +6,7 @@
 
 #include "IO/InputChecks/ParameterRanges.h"
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/Scene/SceneTissue.h"
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
 #include "Proxy/ProxyStart.h"
 #include "Runtime/FingerPath.h"
@@ -52,6 +53,31 @@ struct BodyOutcome
   double leftBoundsAt = -1.0;
 };
 
+/// A tissue of the scene at the end of a run (Documentation/Tissue.md), for the summary.
+struct TissueOutcome
+{
+  /// The scene object whose surface the solid is.
+  std::uint32_t object = 0;
+  /// The solid's tetrahedra and vertices, and of them the vertices held in its fixed box.
+  std::size_t tetrahedra = 0;
+  /// The solid's vertices.
+  std::size_t vertices = 0;
+  /// The vertices held in the fixed box.
+  std::size_t fixedVertices = 0;
+  /// Servo ticks between two steps of the solid, and the steps it took.
+  int ticksPerStep = 1;
+  /// The solid's steps over the run.
+  std::uint64_t steps = 0;
+  /// The deepest the proxy pushed the surface in over the run (m).
+  double deepestIndentation = 0.0;
+  /// The largest distance of a vertex from its rest position at the end (m).
+  double maxDisplacement = 0.0;
+  /// Kinetic plus elastic energy at the end (J).
+  double energy = 0.0;
+  /// Wall time of meshing (or reading) the tetrahedra when the scene was built (s).
+  double meshingSeconds = 0.0;
+};
+
 /// What playing a path gave, beside the ticks themselves.
 struct ScriptedRunOutcome
 {
@@ -70,6 +96,8 @@ struct ScriptedRunOutcome
   double replayMilliseconds = 0.0;
   /// The scene's bodies at the end (empty without bodies).
   std::vector<BodyOutcome> bodies;
+  /// The scene's tissues at the end (empty without tissue).
+  std::vector<TissueOutcome> tissues;
 };
 
 /// Plays `path` through `scene` in lockstep at the settings' rate, reading the finger from
@@ -79,13 +107,19 @@ struct ScriptedRunOutcome
 /// without the budget for its residual. `byDefault` is the budget when the settings give none.
 /// `progress`, when set, is called now and then with the ticks done. With `bodies` (the scene's,
 /// buildSceneBodies), each tick ends with their dynamics step, and `onTick` sees them where that
-/// step left them.
+/// step left them; with `tissue` (buildSceneTissue; a scene has bodies or tissue, not both),
+/// each tick ends with the tissues' step instead.
 ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
                                     const CollisionScene& scene, const FingerPath& path,
                                     HapticDevice& device,
                                     const std::function<void(const HapticState&)>& onTick,
                                     const std::function<void(std::uint64_t)>& progress = {},
-                                    BodyCoupling* bodies = nullptr);
+                                    BodyCoupling* bodies = nullptr,
+                                    TissueDynamics* tissue = nullptr);
+
+/// The summary's report of each tissue of `tissue` where the run left it; `loaded` gives their
+/// sizes and meshing times.
+std::vector<TissueOutcome> tissueOutcomes(const TissueDynamics& tissue, const LoadedScene& loaded);
 
 /// One body where a tick's dynamics step left it: a row of `--bodies-out` (BodyPoseWriter).
 struct BodyPoseRow
@@ -120,6 +154,7 @@ std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies);
 std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
                                           const LoadedScene& loaded);
 /// The same, as the runners see it (for HapticSession::setDynamics and the like), or null.
+/// Throws InputError for a scene with tissue, which only a lockstep run plays so far.
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded);
 
@@ -132,6 +167,8 @@ struct PreparedScriptedRun
   LoadedScene loaded;
   /// The scene's bodies coupled at the settings' kp and rate, or null when it has none.
   std::unique_ptr<BodyCoupling> bodies;
+  /// The scene's tissues coupled at the settings' kp and rate, or null when it has none.
+  std::unique_ptr<TissueDynamics> tissue;
   /// The servo ticks that cover the path at the settings' rate.
   std::uint64_t numTicks = 0;
   /// Wall time of reading the scene (without building its trees).
@@ -140,7 +177,7 @@ struct PreparedScriptedRun
 
 /// Checks the settings, the path (not empty, at most `maxTicks` ticks at the settings' rate),
 /// loads the scene, checks the proxy's radius against it and the path's start, and builds the
-/// scene's bodies. Throws InputError naming the option or file (`settings.path` names the path);
+/// scene's bodies or tissues. Throws InputError naming the option or file (`settings.path` names the path);
 /// nothing is written.
 PreparedScriptedRun prepareScriptedRun(const ScriptedRunSettings& settings, const FingerPath& path,
                                        double maxTicks);

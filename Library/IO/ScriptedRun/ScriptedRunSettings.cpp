@@ -218,6 +218,17 @@ void refuseSceneBodies(const LoadedScene& loaded, const std::string& who)
   }
 }
 
+void refuseSceneTissue(const LoadedScene& loaded, const std::string& who)
+{
+  if (loaded.description.hasTissue())
+  {
+    throw InputError(loaded.description.path,
+                     "the scene has tissue, which " + who +
+                       " does not deform yet (proxima run plays it in lockstep, "
+                       "Documentation/Tissue.md)");
+  }
+}
+
 void checkRadiusAgainstScene(const ScriptedRunSettings& options, const LoadedScene& loaded)
 {
   Aabb bounds;

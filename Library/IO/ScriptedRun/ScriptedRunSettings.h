@@ -58,6 +58,9 @@ void checkRadiusAgainstScene(const ScriptedRunSettings& settings, const LoadedSc
 /// Throws InputError naming the scene file when its scene has bodies, which `who` (a program or
 /// mode that runs scenes without their dynamics so far) would show standing still.
 void refuseSceneBodies(const LoadedScene& loaded, const std::string& who);
+/// Throws InputError naming the scene file when its scene has tissue, which `who` (a program or
+/// mode other than a lockstep run) would show rigid.
+void refuseSceneTissue(const LoadedScene& loaded, const std::string& who);
 /// Throws InputError naming the path when its first sample leaves no room for the proxy sphere
 /// against some object: a proxy that starts overlapping a surface has no free side to be pushed
 /// back to.

@@ -174,6 +174,28 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
     json["dynamics_ns"] =
       tickTimesJson([&summary](double q) { return summary.dynamicsNanosecondsQuantile(q); });
   }
+  if (!outcome.tissues.empty())
+  {
+    // Documentation/Tissue.md: each solid's size, how often it stepped, and how far it gave way.
+    nlohmann::ordered_json tissues = nlohmann::ordered_json::array();
+    for (const TissueOutcome& tissue : outcome.tissues)
+    {
+      tissues.push_back({{"object", tissue.object},
+                         {"tetrahedra", tissue.tetrahedra},
+                         {"vertices", tissue.vertices},
+                         {"fixed_vertices", tissue.fixedVertices},
+                         {"ticks_per_step", tissue.ticksPerStep},
+                         {"steps", tissue.steps},
+                         {"deepest_indentation_m", tissue.deepestIndentation},
+                         {"max_displacement_at_end_m", tissue.maxDisplacement},
+                         {"energy_at_end_J", tissue.energy},
+                         {"meshing_s", tissue.meshingSeconds}});
+    }
+    json["tissue"] = std::move(tissues);
+    json["pushed_ticks"] = outcome.summary.pushedTicks();
+    json["dynamics_ns"] =
+      tickTimesJson([&summary](double q) { return summary.dynamicsNanosecondsQuantile(q); });
+  }
   nlohmann::ordered_json budgetJson;
   budgetJson["tick_budget"] = outcome.budget.text();
   budgetJson["seconds"] = outcome.budget.seconds;

@@ -91,7 +91,8 @@ def test_run_settings_are_the_command_lines_options():
             listed.add(column.split(",")[0])
     # What is not a knob: the run's inputs and outputs, its mode, and the device's options.
     not_knobs = {"--help", "--mesh", "--scene", "--path", "--out", "--summary", "--max-ticks",
-                 "--realtime", "--no-floor", "--bodies-out", "--falcon-firmware"}
+                 "--realtime", "--no-floor", "--bodies-out", "--tissue-out",
+                 "--falcon-firmware"}
     not_knobs |= {o for o in listed if o.startswith("--device") or "record" in o}
     knobs = {option for option, _, _ in proxima.RUN_SETTINGS.values()}
     assert knobs == listed - not_knobs, shown
