@@ -6,6 +6,8 @@ spots on its upper surface (the side a default camera looks at, +z) and writes:
 
   Data/Scenes/liver-nodule.json.in         the liver, soft, with a hard nodule 6 mm under one spot
   Data/Exercises/liver-palpation.json.in   find the nodule and mark it
+  Data/Scenes/liver-soft-nodule.json.in    the liver as soft tissue, the nodule a stiff inclusion
+  Data/Exercises/liver-soft-palpation.json.in  find that nodule (the palpation's paths)
   Data/Exercises/liver-targets.json.in     touch three spots in order with 0.5-2 N
   Data/Exercises/liver-trace.json.in       follow a 4 cm line on the surface within 3 mm
 
@@ -51,6 +53,11 @@ NODULE_DEPTH = 0.006
 NODULE_RADIUS = 0.012
 NODULE_SCALE = 4.0
 FORCE_LIMIT = 5.0
+SOFT_YOUNGS_MODULUS = 3000.0  # Pa: soft liver
+SOFT_NODULE_FACTOR = 10.0
+SOFT_DAMPING = 20.0  # 1/s
+SOFT_TET_SIZE = 0.006  # m: about 6,000 tetrahedra, the nodule a few dozen
+SOFT_HELD_FRACTION = 0.65  # the lower part of the liver's height held: it rests on what is behind
 TOLERANCE = 0.003
 
 
@@ -274,6 +281,41 @@ def main():
         writer.write(os.path.join(paths, f"liver-palpation-{name}.csv"))
         with open(os.path.join(paths, f"liver-palpation-{name}-marks.csv"), "w") as out:
             out.write("t\n" + "".join(f"{t:.3f}\n" for t in marks))
+
+    # The soft liver (issue 35): the same liver as an elastic solid (3 kPa, Documentation/Tissue.md)
+    # held along the lower 65 % of its height (held along its lower third, the lobe bent under the
+    # finger and the nodule sank with it: 0.09 N over it against 0.08 N beside it), with the nodule
+    # an inclusion ten times stiffer at the same place.
+    # Palpated by the same paths: what the trainee feels over the nodule is the solid pushing back.
+    _, _, _, _, bottom, top = surface.bounds
+    held = bottom + (top - bottom) * SOFT_HELD_FRACTION
+    write_json(os.path.join(scenes, "liver-soft-nodule.json.in"), {
+        "version": 3,
+        "objects": [{
+            "mesh": "@PROXIMA_DATA_DIR@/Meshes/VH_M_Liver.glb",
+            "scale": SCALE,
+            "tissue": {
+                "youngs_modulus": SOFT_YOUNGS_MODULUS,
+                "poisson_ratio": 0.45,
+                "damping": SOFT_DAMPING,
+                "tet_size": SOFT_TET_SIZE,
+                "fixed": {"box": [rounded([x0 - 0.01, y0 - 0.01, bottom - 0.01]),
+                                  rounded([x1 + 0.01, y1 + 0.01, held])]},
+                "inclusions": [{"center": rounded(nodule_center), "radius": NODULE_RADIUS,
+                                "youngs_modulus": SOFT_YOUNGS_MODULUS * SOFT_NODULE_FACTOR}],
+            },
+        }],
+    })
+    write_json(os.path.join(exercises, "liver-soft-palpation.json.in"), {
+        **common,
+        "scene": "../Scenes/liver-soft-nodule.json",
+        "name": "Soft liver palpation: find the hidden nodule",
+        "instructions": "The liver gives way under your finger. Somewhere under its upper surface "
+                        "is a hard nodule. Press gently over the surface until you feel it push "
+                        "back harder, then mark the spot (the M key). Headless only for now "
+                        "(--path): the window cannot deform tissue yet.",
+        "tasks": [{"type": "palpation", "object": 0, "inclusion": 0, "pass_distance": 0.01}],
+    })
 
     # Targets: three spots in order, each held for 0.3 s with 0.5-2 N (a 4 mm press on the
     # liver's 300 N/m is 1.2 N). The failing path skips the second and presses the third at 20 mm

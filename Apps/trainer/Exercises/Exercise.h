@@ -22,13 +22,18 @@ struct ExerciseTissue
 };
 
 /// Find the hidden inclusion and mark it: the inclusion is stiffness region `region` of object
-/// `object`'s material in the scene (the nodule the trainee feels), the spot to mark the point of
-/// that object's surface nearest the region's centre, and a mark passes within `passDistance`.
+/// `object`'s material in the scene (a nodule felt through a stiffness map), or, with
+/// `tissueInclusion`, inclusion `region` of the object's tissue (a stiffer sphere of its elastic
+/// solid, Documentation/Tissue.md); the spot to mark is the point of that object's surface at
+/// rest nearest the inclusion's centre, and a mark passes within `passDistance`.
 struct PalpationTask
 {
   std::uint32_t object = 0;
+  /// The stiffness region's index, or the tissue inclusion's with `tissueInclusion`.
   std::uint32_t region = 0;
   double passDistance = 0.0;
+  /// True when `region` numbers the object's tissue inclusions (the file's "inclusion").
+  bool tissueInclusion = false;
 };
 
 /// A spot on the surface: touched when the contact point is within `radius` of `center`.

@@ -140,12 +140,24 @@ private:
     switch (task.kind)
     {
       case TaskKind::Palpation:
-        checkKeys(value, where, {"type", "object", "region", "pass_distance"});
+      {
+        checkKeys(value, where, {"type", "object", "region", "inclusion", "pass_distance"});
         task.palpation.object = index(require(value, "object", where), child(where, "object"));
-        task.palpation.region = index(require(value, "region", where), child(where, "region"));
+        const Json* region = find(value, "region");
+        const Json* inclusion = find(value, "inclusion");
+        if ((region == nullptr) == (inclusion == nullptr))
+        {
+          fail(where, std::string(region == nullptr ? "needs" : "takes only") +
+                        " one of \"region\" (a stiffness region of the object's material) and "
+                        "\"inclusion\" (an inclusion of the object's tissue)");
+        }
+        task.palpation.tissueInclusion = inclusion != nullptr;
+        task.palpation.region = region != nullptr ? index(*region, child(where, "region"))
+                                                  : index(*inclusion, child(where, "inclusion"));
         task.palpation.passDistance = ranged(require(value, "pass_distance", where),
                                              child(where, "pass_distance"), kExerciseLengthRange);
         break;
+      }
       case TaskKind::Targets: readTargets(value, where, task.targets); break;
       case TaskKind::Trace: readTrace(value, where, task.trace); break;
     }

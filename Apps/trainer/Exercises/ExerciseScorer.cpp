@@ -65,9 +65,47 @@ Vec3 nearestSurfacePoint(const CollisionObject& object, const Vec3& point)
     object.tree.nearest(object.mesh, point, std::numeric_limits<double>::infinity(), *scratch);
   return nearest.closest.point;
 }
+
+// The centre of palpation task `t`'s inclusion: a stiffness region of the object's material, or
+// an inclusion of its tissue (from the scene's description).
+Vec3 inclusionCenter(const Exercise& exercise, std::size_t t, const CollisionScene& scene,
+                     const SceneDescription* description)
+{
+  const PalpationTask& palpation = exercise.tasks[t].palpation;
+  if (palpation.tissueInclusion)
+  {
+    std::size_t numInclusions = 0;
+    if (description != nullptr && palpation.object < description->objects.size() &&
+        description->objects[palpation.object].hasTissue)
+    {
+      numInclusions = description->objects[palpation.object].tissue.inclusions.size();
+    }
+    if (palpation.region >= numInclusions)
+    {
+      throw InputError(exercise.path, taskWhere(t) + ".inclusion: the scene's object " +
+                                        std::to_string(palpation.object) + " has " +
+                                        std::to_string(numInclusions) +
+                                        " tissue inclusion(s) (its tissue's inclusions), "
+                                        "numbered from 0: the inclusion to find is one of them");
+    }
+    return description->objects[palpation.object].tissue.inclusions[palpation.region].center;
+  }
+  const CollisionObject& object = scene.objects[palpation.object];
+  const std::size_t numRegions = object.material.stiffnessRegions.size();
+  if (palpation.region >= numRegions)
+  {
+    throw InputError(exercise.path, taskWhere(t) + ".region: the scene's object " +
+                                      std::to_string(palpation.object) + " has " +
+                                      std::to_string(numRegions) +
+                                      " stiffness region(s) (its material's stiffness_regions), "
+                                      "numbered from 0: the inclusion to find is one of them");
+  }
+  return object.material.stiffnessRegions[palpation.region].center;
+}
 } // namespace
 
-ExerciseScorer::ExerciseScorer(const Exercise& exercise, const CollisionScene& scene)
+ExerciseScorer::ExerciseScorer(const Exercise& exercise, const CollisionScene& scene,
+                               const SceneDescription* description)
   : m_exercise(exercise)
   , m_holdStarts(exercise.tasks.size(), -1.0)
   , m_traces(exercise.tasks.size())
@@ -96,17 +134,8 @@ ExerciseScorer::ExerciseScorer(const Exercise& exercise, const CollisionScene& s
                                           " object(s), numbered from 0");
       }
       const CollisionObject& object = scene.objects[palpation.object];
-      const std::size_t numRegions = object.material.stiffnessRegions.size();
-      if (palpation.region >= numRegions)
-      {
-        throw InputError(exercise.path,
-                         taskWhere(t) + ".region: the scene's object " +
-                           std::to_string(palpation.object) + " has " + std::to_string(numRegions) +
-                           " stiffness region(s) (its material's stiffness_regions), "
-                           "numbered from 0: the inclusion to find is one of them");
-      }
       score.palpation.spot =
-        nearestSurfacePoint(object, object.material.stiffnessRegions[palpation.region].center);
+        nearestSurfacePoint(object, inclusionCenter(exercise, t, scene, description));
     }
     if (task.kind == TaskKind::Trace)
     {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "Exercises/Exercise.h"
+#include "IO/Scene/SceneDescription.h"
 #include "Proxy/CollisionScene.h"
 #include "Runtime/HapticState.h"
 
@@ -92,10 +93,11 @@ struct ExerciseScore
 class ExerciseScorer
 {
 public:
-  /// Checks the exercise's references into `scene` (objects, stiffness regions) and finds each
-  /// palpation's spot; throws InputError naming the exercise file and the task when one does not
-  /// exist.
-  ExerciseScorer(const Exercise& exercise, const CollisionScene& scene);
+  /// Checks the exercise's references into `scene` (objects, stiffness regions, and tissue
+  /// inclusions in `description`, what the scene was built from) and finds each palpation's spot;
+  /// throws InputError naming the exercise file and the task when one does not exist.
+  ExerciseScorer(const Exercise& exercise, const CollisionScene& scene,
+                 const SceneDescription* description = nullptr);
 
   /// The next tick's state (in time order).
   void addTick(const HapticState& state);

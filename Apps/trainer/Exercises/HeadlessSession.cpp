@@ -6,6 +6,8 @@
 #include "IO/ScriptedRun/ScriptedRunSettings.h"
 #include "Runtime/SimulatedDevice.h"
 
+#include <memory>
+
 namespace proxima::trainer
 {
 
@@ -16,10 +18,13 @@ ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& pa
   const ScriptedRunSettings settings = exerciseRunSettings(exercise, pathName);
   const LoadedScene loaded = loadExerciseScene(settings);
   checkPathStart(settings, loaded, path);
-  ExerciseScorer scorer(exercise, *loaded.scene);
+  ExerciseScorer scorer(exercise, *loaded.scene, &loaded.description);
+  // A soft organ deforms under the finger in lockstep, as `proxima run` plays it.
+  const std::unique_ptr<TissueDynamics> tissue =
+    buildSceneTissue(loaded, settings.stiffness, settings.rate);
   std::size_t nextMark = 0;
   SimulatedDevice device(path);
-  playScriptedPath(settings, *loaded.scene, path, device, [&](const HapticState& state) {
+  const auto onTick = [&](const HapticState& state) {
     // A mark at t belongs to the last tick at or before t: apply those due before this tick.
     while (nextMark < markTimes.size() && markTimes[nextMark] < state.time)
     {
@@ -31,7 +36,8 @@ ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& pa
     {
       observer(state, scorer, *loaded.scene);
     }
-  });
+  };
+  playScriptedPath(settings, *loaded.scene, path, device, onTick, {}, nullptr, tissue.get());
   // Marks at or after the last tick mark its contact.
   for (; nextMark < markTimes.size(); ++nextMark)
   {

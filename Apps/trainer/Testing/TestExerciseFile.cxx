@@ -113,6 +113,24 @@ TEST_F(ExerciseFile, Defects)
                 "tasks[0].object: must be an index (a whole number from 0), got 0.5");
   expectRefused(write("twice.json", R"({"format": "proxima-exercise", "format": "x"})"),
                 "format: the key appears twice in the same object");
+  // A palpation's inclusion is a stiffness region or a tissue inclusion, never both or neither.
+  const std::string either = R"(one of "region" (a stiffness region of the object's material) )"
+                             R"(and "inclusion" (an inclusion of the object's tissue))";
+  expectRefused(withTasks("both.json", R"([{"type": "palpation", "object": 0, "region": 0,
+                                             "inclusion": 0, "pass_distance": 0.01}])"),
+                "tasks[0]: takes only " + either);
+  expectRefused(withTasks("neither.json", R"([{"type": "palpation", "object": 0,
+                                                "pass_distance": 0.01}])"),
+                "tasks[0]: needs " + either);
+}
+
+TEST_F(ExerciseFile, APalpationMayFindATissueInclusion)
+{
+  const Exercise exercise = readExerciseFile(withTasks(
+    "soft.json", R"([{"type": "palpation", "object": 0, "inclusion": 1, "pass_distance": 0.01}])"));
+  ASSERT_EQ(exercise.tasks.size(), 1u);
+  EXPECT_TRUE(exercise.tasks[0].palpation.tissueInclusion);
+  EXPECT_EQ(exercise.tasks[0].palpation.region, 1u);
 }
 
 } // namespace

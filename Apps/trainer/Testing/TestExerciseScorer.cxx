@@ -105,6 +105,35 @@ TEST(ExerciseScorer, APalpationNamingARegionTheSceneHasNotIsRefused)
   }
 }
 
+TEST(ExerciseScorer, APalpationMayFindAnInclusionOfTheObjectsTissue)
+{
+  const CollisionScene scene = floorWithNodule();
+  SceneDescription description;
+  description.objects.resize(1);
+  description.objects[0].hasTissue = true;
+  description.objects[0].tissue.inclusions.push_back({{-0.04, 0.05, -0.01}, 0.008, 3e4});
+  ExerciseTask task;
+  task.kind = TaskKind::Palpation;
+  task.palpation = {0, 0, 0.01, true};
+  ExerciseScorer scorer(exerciseWith(task), scene, &description);
+  // The floor's point nearest the inclusion's centre, straight above it (not the stiffness
+  // region's).
+  EXPECT_NEAR(norm(scorer.score().tasks[0].palpation.spot - Vec3{-0.04, 0.05, 0.0}), 0.0, 1e-12);
+  task.palpation.region = 1;
+  try
+  {
+    ExerciseScorer refused(exerciseWith(task), scene, &description);
+    FAIL() << "no refusal";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(),
+                 "test-exercise.json: tasks[0].inclusion: the scene's object 0 has 1 tissue "
+                 "inclusion(s) (its tissue's inclusions), numbered from 0: the inclusion to find "
+                 "is one of them");
+  }
+}
+
 TEST(ExerciseScorer, TargetsCountInOrderWithTheForceInTheBandForTheHoldTime)
 {
   const CollisionScene scene = floorWithNodule();

@@ -50,6 +50,9 @@ std::unique_ptr<TrainerWindow> openWindow(const std::string& path,
 {
   const Exercise exercise = readExerciseFile(path);
   LoadedScene loaded = loadExerciseScene(exerciseRunSettings(exercise, ""));
+  // The window runs the real-time loops, which cannot step a solid yet: a soft organ's
+  // exercise scores headless (--path) only.
+  refuseSceneTissue(loaded, "the trainer's window (give --path to score it headless)");
   return std::make_unique<TrainerWindow>(exercise, windowSettings(exercise, loaded, options));
 }
 
