@@ -52,16 +52,18 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
 {
   ++m_ticks;
   m_numSprings = 0;
-  if (!(stiffness > 0.0))
-  {
-    return;
-  }
+  m_numApproaching = 0;
   const CollisionObject& object = m_solver.queryObject(m_object);
   const double radius = m_solver.parameters().radius;
   const double gap = kFootprintGap * radius;
   const std::uint32_t found = object.tree.gatherWithin(
     object.mesh, proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
   const std::uint32_t count = std::min(found, kMaxFootprint);
+  if (!(stiffness > 0.0))
+  {
+    noteApproach(proxy, count);
+    return;
+  }
   // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles) go to the
   // triangles that carry the most.
   std::sort(m_footprint.begin(), m_footprint.begin() + count,
@@ -119,8 +121,71 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
   }
 }
 
+void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count)
+{
+  // Not touching, but within the footprint's gap: the nearest triangles, each along the
+  // direction to the proxy, in case the step brings them into it (step() keeps those moving
+  // toward it).
+  const CollisionObject& object = m_solver.queryObject(m_object);
+  const double radius = m_solver.parameters().radius;
+  const double gap = kFootprintGap * radius;
+  std::sort(m_footprint.begin(), m_footprint.begin() + count,
+            [](const NearbyTriangle& a, const NearbyTriangle& b) {
+              return a.closest.squaredDistance < b.closest.squaredDistance ||
+                     (a.closest.squaredDistance == b.closest.squaredDistance &&
+                      a.triangle < b.triangle);
+            });
+  double total = 0.0;
+  for (std::uint32_t i = 0; i < count; ++i)
+  {
+    const double clearance = std::sqrt(m_footprint[i].closest.squaredDistance) - radius;
+    total += std::max(0.0, 1.0 - clearance / gap);
+  }
+  if (!(total > 0.0))
+  {
+    return;
+  }
+  for (std::uint32_t i = 0; i < count && m_numApproaching < kMaxContactSprings; ++i)
+  {
+    const NearbyTriangle& near = m_footprint[i];
+    const double distanceToCentre = std::sqrt(near.closest.squaredDistance);
+    const double share = std::max(0.0, 1.0 - (distanceToCentre - radius) / gap) / total;
+    if (!(share > 0.0) || !(distanceToCentre > 0.0))
+    {
+      continue;
+    }
+    ContactSpring& spring = m_approaching[m_numApproaching++];
+    spring.vertices = object.mesh.indices(near.triangle);
+    spring.weights = {near.closest.weights[0], near.closest.weights[1], near.closest.weights[2]};
+    spring.normal = (proxy - near.closest.point) / distanceToCentre;
+    spring.stiffness = m_stiffness * share;
+  }
+}
+
 void TissueContact::step()
 {
+  if (m_numSprings == 0)
+  {
+    // A surface springing back toward a proxy it does not touch yet would rise into it within
+    // the step, unheld, and carry it: the spring's force would jump the next tick and the
+    // contact be lost again (a release chattered at 0.84 N on the liver). Where it moves toward
+    // the proxy, it is held along that direction as a contact would hold it, from where it is.
+    const std::vector<Vec3>& velocities = m_solid.velocities();
+    for (int k = 0; k < m_numApproaching; ++k)
+    {
+      const ContactSpring& spring = m_approaching[k];
+      Vec3 velocity;
+      for (int c = 0; c < 3; ++c)
+      {
+        velocity += velocities[spring.vertices[static_cast<std::size_t>(c)]] *
+                    spring.weights[static_cast<std::size_t>(c)];
+      }
+      if (dot(velocity, spring.normal) > 0.0)
+      {
+        m_springs[m_numSprings++] = spring;
+      }
+    }
+  }
   const double share = m_ticks > 0 ? 1.0 / static_cast<double>(m_ticks) : 0.0;
   m_solid.clearExternalForces();
   m_lastForce = Vec3{};

@@ -50,7 +50,10 @@ public:
   /// on as springs of stiffness kp along their normals, taken implicitly by the step
   /// (ElasticSolid::setContactSprings): as the surface gives way under the proxy the spring's
   /// force falls within the step, as the hand's would. Held explicitly alone, a 1000 N/m spring
-  /// on a 5 kPa block threw its surface centimetres a step and the block gained energy.
+  /// on a 5 kPa block threw its surface centimetres a step and the block gained energy. Without
+  /// contact at the last tick, the footprint's triangles moving toward the proxy are held along
+  /// the direction to it the same way, from where they are, so that a surface springing back
+  /// does not rise into the proxy unheld.
   void step();
 
   /// The force the last step applied to the solid, summed over its vertices (N).
@@ -73,6 +76,12 @@ private:
   /// The last tick's footprint, as springs for the next step.
   ContactSpring m_springs[kMaxContactSprings];
   int m_numSprings = 0;
+  /// Without contact, the triangles near the proxy, each along the direction to it: those moving
+  /// toward it become springs of the next step.
+  ContactSpring m_approaching[kMaxContactSprings];
+  int m_numApproaching = 0;
+  /// Fills m_approaching from the first `count` entries of m_footprint.
+  void noteApproach(const Vec3& proxy, std::uint32_t count);
   /// The footprint's triangles, and the scratch of the query that finds them.
   std::vector<NearbyTriangle> m_footprint;
   std::unique_ptr<SphereTreeScratch> m_scratch;
