@@ -8,6 +8,7 @@ spots on its upper surface (the side a default camera looks at, +z) and writes:
   Data/Exercises/liver-palpation.json.in   find the nodule and mark it
   Data/Scenes/liver-soft-nodule.json.in    the liver as soft tissue, the nodule a stiff inclusion
   Data/Exercises/liver-soft-palpation.json.in  find that nodule (the palpation's paths)
+  Data/Exercises/kidney-press.json.in      press the soft kidney's poles gently, in turn
   Data/Exercises/liver-targets.json.in     touch three spots in order with 0.5-2 N
   Data/Exercises/liver-trace.json.in       follow a 4 cm line on the surface within 3 mm
 
@@ -53,6 +54,10 @@ NODULE_DEPTH = 0.006
 NODULE_RADIUS = 0.012
 NODULE_SCALE = 4.0
 FORCE_LIMIT = 5.0
+KIDNEY_FORCE_LIMIT = 0.4  # N
+KIDNEY_FORCE_BAND = [0.05, 0.25]  # N
+KIDNEY_DEPTH = 0.006  # m: the finger behind the proxy's first touch in the passing presses
+KIDNEY_DEEP = 0.03  # m: the failing path's second press
 SOFT_YOUNGS_MODULUS = 3000.0  # Pa: soft liver
 SOFT_NODULE_FACTOR = 10.0
 SOFT_DAMPING = 20.0  # 1/s
@@ -356,6 +361,40 @@ def main():
         stroke = surface_line(surface, (0.3, 0.55), (0.7, 0.55), (0.0, offset))
         stroke_path(start, travel, stroke, 0.003, RADIUS).write(
             os.path.join(paths, f"liver-trace-{name}.csv"))
+
+    # The kidney as soft tissue (Data/Scenes/kidney-tissue.json, 6 kPa, held along its back): press
+    # its upper and lower pole in turn, each gently, for a third of a second; it is damaged above
+    # KIDNEY_FORCE_LIMIT. The failing path presses the lower pole KIDNEY_DEEP deep.
+    kidney = Surface(read_mesh(os.path.join(root, "Data", "Meshes", "VH_M_Kidney_L.glb"), 1.0))
+    kx0, kx1, ky0, ky1, _, ktop = kidney.bounds
+    kidney_travel = ktop + 0.02
+    kidney_start = [(kx0 + kx1) / 2, (ky0 + ky1) / 2, kidney_travel]
+    poles = [("upper", kidney.spot(kx0 + (kx1 - kx0) * 0.5, ky0 + (ky1 - ky0) * 0.7)),
+             ("lower", kidney.spot(kx0 + (kx1 - kx0) * 0.5, ky0 + (ky1 - ky0) * 0.3))]
+    write_json(os.path.join(exercises, "kidney-press.json.in"), {
+        "format": "proxima-exercise",
+        "version": 1,
+        "scene": "@PROXIMA_DATA_DIR@/Scenes/kidney-tissue.json",
+        "proxy": {"radius": RADIUS, "stiffness": STIFFNESS, "rate": RATE, "max_force": 10},
+        "tissues": [{"object": 0, "name": "kidney", "force_limit": KIDNEY_FORCE_LIMIT}],
+        "name": "Soft kidney: press the upper pole, then the lower",
+        "instructions": "The kidney gives way under your finger. Press its upper pole, then its "
+                        "lower pole, each with between 0.05 and 0.25 N for a third of a second. "
+                        "Do not press harder than 0.4 N. Headless only for now (--path): the "
+                        "window cannot deform tissue yet.",
+        "tasks": [{
+            "type": "targets",
+            "targets": [{"name": n, "center": rounded(s[0]), "radius": 0.006} for n, s in poles],
+            "force": KIDNEY_FORCE_BAND,
+            "hold": 0.3,
+        }],
+    })
+    for name, depths in (("pass", (KIDNEY_DEPTH, KIDNEY_DEPTH)), ("fail", (KIDNEY_DEPTH, KIDNEY_DEEP))):
+        writer = PathWriter(kidney_start)
+        for (_, spot), depth in zip(poles, depths):
+            press_at(writer, kidney, spot, depth, 0.8, kidney_travel)
+        writer.move(kidney_start, 0.1)
+        writer.write(os.path.join(paths, f"kidney-press-{name}.csv"))
 
     # The cranium: a craniotomy line across the vertex, 1 mm proxy on bone at 1000 N/m. The
     # passing path strokes it pressed 2 mm (2 N); the failing one presses 8 mm (8 N, over the
