@@ -59,35 +59,21 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
   const std::uint32_t found = object.tree.gatherWithin(
     object.mesh, proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
   const std::uint32_t count = std::min(found, kMaxFootprint);
-  if (!(stiffness > 0.0))
-  {
-    noteApproach(proxy, count);
-    return;
-  }
-  // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles) go to the
-  // triangles that carry the most.
-  std::sort(m_footprint.begin(), m_footprint.begin() + count,
-            [](const NearbyTriangle& a, const NearbyTriangle& b) {
-              return a.closest.squaredDistance < b.closest.squaredDistance ||
-                     (a.closest.squaredDistance == b.closest.squaredDistance &&
-                      a.triangle < b.triangle);
-            });
-  double total = 0.0;
-  for (std::uint32_t i = 0; i < count; ++i)
-  {
-    const double clearance = std::sqrt(m_footprint[i].closest.squaredDistance) - radius;
-    total += std::max(0.0, 1.0 - clearance / gap);
-  }
+  const double total = sortFootprint(count);
   if (!(total > 0.0))
   {
+    return;
+  }
+  if (!(stiffness > 0.0))
+  {
+    noteApproach(proxy, count, total);
     return;
   }
   const int maxSpringTriangles = kMaxContactSprings / 3;
   for (std::uint32_t i = 0; i < count; ++i)
   {
     const NearbyTriangle& near = m_footprint[i];
-    const double clearance = std::sqrt(near.closest.squaredDistance) - radius;
-    const double share = std::max(0.0, 1.0 - clearance / gap) / total;
+    const double share = footprintWeight(std::sqrt(near.closest.squaredDistance)) / total;
     if (!(share > 0.0))
     {
       continue;
@@ -121,14 +107,17 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
   }
 }
 
-void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count)
+double TissueContact::footprintWeight(double distanceToCentre) const
 {
-  // Not touching, but within the footprint's gap: the nearest triangles, each along the
-  // direction to the proxy, in case the step brings them into it (step() keeps those moving
-  // toward it).
-  const CollisionObject& object = m_solver.queryObject(m_object);
   const double radius = m_solver.parameters().radius;
-  const double gap = kFootprintGap * radius;
+  const double clearance = distanceToCentre - radius;
+  return std::max(0.0, 1.0 - clearance / (kFootprintGap * radius));
+}
+
+double TissueContact::sortFootprint(std::uint32_t count)
+{
+  // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles in contact) go
+  // to the triangles that carry the most.
   std::sort(m_footprint.begin(), m_footprint.begin() + count,
             [](const NearbyTriangle& a, const NearbyTriangle& b) {
               return a.closest.squaredDistance < b.closest.squaredDistance ||
@@ -138,18 +127,22 @@ void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count)
   double total = 0.0;
   for (std::uint32_t i = 0; i < count; ++i)
   {
-    const double clearance = std::sqrt(m_footprint[i].closest.squaredDistance) - radius;
-    total += std::max(0.0, 1.0 - clearance / gap);
+    total += footprintWeight(std::sqrt(m_footprint[i].closest.squaredDistance));
   }
-  if (!(total > 0.0))
-  {
-    return;
-  }
+  return total;
+}
+
+void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count, double total)
+{
+  // Not touching, but within the footprint's gap: the nearest triangles, each along the
+  // direction to the proxy, in case the step brings them into it (step() keeps those moving
+  // toward it).
+  const CollisionObject& object = m_solver.queryObject(m_object);
   for (std::uint32_t i = 0; i < count && m_numApproaching < kMaxContactSprings; ++i)
   {
     const NearbyTriangle& near = m_footprint[i];
     const double distanceToCentre = std::sqrt(near.closest.squaredDistance);
-    const double share = std::max(0.0, 1.0 - (distanceToCentre - radius) / gap) / total;
+    const double share = footprintWeight(distanceToCentre) / total;
     if (!(share > 0.0) || !(distanceToCentre > 0.0))
     {
       continue;

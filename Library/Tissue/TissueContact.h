@@ -80,8 +80,14 @@ private:
   /// toward it become springs of the next step.
   ContactSpring m_approaching[kMaxContactSprings];
   int m_numApproaching = 0;
-  /// Fills m_approaching from the first `count` entries of m_footprint.
-  void noteApproach(const Vec3& proxy, std::uint32_t count);
+  /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
+  /// sum to `total`.
+  void noteApproach(const Vec3& proxy, std::uint32_t count, double total);
+  /// A footprint triangle's weight, from its nearest point's distance to the proxy's centre: 1 at
+  /// the proxy's surface, 0 at kFootprintGap radii beyond it.
+  double footprintWeight(double distanceToCentre) const;
+  /// Sorts the first `count` entries of m_footprint nearest first and returns their weights' sum.
+  double sortFootprint(std::uint32_t count);
   /// The footprint's triangles, and the scratch of the query that finds them.
   std::vector<NearbyTriangle> m_footprint;
   std::unique_ptr<SphereTreeScratch> m_scratch;

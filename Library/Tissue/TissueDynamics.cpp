@@ -109,11 +109,17 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
     // The spring's press on this tissue, plane by plane (eq. 19): kp mu_i along -n_i.
     Vec3 force;
     double deepest = 0.0;
-    int deepestContact = -1;
+    int deepestContact = -1; // the contact the spring presses hardest
+    int firstContact = -1;   // any contact on the tissue, pressed or not
     for (int k = 0; k < state.numContacts; ++k)
     {
       const ContactSnapshot& contact = state.contacts[k];
-      if (contact.object == tissue.object && contact.depth > 0.0)
+      if (contact.object != tissue.object)
+      {
+        continue;
+      }
+      firstContact = firstContact >= 0 ? firstContact : k;
+      if (contact.depth > 0.0)
       {
         force += contact.normal * (-m_stiffness * state.stiffnessScale * contact.depth);
         if (contact.depth > deepest)
@@ -127,22 +133,15 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
     tissue.contact->addPress(state.proxy, force, stiffness);
     TissueReading& reading = tissue.reading;
     reading.force = norm(force);
-    reading.touched = false;
+    const int chosen = deepestContact >= 0 ? deepestContact : firstContact;
+    reading.touched = chosen >= 0;
     reading.indentation = 0.0;
-    for (int k = 0; k < state.numContacts; ++k)
+    if (reading.touched)
     {
-      const ContactSnapshot& contact = state.contacts[k];
-      if (contact.object == tissue.object)
-      {
-        // The contact the spring presses hardest, or any contact on the tissue.
-        const int chosen = deepestContact >= 0 ? deepestContact : k;
-        const ContactSnapshot& touched = state.contacts[chosen];
-        reading.touched = true;
-        reading.indentation =
-          indentationAt(tissue, solver, touched.triangle, touched.point, state.proxy);
-        tissue.deepest = std::max(tissue.deepest, reading.indentation);
-        break;
-      }
+      const ContactSnapshot& touched = state.contacts[chosen];
+      reading.indentation =
+        indentationAt(tissue, solver, touched.triangle, touched.point, state.proxy);
+      tissue.deepest = std::max(tissue.deepest, reading.indentation);
     }
   }
   if (++m_ticksSinceStep >= m_ticksPerStep)
