@@ -1,5 +1,6 @@
 #include "Tissue/BoxTetMesh.h"
 
+#include <cmath>
 #include <utility>
 
 namespace proxima
@@ -7,19 +8,35 @@ namespace proxima
 
 TetMesh makeBoxTetMesh(const Vec3& lower, const Vec3& upper, int nx, int ny, int nz)
 {
+  const auto evenly = [](double from, double to, int cells) {
+    std::vector<double> at;
+    for (int i = 0; i <= cells; ++i)
+    {
+      at.push_back(from + (to - from) * i / cells);
+    }
+    return at;
+  };
+  return makeGridTetMesh(evenly(lower.x, upper.x, nx), evenly(lower.y, upper.y, ny),
+                         evenly(lower.z, upper.z, nz));
+}
+
+TetMesh makeGridTetMesh(const std::vector<double>& xs, const std::vector<double>& ys,
+                        const std::vector<double>& zs)
+{
   TetMesh mesh;
+  const int nx = static_cast<int>(xs.size()) - 1;
+  const int ny = static_cast<int>(ys.size()) - 1;
+  const int nz = static_cast<int>(zs.size()) - 1;
   const auto index = [&](int i, int j, int k) {
     return static_cast<std::uint32_t>(i + (nx + 1) * (j + (ny + 1) * k));
   };
-  for (int k = 0; k <= nz; ++k)
+  for (const double z : zs)
   {
-    for (int j = 0; j <= ny; ++j)
+    for (const double y : ys)
     {
-      for (int i = 0; i <= nx; ++i)
+      for (const double x : xs)
       {
-        mesh.points.push_back({lower.x + (upper.x - lower.x) * i / nx,
-                               lower.y + (upper.y - lower.y) * j / ny,
-                               lower.z + (upper.z - lower.z) * k / nz});
+        mesh.points.push_back({x, y, z});
       }
     }
   }
@@ -53,6 +70,29 @@ TetMesh makeBoxTetMesh(const Vec3& lower, const Vec3& upper, int nx, int ny, int
     }
   }
   return mesh;
+}
+
+std::vector<double> gradedCoordinates(double from, double to, double finest, double growth)
+{
+  const double direction = to > from ? 1.0 : -1.0;
+  const double length = std::abs(to - from);
+  std::vector<double> at{from};
+  double covered = 0.0;
+  double cell = finest;
+  while (covered + cell < length)
+  {
+    covered += cell;
+    at.push_back(from + direction * covered);
+    cell *= growth;
+  }
+  // The rest is shorter than the next cell would be; as a cell of its own it could be a sliver,
+  // so when it is shorter than its predecessor it joins it (cells never shrink toward `to`).
+  if (at.size() > 1 && length - covered < cell / growth)
+  {
+    at.pop_back();
+  }
+  at.push_back(to);
+  return at;
 }
 
 } // namespace proxima

@@ -64,6 +64,55 @@ TEST(TetBoundary, ABoxOfTetrahedraIsBoundedByItsSixFacesFacedOut)
   EXPECT_EQ(soup.triangles, triangles);
 }
 
+// A graded grid, as the Hertz check builds its block: spacing starting at `finest` and growing
+// by at most `growth` until the last cell, which ends exactly at the far end; the grid's
+// tetrahedra fill the box (their volumes, all positive, sum to its volume) and its surface is
+// closed, as an even grid's is.
+TEST(TetBoundary, AGradedGridFillsItsBoxAndIsClosed)
+{
+  const std::vector<double> xs = gradedCoordinates(0.0, 0.025, 0.001, 1.3);
+  ASSERT_GE(xs.size(), 3u);
+  EXPECT_EQ(xs.front(), 0.0);
+  EXPECT_EQ(xs.back(), 0.025);
+  EXPECT_NEAR(xs[1] - xs[0], 0.001, 1e-18);
+  for (std::size_t i = 2; i + 1 < xs.size(); ++i)
+  {
+    EXPECT_NEAR((xs[i] - xs[i - 1]) / (xs[i - 1] - xs[i - 2]), 1.3, 1e-12) << i;
+  }
+  // The last cell ends at the far end, no shorter than the one before it (no sliver).
+  const double last = xs.back() - xs[xs.size() - 2];
+  const double before = xs[xs.size() - 2] - xs[xs.size() - 3];
+  EXPECT_GE(last, before);
+  EXPECT_LT(last, 2.0 * 1.3 * before);
+  // Downward, and an even grid for a growth of 1.
+  const std::vector<double> down = gradedCoordinates(0.0, -0.01, 0.0025, 1.0);
+  const std::vector<double> even{0.0, -0.0025, -0.005, -0.0075, -0.01};
+  ASSERT_EQ(down.size(), even.size());
+  for (std::size_t i = 0; i < even.size(); ++i)
+  {
+    EXPECT_NEAR(down[i], even[i], 1e-17) << i;
+  }
+
+  const std::vector<double> ys{-0.01, -0.004, 0.0, 0.001, 0.003};
+  const std::vector<double> zs{-0.02, 0.0};
+  const TetMesh mesh = makeGridTetMesh(xs, ys, zs);
+  EXPECT_EQ(mesh.points.size(), xs.size() * ys.size() * zs.size());
+  EXPECT_EQ(mesh.tets.size(), 6 * (xs.size() - 1) * (ys.size() - 1) * (zs.size() - 1));
+  EXPECT_EQ(countInvertedTets(mesh), 0u);
+  EXPECT_NEAR(totalVolume(mesh), 0.025 * 0.013 * 0.02, 1e-15);
+  const auto triangles = boundaryTriangles(mesh);
+  const std::size_t nx = xs.size() - 1;
+  const std::size_t ny = ys.size() - 1;
+  const std::size_t nz = zs.size() - 1;
+  EXPECT_EQ(triangles.size(), 4 * (nx * ny + ny * nz + nz * nx));
+  double enclosed = 0.0;
+  for (const auto& t : triangles)
+  {
+    enclosed += dot(mesh.points[t[0]], cross(mesh.points[t[1]], mesh.points[t[2]])) / 6.0;
+  }
+  EXPECT_NEAR(enclosed, totalVolume(mesh), 1e-15);
+}
+
 // A block of 4 x 4 x 2 cm (cells of 5 mm), 5 kPa, fixed along its base; a proxy of 5 mm radius
 // on a 1000 N/m spring. The finger comes down from 1 cm above the top's centre to 3 mm below it
 // in 0.4 s, holds 1 s, goes back up in 0.4 s and waits 1.2 s.
