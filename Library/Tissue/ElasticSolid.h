@@ -62,8 +62,9 @@ struct ContactSpring
   double stiffness = 0.0;
 };
 
-/// The most contact springs one step takes: a proxy has at most this many contact planes.
-inline constexpr int kMaxContactSprings = 32;
+/// The most contact springs one step takes: a proxy's footprint of up to 512 triangles, each
+/// held along three axes (TissueContact).
+inline constexpr int kMaxContactSprings = 1536;
 
 /// A tetrahedral solid with per-element stiffness, fixed vertices and external forces.
 class ElasticSolid
@@ -162,7 +163,7 @@ private:
   std::vector<Vec3> m_positions;
   std::vector<Vec3> m_velocities;
   std::vector<Vec3> m_externalForces;
-  ContactSpring m_springs[kMaxContactSprings];
+  std::vector<ContactSpring> m_springs = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numSprings = 0;
   // The solver's work space, sized once: step() allocates nothing.
   std::vector<Vec3> m_rhs, m_residual, m_direction, m_product, m_preconditioned;

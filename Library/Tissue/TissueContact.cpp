@@ -55,7 +55,7 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
   m_numApproaching = 0;
   const CollisionObject& object = m_solver.queryObject(m_object);
   const double radius = m_solver.parameters().radius;
-  const double gap = kFootprintGap * radius;
+  const double gap = m_footprintGap * radius;
   const std::uint32_t found = object.tree.gatherWithin(
     object.mesh, proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
   const std::uint32_t count = std::min(found, kMaxFootprint);
@@ -111,7 +111,7 @@ double TissueContact::footprintWeight(double distanceToCentre) const
 {
   const double radius = m_solver.parameters().radius;
   const double clearance = distanceToCentre - radius;
-  return std::max(0.0, 1.0 - clearance / (kFootprintGap * radius));
+  return std::max(0.0, 1.0 - clearance / (m_footprintGap * radius));
 }
 
 double TissueContact::sortFootprint(std::uint32_t count)
@@ -192,7 +192,7 @@ void TissueContact::step()
   }
   m_loaded.clear();
   m_ticks = 0;
-  m_solid.setContactSprings(m_springs, m_numSprings);
+  m_solid.setContactSprings(m_springs.data(), m_numSprings);
   m_solid.step();
   const std::vector<Vec3>& positions = m_solid.positions();
   m_solver.setObjectPoints(m_object, positions.data(), positions.size());

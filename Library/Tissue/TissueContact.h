@@ -40,10 +40,16 @@ public:
   /// with `force` (N) through a spring of `stiffness` (N/m, kp times the contacts' stiffness
   /// scale); a stiffness of 0 is a tick without contact on the object.
   void addPress(const Vec3& proxy, const Vec3& force, double stiffness);
-  /// How far beyond the proxy's radius, as a fraction of it, the footprint reaches.
+  /// How far beyond the proxy's radius, as a fraction of it, the footprint reaches by default.
   static constexpr double kFootprintGap = 0.25;
+  /// Sets how far the footprint reaches beyond the proxy's radius, as a fraction of it (above 0).
+  void setFootprintGap(double fraction) { m_footprintGap = fraction; }
+  /// How far the footprint reaches beyond the proxy's radius, as a fraction of it.
+  double footprintGap() const { return m_footprintGap; }
   /// The most triangles a footprint spreads the force over (the nearest first).
   static constexpr std::uint32_t kMaxFootprint = 512;
+  static_assert(3 * kMaxFootprint <= kMaxContactSprings,
+                "a spring per axis per footprint triangle");
   /// One step of the solid under the mean of the forces added since the last step, then the
   /// solver is given the new positions (ProxySolver::setObjectPoints). The force is the proxy's
   /// sampled at the servo rate and held over the slower step, and the last tick's contacts press
@@ -66,6 +72,7 @@ private:
   ProxySolver& m_solver;
   std::uint32_t m_object;
   double m_stiffness;
+  double m_footprintGap = kFootprintGap;
   /// Per vertex, the force summed over the ticks since the last step.
   std::vector<Vec3> m_forceSum;
   /// The vertices with a force in m_forceSum (each once), to clear them after a step.
@@ -74,11 +81,11 @@ private:
   int m_ticks = 0;
   Vec3 m_lastForce;
   /// The last tick's footprint, as springs for the next step.
-  ContactSpring m_springs[kMaxContactSprings];
+  std::vector<ContactSpring> m_springs = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numSprings = 0;
   /// Without contact, the triangles near the proxy, each along the direction to it: those moving
   /// toward it become springs of the next step.
-  ContactSpring m_approaching[kMaxContactSprings];
+  std::vector<ContactSpring> m_approaching = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numApproaching = 0;
   /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
   /// sum to `total`.

@@ -192,8 +192,10 @@ TEST_F(TissueScenes, ABlockSceneFilePlaysAsTheCouplingBuiltByHand)
   EXPECT_LT(outcome.tissues[0].maxDisplacement, 1e-4) << "not back at rest after the release";
   EXPECT_GT(outcome.tissues[0].steps, 0u);
   // A surface springing back into a proxy it did not touch at the step's start, unheld, carried
-  // it and jumped the force: releases chattered at several times the held force.
-  EXPECT_LE(releaseForce, heldForce) << "the release kicks the finger";
+  // it and jumped the force: releases chattered at several times the held force. The block still
+  // creeps as the lift begins (its force 1.5e-9 relative above the one at 1.39 s), so the bound
+  // leaves a millionth: far below a kick.
+  EXPECT_LE(releaseForce, heldForce * (1.0 + 1e-6)) << "the release kicks the finger";
 }
 
 TEST_F(TissueScenes, AFixedBoxThatHoldsNothingIsRefused)
