@@ -1,5 +1,6 @@
 #include "Tissue/ElasticSolid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -212,6 +213,129 @@ void ElasticSolid::build(const std::vector<ElasticMaterial>& materials)
   m_product.assign(numVertices, Vec3{});
   m_preconditioned.assign(numVertices, Vec3{});
   m_diagonal.assign(3 * numVertices, 0.0);
+  buildBlockPattern();
+}
+
+void ElasticSolid::buildBlockPattern()
+{
+  const std::size_t numVertices = m_rest.points.size();
+  std::vector<std::vector<std::uint32_t>> neighbours(numVertices);
+  for (const Element& element : m_elements)
+  {
+    for (const std::uint32_t a : element.vertices)
+    {
+      for (const std::uint32_t b : element.vertices)
+      {
+        neighbours[a].push_back(b);
+      }
+    }
+  }
+  m_rowStart.assign(numVertices + 1, 0);
+  m_blockColumns.clear();
+  for (std::size_t i = 0; i < numVertices; ++i)
+  {
+    std::vector<std::uint32_t>& row = neighbours[i];
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    m_blockColumns.insert(m_blockColumns.end(), row.begin(), row.end());
+    m_rowStart[i + 1] = static_cast<std::uint32_t>(m_blockColumns.size());
+  }
+  m_blocks.assign(9 * m_blockColumns.size(), 0.0);
+  const auto blockOf = [&](std::uint32_t row, std::uint32_t column) {
+    const auto first = m_blockColumns.begin() + m_rowStart[row];
+    const auto last = m_blockColumns.begin() + m_rowStart[row + 1];
+    return static_cast<std::uint32_t>(std::lower_bound(first, last, column) -
+                                      m_blockColumns.begin());
+  };
+  m_elementBlocks.resize(m_elements.size());
+  for (std::size_t e = 0; e < m_elements.size(); ++e)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        m_elementBlocks[e][static_cast<std::size_t>(4 * i + j)] =
+          blockOf(m_elements[e].vertices[static_cast<std::size_t>(i)],
+                  m_elements[e].vertices[static_cast<std::size_t>(j)]);
+      }
+    }
+  }
+  m_diagonalBlocks.resize(numVertices);
+  for (std::uint32_t i = 0; i < numVertices; ++i)
+  {
+    m_diagonalBlocks[i] = blockOf(i, i);
+  }
+}
+
+void ElasticSolid::assembleSystem()
+{
+  const double h = m_settings.timeStep;
+  const double massScale = 1.0 + h * m_settings.damping;
+  std::fill(m_blocks.begin(), m_blocks.end(), 0.0);
+  for (std::size_t i = 0; i < m_diagonalBlocks.size(); ++i)
+  {
+    double* block = &m_blocks[9 * static_cast<std::size_t>(m_diagonalBlocks[i])];
+    block[0] = block[4] = block[8] = massScale * m_masses[i];
+  }
+  for (std::size_t e = 0; e < m_elements.size(); ++e)
+  {
+    const Element& element = m_elements[e];
+    const Matrix3 r = cachedRotation(element.rotationColumns);
+    double rb[4][3];
+    for (int i = 0; i < 4; ++i)
+    {
+      const Vec3 turned = r * element.gradients[static_cast<std::size_t>(i)];
+      rb[i][0] = turned.x;
+      rb[i][1] = turned.y;
+      rb[i][2] = turned.z;
+    }
+    const double scale = h * h * element.volume;
+    const double lambda = scale * element.lambda;
+    const double mu = scale * element.mu;
+    // Block (j, i) is block (i, j) transposed: each is made once.
+    const std::array<std::uint32_t, 16>& where = m_elementBlocks[e];
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = i; j < 4; ++j)
+      {
+        const double shear = mu * dot(element.gradients[static_cast<std::size_t>(i)],
+                                      element.gradients[static_cast<std::size_t>(j)]);
+        double block[9];
+        for (int row = 0; row < 3; ++row)
+        {
+          for (int column = 0; column < 3; ++column)
+          {
+            block[3 * row + column] =
+              lambda * rb[i][row] * rb[j][column] + mu * rb[j][row] * rb[i][column];
+          }
+          block[4 * row] += shear;
+        }
+        double* upper = &m_blocks[9 * static_cast<std::size_t>(where[4 * i + j])];
+        for (int k = 0; k < 9; ++k)
+        {
+          upper[k] += block[k];
+        }
+        if (j != i)
+        {
+          double* lower = &m_blocks[9 * static_cast<std::size_t>(where[4 * j + i])];
+          for (int row = 0; row < 3; ++row)
+          {
+            for (int column = 0; column < 3; ++column)
+            {
+              lower[3 * row + column] += block[3 * column + row];
+            }
+          }
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < m_diagonalBlocks.size(); ++i)
+  {
+    const double* block = &m_blocks[9 * static_cast<std::size_t>(m_diagonalBlocks[i])];
+    m_diagonal[3 * i] = block[0];
+    m_diagonal[3 * i + 1] = block[4];
+    m_diagonal[3 * i + 2] = block[8];
+  }
 }
 
 void ElasticSolid::fixVertex(std::uint32_t vertex)
@@ -285,21 +409,18 @@ void ElasticSolid::addElasticForces(std::vector<Vec3>& forces) const
 void ElasticSolid::applySystem(const std::vector<Vec3>& v, std::vector<Vec3>& out) const
 {
   const double h = m_settings.timeStep;
-  const double massScale = 1.0 + h * m_settings.damping;
   for (std::size_t i = 0; i < v.size(); ++i)
   {
-    out[i] = v[i] * (massScale * m_masses[i]);
-  }
-  for (const Element& element : m_elements)
-  {
-    const Matrix3 r = cachedRotation(element.rotationColumns);
-    const Matrix3 g = gradientOf(element.gradients,
-                                 [&](int i) { return r.transposeTimes(v[element.vertices[i]]); });
-    for (int i = 0; i < 4; ++i)
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (std::uint32_t k = m_rowStart[i]; k < m_rowStart[i + 1]; ++k)
     {
-      const Vec3 local = stressTimes(g, element.lambda, element.mu, element.gradients[i]);
-      out[element.vertices[i]] = out[element.vertices[i]] + r * local * (h * h * element.volume);
+      const double* block = &m_blocks[9 * static_cast<std::size_t>(k)];
+      const Vec3& u = v[m_blockColumns[k]];
+      x += block[0] * u.x + block[1] * u.y + block[2] * u.z;
+      y += block[3] * u.x + block[4] * u.y + block[5] * u.z;
+      z += block[6] * u.x + block[7] * u.y + block[8] * u.z;
     }
+    out[i] = Vec3{x, y, z};
   }
   for (int k = 0; k < m_numSprings; ++k)
   {
@@ -361,28 +482,8 @@ void ElasticSolid::step()
     m_rhs[i] = m_fixed[i] != 0 ? Vec3{} : m_velocities[i] * m_masses[i] + m_rhs[i] * h;
   }
 
-  // Jacobi preconditioner: the system's diagonal, (1 + h damping) m + h^2 V ((lambda + mu)
-  // (R b)_d^2 + mu |b|^2) summed over a vertex's elements.
-  const double massScale = 1.0 + h * m_settings.damping;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    m_diagonal[3 * i] = m_diagonal[3 * i + 1] = m_diagonal[3 * i + 2] = massScale * m_masses[i];
-  }
-  for (const Element& element : m_elements)
-  {
-    const Matrix3 r = cachedRotation(element.rotationColumns);
-    for (int i = 0; i < 4; ++i)
-    {
-      const Vec3 rb = r * element.gradients[i];
-      const double shear = element.mu * squaredNorm(element.gradients[i]);
-      const double scale = h * h * element.volume;
-      const double lm = element.lambda + element.mu;
-      double* d = &m_diagonal[3 * element.vertices[i]];
-      d[0] += scale * (lm * rb.x * rb.x + shear);
-      d[1] += scale * (lm * rb.y * rb.y + shear);
-      d[2] += scale * (lm * rb.z * rb.z + shear);
-    }
-  }
+  // The system, and its diagonal for the Jacobi preconditioner, with the springs' beside it.
+  assembleSystem();
   for (int k = 0; k < m_numSprings; ++k)
   {
     const ContactSpring& spring = m_springs[k];

@@ -149,6 +149,13 @@ private:
   void build(const std::vector<ElasticMaterial>& materials);
   /// Each element's rotation from the current positions: a step's few turns, or converged.
   void updateRotations(bool converge);
+  /// The block pattern of the system (a 3x3 block per vertex pair sharing a tetrahedron), and
+  /// where each element's 16 corner pairs land in it: made once, by the constructor.
+  void buildBlockPattern();
+  /// The step's system (1 + h damping) M + h^2 K_rot into the blocks, and its diagonal into the
+  /// Jacobi preconditioner; K_rot's blocks of an element are V (lambda Rb_i (Rb_j)^T
+  /// + mu Rb_j (Rb_i)^T + mu b_i.b_j I).
+  void assembleSystem();
   /// out = (1 + h damping) M v + h^2 (K_rot + K_springs) v, with fixed vertices' rows and columns
   /// left out.
   void applySystem(const std::vector<Vec3>& v, std::vector<Vec3>& out) const;
@@ -168,6 +175,17 @@ private:
   // The solver's work space, sized once: step() allocates nothing.
   std::vector<Vec3> m_rhs, m_residual, m_direction, m_product, m_preconditioned;
   std::vector<double> m_diagonal;
+  // The system as 3x3 blocks by rows (compressed sparse rows of blocks): row i's blocks are
+  // m_blocks[9 k ...] for k in [m_rowStart[i], m_rowStart[i + 1]), of columns m_blockColumns[k],
+  // each stored by rows. Assembled once a step, it makes a solver iteration's product about a
+  // tenth of the element-by-element one's work.
+  std::vector<std::uint32_t> m_rowStart;
+  std::vector<std::uint32_t> m_blockColumns;
+  std::vector<double> m_blocks;
+  /// Per element, the block of its corner pair (i, j) at [4 i + j].
+  std::vector<std::array<std::uint32_t, 16>> m_elementBlocks;
+  /// Per vertex, its diagonal block.
+  std::vector<std::uint32_t> m_diagonalBlocks;
   double m_lastResidual = 0.0;
 };
 
