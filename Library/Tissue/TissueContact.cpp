@@ -69,7 +69,6 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
     noteApproach(proxy, count, total);
     return;
   }
-  const int maxSpringTriangles = kMaxContactSprings / 3;
   for (std::uint32_t i = 0; i < count; ++i)
   {
     const NearbyTriangle& near = m_footprint[i];
@@ -88,10 +87,6 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
         m_isLoaded[vertex] = 1;
         m_loaded.push_back(vertex);
       }
-    }
-    if (static_cast<int>(i) >= maxSpringTriangles)
-    {
-      continue;
     }
     // The footprint held by the spring in every direction during the step, its stiffness shared
     // as the force is: along the force alone, the tangential part stayed explicit.
@@ -116,8 +111,8 @@ double TissueContact::footprintWeight(double distanceToCentre) const
 
 double TissueContact::sortFootprint(std::uint32_t count)
 {
-  // Nearest first, so that the springs (at most kMaxContactSprings / 3 triangles in contact) go
-  // to the triangles that carry the most.
+  // Nearest first: the footprint keeps the kMaxFootprint triangles that carry the most (every
+  // one of them gets its springs: TissueContact.h asserts there are enough).
   std::sort(m_footprint.begin(), m_footprint.begin() + count,
             [](const NearbyTriangle& a, const NearbyTriangle& b) {
               return a.closest.squaredDistance < b.closest.squaredDistance ||
