@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # proxima-trainer's window driven through X as a trainee would (ctest Trainer.window-program,
-# under its own Xvfb): start it with no exercise, pick the liver palpation from its list with the
-# keyboard, move the cursor over the liver, press in with four wheel notches, mark with M, close
-# with Ctrl+Q. It must print that the attempt closed with one mark, contact ticks scored and none
-# dropped.
+# under its own Xvfb): start it with no exercise, pick the soft kidney's exercise from its list
+# (refused in a message: the list comes back), then the liver palpation, with the keyboard, move
+# the cursor over the liver, press in with four wheel notches, mark with M, close with Ctrl+Q. It
+# must print that the attempt closed with one mark, contact ticks scored and none dropped.
 # Usage: trainer_window_program.sh PROXIMA_TRAINER EXERCISE_FOLDER
 set -euo pipefail
 . "$(dirname "$0")/../../../Library/VTK/Testing/xdotool-session.sh"
@@ -15,17 +15,42 @@ cd "$work"
 
 "$trainer" > out.txt 2> err.txt &
 program=$!
-picker=$(find_window "Proxima trainer$" "$program" err.txt)
+# pick FILE: picks the exercise FILE from the list (the folder's exercises sorted by name, the
+# first selected) with the keyboard, once the list is up.
+pick() {
+  local picker downs=()
+  picker=$(find_window "Proxima trainer$" "$program" err.txt)
+  sleep 0.5
+  for file in $(ls "$PROXIMA_EXERCISE_DIR" | LC_ALL=C sort); do
+    [ "$file" = "$1" ] && break
+    case "$file" in *.json) downs+=(Down) ;; esac
+  done
+  xdotool windowfocus --sync "$picker"
+  xdotool key --clearmodifiers "${downs[@]}" Return
+  wait_until_hidden "$picker"
+}
+# wait_until_hidden ID: waits up to 30 s for window ID to be gone from the screen.
+wait_until_hidden() {
+  for _ in $(seq 300); do
+    xdotool search --onlyvisible --name "Proxima trainer" 2> /dev/null | grep -qx "$1" || return 0
+    sleep 0.1
+  done
+  echo "trainer-window: window $1 stayed up" >&2
+  return 1
+}
+
+# First the soft kidney's exercise, which the window cannot run yet: it is refused in a message
+# box (and on stderr), and the list comes back instead of the program ending.
+pick kidney-press.json
+message=$(find_window "Proxima trainer$" "$program" err.txt)
+grep -q "kidney-tissue.json: the scene has tissue, which the trainer's window" err.txt ||
+  { echo "trainer-window: the soft exercise was not refused by name:" >&2; cat err.txt >&2; exit 1; }
 sleep 0.5
-# The list is the folder's exercises sorted by name, the first selected: go down to the palpation
-# (the second where the shared cranium's exercise is there, else the first).
-downs=()
-for file in $(ls "$PROXIMA_EXERCISE_DIR" | LC_ALL=C sort); do
-  [ "$file" = liver-palpation.json ] && break
-  case "$file" in *.json) downs+=(Down) ;; esac
-done
-xdotool windowfocus --sync "$picker"
-xdotool key --clearmodifiers "${downs[@]}" Return
+xdotool windowfocus --sync "$message"
+xdotool key --clearmodifiers Return
+wait_until_hidden "$message"
+# Then the liver palpation from the list that came back.
+pick liver-palpation.json
 window=$(find_window "Proxima trainer: Liver palpation" "$program" err.txt)
 sleep 1.5
 xdotool windowfocus --sync "$window"

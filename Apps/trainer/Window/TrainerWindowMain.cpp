@@ -121,17 +121,33 @@ int runTrainerWindow(const TrainerWindowOptions& options, int argc, char** argv)
   // Before the application: the OpenGL context VTK's widget needs (DEBIAN-NOTES.md).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication application(argc, argv);
-  std::string path = options.exercise;
-  if (path.empty())
+  std::unique_ptr<TrainerWindow> window;
+  if (!options.exercise.empty())
   {
-    path = pickExercise();
+    // The exercise named on the command line is refused with status 2 like any other input.
+    window = openWindow(options.exercise, options);
+  }
+  // One picked from the list and refused (a soft organ's, which scores headless only) is named
+  // in a message and the list comes back, as File > Open does below.
+  while (window == nullptr)
+  {
+    const std::string path = pickExercise();
     if (path.empty())
     {
       return 0;
     }
+    try
+    {
+      window = openWindow(path, options);
+    }
+    catch (const std::exception& error)
+    {
+      // On stderr too, as a refusal on the command line is: a terminal keeps what the box said.
+      std::fprintf(stderr, "proxima-trainer: %s\n", error.what());
+      QMessageBox::warning(nullptr, QObject::tr("Proxima trainer"),
+                           QString::fromStdString(error.what()));
+    }
   }
-  // The exercise named on the command line is refused with status 2 like any other input.
-  std::unique_ptr<TrainerWindow> window = openWindow(path, options);
   // File > Open an exercise: a window on the new one replaces this one; a bad file is named in a
   // message and the current window stays.
   std::function<void(TrainerWindow&)> connectOpen = [&](TrainerWindow& current) {
