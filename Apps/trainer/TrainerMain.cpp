@@ -27,6 +27,7 @@
 #include "IO/Output/OutputIdentity.h"
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
+#include "Tissue/DeformedScene.h"
 
 #include <CLI/CLI.hpp>
 
@@ -140,7 +141,7 @@ int runHeadless(const TrainerOptions& options)
     observer = [&exercise, &options, &picture, at,
                 forcePlot = std::make_shared<shell::ForcePlot>(5.0, exercise.maxForce)](
                  const HapticState& state, const ExerciseScorer& scorer,
-                 const CollisionScene& scene) {
+                 const CollisionScene& scene, const TissueDynamics* tissue) {
       if (!picture.empty())
       {
         return;
@@ -148,7 +149,9 @@ int runHeadless(const TrainerOptions& options)
       forcePlot->add(state.time, norm(state.force));
       if (state.time >= at - 1e-9)
       {
-        picture = exerciseScreenshot(exercise, scene, state, scorer.score(), *forcePlot,
+        // A soft organ as the press has deformed it at this tick, not at rest.
+        const CollisionScene drawn = tissue != nullptr ? deformedScene(scene, *tissue) : scene;
+        picture = exerciseScreenshot(exercise, drawn, state, scorer.score(), *forcePlot,
                                      options.size, options.screenshot);
       }
     };

@@ -19,6 +19,7 @@
 #include "ProxyOracle.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Tissue/BoxTetMesh.h"
+#include "Tissue/DeformedScene.h"
 #include "Tissue/TetBoundary.h"
 #include "Tissue/TissueContact.h"
 
@@ -68,27 +69,36 @@ protected:
   TissueScenes()
     : ScratchFolderTest("proxima-tissue-scene-")
   {}
+
+  // The block (blockTets) as a scene file with tissue, its base fixed: the settings of
+  // `proxima run --scene block.json` on it.
+  ScriptedRunSettings blockSceneSettings()
+  {
+    const TetMesh block = blockTets();
+    // The surface file is read, as every object's mesh is, but the solid comes from its "tets".
+    writeMeshFile(pathOf("block.obj"), boundarySoup(block));
+    writeTetMeshFile(pathOf("block.vtu"), block);
+    char tissue[512];
+    std::snprintf(tissue, sizeof tissue,
+                  R"({"youngs_modulus": %g, "poisson_ratio": %g, "damping": %g, "tets": "block.vtu",
+                      "fixed": {"box": [[-1, -1, -1], [1, 1, -0.0199]]}})",
+                  kYoungsModulus, kPoissonRatio, kDamping);
+    ScriptedRunSettings settings;
+    settings.scene =
+      write("block.json", std::string(R"({"version": 3, "objects": [{"mesh": "block.obj", )") +
+                            R"("tissue": )" + tissue + "}]}");
+    settings.path = "press";
+    settings.radius = kRadius;
+    settings.stiffness = kStiffness;
+    settings.rate = kRate;
+    return settings;
+  }
 };
 
 TEST_F(TissueScenes, ABlockSceneFilePlaysAsTheCouplingBuiltByHand)
 {
   const TetMesh block = blockTets();
-  // The surface file is read, as every object's mesh is, but the solid comes from its "tets".
-  writeMeshFile(pathOf("block.obj"), boundarySoup(block));
-  writeTetMeshFile(pathOf("block.vtu"), block);
-  char tissue[512];
-  std::snprintf(tissue, sizeof tissue,
-                R"({"youngs_modulus": %g, "poisson_ratio": %g, "damping": %g, "tets": "block.vtu",
-                    "fixed": {"box": [[-1, -1, -1], [1, 1, -0.0199]]}})",
-                kYoungsModulus, kPoissonRatio, kDamping);
-  ScriptedRunSettings settings;
-  settings.scene =
-    write("block.json", std::string(R"({"version": 3, "objects": [{"mesh": "block.obj", )") +
-                          R"("tissue": )" + tissue + "}]}");
-  settings.path = "press";
-  settings.radius = kRadius;
-  settings.stiffness = kStiffness;
-  settings.rate = kRate;
+  const ScriptedRunSettings settings = blockSceneSettings();
   const FingerPath path = pressPath();
 
   // The run as `proxima run --scene block.json` makes it.
@@ -196,6 +206,71 @@ TEST_F(TissueScenes, ABlockSceneFilePlaysAsTheCouplingBuiltByHand)
   // creeps as the lift begins (its force 1.5e-9 relative above the one at 1.39 s), so the bound
   // leaves a millionth: far below a kick.
   EXPECT_LE(releaseForce, heldForce * (1.0 + 1e-6)) << "the release kicks the finger";
+}
+
+// What a picture of the session draws (Tissue/DeformedScene.h) is the surface the proxy meets:
+// at a held press, between two of the solid's steps, the proxy rests on the drawn surface (at its
+// radius, by the oracle's distance) and is inside the block's rest shape by the indentation.
+TEST_F(TissueScenes, TheDrawnSceneIsTheSurfaceTheProxyRestsOn)
+{
+  const ScriptedRunSettings settings = blockSceneSettings();
+  const FingerPath path = pressPath();
+  PreparedScriptedRun prepared = prepareScriptedRun(settings, path, kDefaultMaxTicks);
+  ASSERT_NE(prepared.tissue, nullptr);
+  const TissueDynamics& dynamics = *prepared.tissue;
+  const CollisionScene& scene = *prepared.loaded.scene;
+  // The held press, on a tick after which the solid does not step (the step is every 5th tick,
+  // after its proxy update): the drawn points are those the proxy met.
+  const auto held = static_cast<std::uint64_t>(1.2 * kRate) + 2;
+  ASSERT_NE((held + 1) % 5, 0u);
+  double restingGap = -1.0;
+  double restDepth = 0.0;
+  bool played = false;
+  SimulatedDevice device(path);
+  playScriptedPath(
+    settings, scene, path, device,
+    [&](const HapticState& state) {
+      if (state.tick != held)
+      {
+        return;
+      }
+      ASSERT_GT(state.numContacts, 0);
+      const CollisionScene drawn = deformedScene(scene, dynamics);
+      ASSERT_EQ(drawn.objects.size(), scene.objects.size());
+      EXPECT_NE(&drawn.objects[0], &scene.objects[0]) << "the tissue is drawn at rest";
+      const oracle::MeshOracle drawnSurface(drawn);
+      const oracle::MeshOracle restSurface(scene);
+      restingGap = std::abs(drawnSurface.distance(state.proxy) - kRadius);
+      restDepth = kRadius - restSurface.distance(state.proxy);
+      played = true;
+    },
+    {}, nullptr, prepared.tissue.get());
+  std::printf("[ measured ] at the held press: proxy at %.3g m from its radius on the drawn "
+              "surface, %.4g m into the rest shape\n",
+              restingGap, restDepth);
+  ASSERT_TRUE(played) << "the held tick was not played";
+  EXPECT_LE(restingGap, 1e-9);
+  EXPECT_GT(restDepth, 0.001) << "the drawn surface is not the pressed one";
+}
+
+// A scene's rigid objects are drawn as they are: shared, not copied.
+TEST_F(TissueScenes, TheDrawnSceneSharesTheRigidObjects)
+{
+  ScriptedRunSettings settings = blockSceneSettings();
+  writeMeshFile(
+    pathOf("floor.obj"),
+    boundarySoup(makeBoxTetMesh(Vec3{-0.05, -0.05, -0.04}, Vec3{0.05, 0.05, -0.03}, 1, 1, 1)));
+  settings.scene = write("two.json", R"({"version": 3, "objects": [{"mesh": "floor.obj"},
+    {"mesh": "block.obj", "tissue": {"youngs_modulus": 5000, "tets": "block.vtu",
+     "fixed": {"box": [[-1, -1, -1], [1, 1, -0.0199]]}}}]})");
+  PreparedScriptedRun prepared = prepareScriptedRun(settings, pressPath(), kDefaultMaxTicks);
+  ASSERT_NE(prepared.tissue, nullptr);
+  const CollisionScene& scene = *prepared.loaded.scene;
+  const CollisionScene drawn = deformedScene(scene, *prepared.tissue);
+  ASSERT_EQ(drawn.objects.size(), 2u);
+  EXPECT_EQ(drawn.objects.shared(0), scene.objects.shared(0));
+  EXPECT_NE(drawn.objects.shared(1), scene.objects.shared(1));
+  EXPECT_EQ(drawn.objects[1].mesh.points(), prepared.tissue->solid(0).positions());
 }
 
 TEST_F(TissueScenes, AFixedBoxThatHoldsNothingIsRefused)

@@ -34,7 +34,7 @@ ExerciseScore playHeadlessSession(const Exercise& exercise, const FingerPath& pa
     scorer.addTick(state);
     if (observer)
     {
-      observer(state, scorer, *loaded.scene);
+      observer(state, scorer, *loaded.scene, tissue.get());
     }
   };
   playScriptedPath(settings, *loaded.scene, path, device, onTick, {}, nullptr, tissue.get());

@@ -12,12 +12,19 @@
 #include <string>
 #include <vector>
 
+namespace proxima
+{
+class TissueDynamics;
+}
+
 namespace proxima::trainer
 {
 
-/// Called after each tick is scored, with the scene the session plays in.
-using SessionObserver =
-  std::function<void(const HapticState&, const ExerciseScorer&, const CollisionScene&)>;
+/// Called after each tick is scored, with the scene the session plays in and, for a scene with
+/// tissue, its tissues as that tick left them (null otherwise): a picture draws the scene as
+/// deformed (Tissue/DeformedScene.h).
+using SessionObserver = std::function<void(const HapticState&, const ExerciseScorer&,
+                                           const CollisionScene&, const TissueDynamics*)>;
 
 /// Plays `path` (named `pathName` in messages) through the exercise's scene and scores it; a mark
 /// at time t marks the contact of the last tick at or before t. Throws InputError for a scene,
