@@ -28,11 +28,13 @@
 #include "IO/Output/StandardOutput.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "IO/Scene/SceneBuilder.h"
+#include "IO/Scene/SceneTissue.h"
 #include "IO/ScriptedRun/ScriptedRun.h"
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/PointerDevice.h"
 #include "Runtime/ServoRate.h"
+#include "Tissue/DeformedScene.h"
 #include "VTK/LockstepStates.h"
 #include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
@@ -438,6 +440,8 @@ struct ViewInputs
   LoadedScene loaded;
   std::vector<HingeAxis> hinges;
   std::shared_ptr<BodyCoupling> bodies;
+  /// The scene's tissues, for a lockstep screenshot (the window refuses them).
+  std::unique_ptr<TissueDynamics> tissue;
   FingerPath fingerPath;
   std::shared_ptr<const CollisionScene> scene;
   double pathSeconds = 0.0;
@@ -470,7 +474,19 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
   inputs.hinges = sceneHinges(inputs.loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
   inputs.bodies = sceneBodies(shared, inputs.loaded);
-  refuseSceneTissue(inputs.loaded, "proxima view");
+  // Tissue deforms in a lockstep screenshot, the same steps as `proxima run`; the window's
+  // real-time loops cannot step a solid yet.
+  if (options.screenshot.empty())
+  {
+    refuseSceneTissue(inputs.loaded,
+                      "proxima view's window (a --screenshot of a --path draws it in lockstep)");
+  }
+  else if (options.device.device != "sim")
+  {
+    refuseSceneTissue(inputs.loaded, "a screenshot from a live device (--device sim plays the "
+                                     "path in lockstep)");
+  }
+  inputs.tissue = buildSceneTissue(inputs.loaded, shared.stiffness, shared.rate);
   inputs.fingerPath = shared.path.empty() ? mouseStartPath(*inputs.loaded.scene, shared.radius)
                                           : readFingerPathFile(shared.path);
   checkRadiusAgainstScene(shared, inputs.loaded);
@@ -549,6 +565,30 @@ struct ViewStage
     renderer->ResetCamera();
   }
 
+  /// Draws the objects that stay put as `scene` has them (a scene with tissue as deformed now,
+  /// Tissue/DeformedScene.h) instead of as the scene file gave them.
+  void showStillSurface(const CollisionScene& scene)
+  {
+    std::vector<std::uint32_t> still;
+    for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+    {
+      if (std::find(surface.bodyObjects.begin(), surface.bodyObjects.end(), object) ==
+          surface.bodyObjects.end())
+      {
+        still.push_back(object);
+      }
+    }
+    if (surface.still != nullptr)
+    {
+      renderer->RemoveActor(surface.still);
+    }
+    surface.still = shell::makeSceneSurfaceActor(scene, still);
+    if (surface.still != nullptr)
+    {
+      renderer->AddActor(surface.still);
+    }
+  }
+
   /// The force arrow and the hinges' axes sized for the objects framed around `state`.
   Aabb frame(const ViewOptions& options, const ViewInputs& inputs, const HapticState& state,
              const BodyPoses& poses)
@@ -585,12 +625,20 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     // A scripted finger needs no real clock: the state at --at comes from the lockstep run (the
     // same steps as the threads, on a virtual clock) in a fraction of --at, and is the same
     // picture every time. As `proxima run`, lockstep takes no budget unless given one.
+    TickDynamics* dynamics = inputs.bodies != nullptr
+                               ? static_cast<TickDynamics*>(inputs.bodies.get())
+                               : static_cast<TickDynamics*>(inputs.tissue.get());
     state = lockstepStateAt(shared, *inputs.scene, shifted, inputs.at, device.device(),
-                            stage.forcePlot, inputs.bodies.get());
+                            stage.forcePlot, dynamics);
     servo.rate = shared.rate;
     if (inputs.bodies != nullptr)
     {
       inputs.bodies->poses(poses);
+    }
+    if (inputs.tissue != nullptr)
+    {
+      // The organ as the press has deformed it at --at, not as the scene file gives it.
+      stage.showStillSurface(deformedScene(*inputs.scene, *inputs.tissue));
     }
   }
   else
