@@ -200,6 +200,21 @@ struct SceneActors
   std::vector<vtkSmartPointer<vtkActor>> bodies;
 };
 
+// The objects of `scene` that are not bodies: those the still actor draws.
+std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
+                                        const std::vector<std::uint32_t>& bodyObjects)
+{
+  std::vector<std::uint32_t> still;
+  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+  {
+    if (std::find(bodyObjects.begin(), bodyObjects.end(), object) == bodyObjects.end())
+    {
+      still.push_back(object);
+    }
+  }
+  return still;
+}
+
 SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* bodies)
 {
   SceneActors actors;
@@ -207,16 +222,7 @@ SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* bod
   {
     actors.bodyObjects = bodies->movingObjects();
   }
-  std::vector<std::uint32_t> still;
-  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
-  {
-    if (std::find(actors.bodyObjects.begin(), actors.bodyObjects.end(), object) ==
-        actors.bodyObjects.end())
-    {
-      still.push_back(object);
-    }
-  }
-  actors.still = shell::makeSceneSurfaceActor(scene, still);
+  actors.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, actors.bodyObjects));
   for (const std::uint32_t object : actors.bodyObjects)
   {
     actors.bodies.push_back(shell::makeSceneSurfaceActor(scene, {object}));
@@ -569,20 +575,11 @@ struct ViewStage
   /// Tissue/DeformedScene.h) instead of as the scene file gave them.
   void showStillSurface(const CollisionScene& scene)
   {
-    std::vector<std::uint32_t> still;
-    for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
-    {
-      if (std::find(surface.bodyObjects.begin(), surface.bodyObjects.end(), object) ==
-          surface.bodyObjects.end())
-      {
-        still.push_back(object);
-      }
-    }
     if (surface.still != nullptr)
     {
       renderer->RemoveActor(surface.still);
     }
-    surface.still = shell::makeSceneSurfaceActor(scene, still);
+    surface.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, surface.bodyObjects));
     if (surface.still != nullptr)
     {
       renderer->AddActor(surface.still);
@@ -624,7 +621,8 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
   {
     // A scripted finger needs no real clock: the state at --at comes from the lockstep run (the
     // same steps as the threads, on a virtual clock) in a fraction of --at, and is the same
-    // picture every time. As `proxima run`, lockstep takes no budget unless given one.
+    // picture every time. It takes the real-time default budget (lockstepStateAt), so that it
+    // shows the tick the window would show.
     TickDynamics* dynamics = inputs.bodies != nullptr
                                ? static_cast<TickDynamics*>(inputs.bodies.get())
                                : static_cast<TickDynamics*>(inputs.tissue.get());
