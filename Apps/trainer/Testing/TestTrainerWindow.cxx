@@ -223,32 +223,59 @@ private slots:
     auto window = openExercise<TickKeepingTrainerWindow>("liver-targets", "mouse");
     QVERIFY(window != nullptr);
     const Exercise& exercise = window->exercise();
+    const double period = 1.0 / exercise.rate;
     const std::string recording = kOutput + "/liver-targets-pass.recording.csv";
     const FingerPath path = readFingerPathFile(kPaths + "/liver-targets-pass.csv");
     std::string error;
     QVERIFY2(writePathAsRecording(path, exercise.rate, recording, error), error.c_str());
-    QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
-    bool pictured = false;
-    QVERIFY(waitUntil(
-      [&] {
-        if (!pictured && window->score().tasks[0].targets.touched == 2)
-        {
-          saveFigure(window.get(), "trainer-window-targets.png");
-          pictured = true;
-        }
-        return window->latestState().time > path.endTime() + 0.3;
-      },
-      path.endTime() * 6.0 + 30.0));
-    QTest::qWait(100);
-    // The score and the ticks it counted, taken together (ticks arrive only in the event loop).
-    const ExerciseScore live = window->score();
-    const std::vector<HapticState> ticksScored = window->ticksScored();
     const ExerciseScore headless =
       playHeadlessSession(exercise, path, "liver-targets-pass.csv", {});
     QVERIFY(headless.passed);
-    QCOMPARE(live.passed, headless.passed);
-    QCOMPARE(live.tasks[0].targets.touched, headless.tasks[0].targets.touched);
-    QCOMPARE(live.damage.size(), headless.damage.size());
+    // The outcome must be the headless one's. A starved machine can change it: a force out of a
+    // target's band for one disturbed tick starts its hold again, and the path may end before the
+    // hold does. So a run whose outcome differs is replayed again only when its ticks were
+    // disturbed (skipped, budget-limited or stale), up to four times; an undisturbed run that
+    // differs fails at once.
+    const auto sameOutcome = [&](const ExerciseScore& live) {
+      return live.passed == headless.passed &&
+             live.tasks[0].targets.touched == headless.tasks[0].targets.touched &&
+             live.damage.size() == headless.damage.size();
+    };
+    bool pictured = false;
+    ExerciseScore live;
+    std::vector<HapticState> ticksScored;
+    for (int attempt = 1;; ++attempt)
+    {
+      QVERIFY2(window->useDevice("replay:" + recording, error), error.c_str());
+      QVERIFY(waitUntil(
+        [&] {
+          if (!pictured && window->score().tasks[0].targets.touched == 2)
+          {
+            saveFigure(window.get(), "trainer-window-targets.png");
+            pictured = true;
+          }
+          return window->latestState().time > path.endTime() + 0.3;
+        },
+        path.endTime() * 6.0 + 30.0));
+      QTest::qWait(100);
+      // The score and the ticks it counted, taken together (ticks arrive only in the event loop).
+      live = window->score();
+      ticksScored = window->ticksScored();
+      if (sameOutcome(live))
+      {
+        break;
+      }
+      const double disturbed = disturbedSeconds(ticksScored, 0.0, path.endTime() + 0.3, period);
+      const std::string why = "attempt " + std::to_string(attempt) + ": live " +
+                              (live.passed ? "passed" : "failed") + " with " +
+                              std::to_string(live.tasks[0].targets.touched) + " targets and " +
+                              std::to_string(live.damage.size()) + " damage events, headless " +
+                              std::to_string(headless.tasks[0].targets.touched) + " and " +
+                              std::to_string(headless.damage.size()) + "; " +
+                              std::to_string(disturbed) + " s of live ticks disturbed";
+      QVERIFY2(disturbed > 0.0 && attempt < 4, why.c_str());
+      qInfo("%s: replaying again", why.c_str());
+    }
     // Every servo tick scored, none dropped.
     QCOMPARE(window->ticksDropped(), std::uint64_t{0});
     const std::string ticks = "live " + std::to_string(live.ticks) + " ticks, " +
@@ -309,7 +336,6 @@ private slots:
     // skips late ticks or fades a stale proxy's force, and a force out of the target's band for
     // one tick starts the hold again. Then the hold may end later by at most the hold itself plus
     // the seconds disturbed.
-    const double period = 1.0 / exercise.rate;
     const double hold = exercise.tasks[0].targets.holdSeconds;
     for (std::size_t i = 0; i < live.tasks[0].targets.touchedTimes.size(); ++i)
     {
