@@ -711,6 +711,7 @@ void SphereTree::refit(const TriangleMesh& mesh, double margin)
   // leaves visit the triangles in the tree's spatial order, and the indices and points (a third
   // of the bytes) stay in cache where the corner copies do not.
   const std::vector<Vec3>& points = mesh.points();
+  bool remade = false;
   for (LeafSphere& leaf : m_leaves)
   {
     const std::array<std::uint32_t, 3>& corner = mesh.indices(leaf.triangle);
@@ -728,6 +729,14 @@ void SphereTree::refit(const TriangleMesh& mesh, double margin)
     const double reach = std::sqrt(std::max(
       {squaredDistance(stored, a), squaredDistance(stored, b), squaredDistance(stored, c)}));
     leaf.radius = detail::roundUpToFloatWithoutBranch(reach + margin);
+    remade = true;
+  }
+  // Nodes depend on the leaf spheres alone: with none made again, every node still holds what it
+  // held after the last build or refit, and the walk up would keep each one. A surface at rest
+  // between simulation steps costs the leaf pass alone.
+  if (!remade)
+  {
+    return;
   }
   // Then the nodes, bottom-up: in depth-first order every child comes after its parent, so a walk
   // from the last node to the first meets the children first. A node that still holds its

@@ -214,8 +214,9 @@ public:
   /// stay exact whatever the margin and only slow down as spheres grow or the surface strays from
   /// the shape the hierarchy was built for. A split triangle's pieces each get the whole
   /// triangle's sphere: build a tree that will be refit with one sphere per triangle
-  /// (SphereTreeOptions::leafSizeFactor 0). O(leaf spheres + nodes), allocates nothing; a mesh
-  /// with another number of triangles is ignored.
+  /// (SphereTreeOptions::leafSizeFactor 0). O(leaf spheres), plus O(nodes) when a leaf sphere
+  /// was made again (a surface at rest costs the leaf pass alone); allocates nothing; a mesh with
+  /// another number of triangles is ignored.
   void refit(const TriangleMesh& mesh, double margin = 0.0);
   /// Number of nodes; 0 before build() or for an empty mesh.
   std::uint32_t numNodes() const { return static_cast<std::uint32_t>(m_nodes.size()); }

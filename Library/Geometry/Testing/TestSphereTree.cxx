@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -893,6 +894,48 @@ TEST(SphereTree, RefitAfterDeformingAgreesWithBruteForce)
   }
   tally.print();
   EXPECT_EQ(tally.total(), 0) << "seed 0x7ee00006";
+}
+
+// A refit whose surface did not move keeps every sphere, nodes and leaves, byte for byte (it
+// skips the walk up the nodes when no leaf sphere was made again); one that moves a single point
+// far still remakes the spheres above it, up to the root, so that the invariants and the answers
+// hold.
+TEST(SphereTree, RefitRemakesTheNodesAboveOneMovedPointAndNothingWhenNothingMoved)
+{
+  Random random(0x7ee00007);
+  FailureTally tally;
+  TriangleMesh mesh = buildMesh(makeIcosphere(4, 0.05));
+  SphereTreeOptions options;
+  options.leafSizeFactor = 0.0;
+  SphereTree tree;
+  tree.build(mesh, options);
+  const double edge = medianEdgeLength(mesh);
+  const auto sameBytes = [](const auto& a, const auto& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(a.front())) == 0;
+  };
+  for (int round = 0; round < 2; ++round)
+  {
+    const std::vector<SphereTreeNode> nodes = tree.nodes();
+    const std::vector<LeafSphere> leaves = tree.leafSpheres();
+    tree.refit(mesh, 0.1 * edge);
+    EXPECT_TRUE(sameBytes(nodes, tree.nodes())) << "round " << round;
+    EXPECT_TRUE(sameBytes(leaves, tree.leafSpheres())) << "round " << round;
+
+    std::vector<Vec3> points = mesh.points();
+    const auto moved = static_cast<std::size_t>(random.integer(0, int(points.size()) - 1));
+    points[moved] = points[moved] * 1.5;
+    ASSERT_TRUE(mesh.movePoints(points.data(), points.size()));
+    tree.refit(mesh, 0.1 * edge);
+    EXPECT_NE(tree.nodes().front().radius, nodes.front().radius)
+      << "the root must grow to hold a point moved half the sphere's radius out";
+    const std::string label = "one point moved out, round " + std::to_string(round);
+    checkInvariants(mesh, tree, options, random, label, tally);
+    AgreementStats stats;
+    compareWithBruteForce(mesh, tree, random, 200, label, stats, tally);
+  }
+  tally.print();
+  EXPECT_EQ(tally.total(), 0) << "seed 0x7ee00007";
 }
 
 TEST(SphereTree, EmptyTreeAnswersNothing)
