@@ -42,6 +42,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -317,6 +318,24 @@ void buildSphereTree(benchmark::State& state, const std::string& name)
 // every point a hundredth of a median edge along a slowly turning direction, and the refit's
 // margin is a tenth of an edge, so spheres are remade only as the motion adds up. Timed: the
 // refit alone; `move_points_us` is TriangleMesh::movePoints, which a step pays as well.
+// How the surface moves between two refits (the benchmark's first argument).
+enum class RefitMotion
+{
+  // Every point two median edges back and forth: every sphere is made again.
+  everySphereRemade = 0,
+  // Every point a hundredth of an edge a step, along a direction that turns slowly: the whole
+  // surface drifts, and each sphere's slack runs out in its turn.
+  drift = 1,
+  // A finger's press on an elastic body: a dent three edges wide whose depth swings between 0 and
+  // six edges once every 200 steps (a second at a 200 Hz solid) while it slides a twentieth of an
+  // edge a step round the sphere. Each point moves along the press by the dent's width over its
+  // distance from the dent (the 1/r of Boussinesq's point load on a half-space), so the whole
+  // surface moves a little every step and the spheres near the dent a lot.
+  press = 2,
+  // Nothing moves: a tissue at rest between its simulation steps.
+  rest = 3,
+};
+
 void refitSphereTree(benchmark::State& state, const std::string& name)
 {
   Dataset* d = datasetOrSkip(state, name);
@@ -324,7 +343,7 @@ void refitSphereTree(benchmark::State& state, const std::string& name)
   {
     return;
   }
-  const bool worstCase = state.range(0) == 0;
+  const auto motion = static_cast<RefitMotion>(state.range(0));
   TriangleMesh mesh = d->mesh;
   SphereTreeOptions options;
   options.leafSizeFactor = 0.0;
@@ -342,7 +361,8 @@ void refitSphereTree(benchmark::State& state, const std::string& name)
     std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
     edge = edges[edges.size() / 2];
   }
-  const double margin = worstCase ? 0.0 : 0.1 * edge;
+  const double sphereRadius = norm(rest.front() - mesh.bounds().center());
+  const double margin = motion == RefitMotion::everySphereRemade ? 0.0 : 0.1 * edge;
   double movingNs = 0.0;
   std::int64_t step = 0;
   for (auto _ : state)
@@ -350,13 +370,35 @@ void refitSphereTree(benchmark::State& state, const std::string& name)
     state.PauseTiming();
     const auto before = std::chrono::steady_clock::now();
     ++step;
-    const Vec3 shift =
-      worstCase
-        ? Vec3{(step % 2 == 0 ? 2.0 : -2.0) * edge, 0.0, 0.0}
-        : Vec3{std::cos(0.01 * double(step)), std::sin(0.01 * double(step)), 0.0} * (0.01 * edge);
-    for (std::size_t i = 0; i < moved.size(); ++i)
+    if (motion == RefitMotion::everySphereRemade)
     {
-      moved[i] = worstCase ? rest[i] + shift : moved[i] + shift;
+      const Vec3 shift{(step % 2 == 0 ? 2.0 : -2.0) * edge, 0.0, 0.0};
+      for (std::size_t i = 0; i < moved.size(); ++i)
+      {
+        moved[i] = rest[i] + shift;
+      }
+    }
+    else if (motion == RefitMotion::drift)
+    {
+      const Vec3 shift =
+        Vec3{std::cos(0.01 * double(step)), std::sin(0.01 * double(step)), 0.0} * (0.01 * edge);
+      for (Vec3& point : moved)
+      {
+        point = point + shift;
+      }
+    }
+    else if (motion == RefitMotion::press)
+    {
+      const double angle = 0.05 * edge / sphereRadius * double(step);
+      const Vec3 along{std::cos(angle), std::sin(angle), 0.0};
+      const Vec3 dent = mesh.bounds().center() + along * sphereRadius;
+      const double width = 3.0 * edge;
+      const double depth =
+        3.0 * edge * (1.0 - std::cos(2.0 * std::numbers::pi * double(step) / 200.0));
+      for (std::size_t i = 0; i < moved.size(); ++i)
+      {
+        moved[i] = rest[i] - along * (depth * width / std::max(distance(rest[i], dent), width));
+      }
     }
     mesh.movePoints(moved.data(), moved.size());
     movingNs +=
@@ -718,9 +760,8 @@ int main(int argc, char** argv)
     {
       benchmark::RegisterBenchmark(("Refit/SphereTree/" + name).c_str(), refitSphereTree, name)
         ->Unit(benchmark::kMicrosecond)
-        ->ArgName("tissue_steps")
-        ->Arg(0)
-        ->Arg(1);
+        ->ArgName("motion")
+        ->DenseRange(0, 3);
     }
     benchmark::RegisterBenchmark(("FirstContact/SphereTree/" + name).c_str(), sweepSphereTree, name)
       ->Unit(benchmark::kNanosecond);
