@@ -211,12 +211,13 @@ void ProxySolver::followMovingObjects(ProxyTickResult& result)
 
 void ProxySolver::setDeformingObjects(const std::vector<std::uint32_t>& objects)
 {
-  m_deforming =
-    m_scene != nullptr && !objects.empty() ? makeDeformingObjects(*m_scene, objects) : nullptr;
-  if (m_deforming != nullptr && m_deforming->entries.empty())
-  {
-    m_deforming = nullptr;
-  }
+  useDeformingObjects(
+    m_scene != nullptr && !objects.empty() ? makeDeformingObjects(*m_scene, objects) : nullptr);
+}
+
+void ProxySolver::useDeformingObjects(std::shared_ptr<DeformingObjectSet> objects)
+{
+  m_deforming = objects != nullptr && !objects->entries.empty() ? std::move(objects) : nullptr;
   m_cache.invalidate();
   m_planesValid = false;
 }

@@ -130,6 +130,8 @@ public:
   }
   /// The parameters setScene() was given, with the budget of any later setTickBudget().
   const ProxyParameters& parameters() const { return m_parameters; }
+  /// The scene setScene gave (null before any).
+  const CollisionScene* scene() const { return m_scene; }
   /// Places the proxy without moving through the scene (start of a run, or a teleport).
   void resetProxy(const Vec3& position)
   {
@@ -186,6 +188,11 @@ public:
   /// the trees (no candidate cache). An object should not also be moving. Allocates: call after
   /// setScene, off the haptic thread. An empty list: nothing deforms.
   void setDeformingObjects(const std::vector<std::uint32_t>& objects);
+  /// The same with a set made elsewhere (makeDeformingObjects on this solver's scene; null or
+  /// empty for none). Allocates nothing, and frees nothing while its maker keeps a reference
+  /// (the solver lets go of its own at the next setScene), so a threaded runner may hand over a
+  /// set built off the haptic thread with the scene it belongs to.
+  void useDeformingObjects(std::shared_ptr<DeformingObjectSet> objects);
   /// Gives deforming object `object` its `count` points (as many as its mesh has, all finite,
   /// in the scene's frame) where a simulation step left them. The next update first moves the
   /// object there: the surface point the proxy rests on carries the proxy along its contact

@@ -36,6 +36,9 @@ struct SceneSlot
   /// publisher's thread and freed there with the slot.
   std::shared_ptr<TickDynamics> dynamics;
   std::unique_ptr<MovingObjectSet> moving;
+  /// The deforming copies of the dynamics' deforming objects (a tissue's), made on the
+  /// publisher's thread; the slot's reference keeps the solver from ever freeing them.
+  std::shared_ptr<DeformingObjectSet> deforming;
 };
 
 // The scene event is a futex on the atomic's own storage: waking its sleepers is one system call,
@@ -167,9 +170,10 @@ void ThreadedRuntime::Impl::installPendingScene()
   const Nanoseconds begin = monotonicNanoseconds();
   solver->setScene(next->scene.get(), next->parameters);
   solver->useMovingObjects(next->moving.get());
+  solver->useDeformingObjects(next->deforming);
   if (next->dynamics != nullptr)
   {
-    next->dynamics->placeBodies(*solver);
+    next->dynamics->install(*solver);
   }
   if (next->movedOutside)
   {
@@ -333,6 +337,20 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
                                             const Vec3& proxyStart, ProxyStartPlacement* placement,
                                             std::shared_ptr<TickDynamics> dynamics)
 {
+  // What the dynamics needs is made here, on the caller's thread, first: a dynamics that refuses
+  // the scene (prepare throws) then costs no version.
+  std::unique_ptr<MovingObjectSet> moving;
+  std::shared_ptr<DeformingObjectSet> deforming;
+  if (dynamics != nullptr && scene != nullptr)
+  {
+    moving = makeMovingObjects(*scene, dynamics->movingObjects());
+    const std::vector<std::uint32_t> deformingObjects = dynamics->deformingObjects();
+    if (!deformingObjects.empty())
+    {
+      deforming = makeDeformingObjects(*scene, deformingObjects);
+    }
+    dynamics->prepare(*scene);
+  }
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
   ProxyParameters budgeted = parameters;
@@ -358,14 +376,14 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
   }
   // A proxy that is not moved keeps its place at a swap; the first scene places it anyway.
   const Vec3 start = decided.movedOutside ? decided.position : proxyStart;
-  std::unique_ptr<MovingObjectSet> moving;
-  if (dynamics != nullptr && scene != nullptr)
-  {
-    moving = makeMovingObjects(*scene, dynamics->movingObjects());
-  }
-  auto* slot =
-    new SceneSlot{std::move(scene),    budgeted,         start, decided.movedOutside, version,
-                  std::move(dynamics), std::move(moving)};
+  auto* slot = new SceneSlot{std::move(scene),
+                             budgeted,
+                             start,
+                             decided.movedOutside,
+                             version,
+                             std::move(dynamics),
+                             std::move(moving),
+                             std::move(deforming)};
   // A scene published before the proxy loop took the last one replaces it unseen.
   delete m_impl->pending.exchange(slot, std::memory_order_acq_rel);
   m_impl->collectRetired();

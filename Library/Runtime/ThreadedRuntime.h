@@ -96,6 +96,11 @@ public:
   /// moved copies of their objects are made here, and each proxy update on the scene runs the
   /// force stage and the dynamics step after the proxy step, as lockstep does; a skipped finger
   /// sample is a dynamics step not taken. latestBodyPoses hands over where they are.
+  /// Tissue (issue 35): a dynamics with deforming objects (Tissue/TissueDynamics.h) has their
+  /// deforming copies made and is prepared (TickDynamics::prepare) here too, so the proxy loop
+  /// only binds it at the install; its solids then step inside the proxy updates, every few
+  /// ticks, as lockstep steps them. A dynamics that refuses the scene throws here, on the
+  /// caller's thread, before anything is published.
   std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
                              const ProxyParameters& parameters, const Vec3& proxyStart,
                              ProxyStartPlacement* placement = nullptr,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "Core/RigidTransform.h"
+#include "Proxy/CollisionScene.h"
 #include "Proxy/ProxySolver.h"
 #include "Runtime/HapticState.h"
 
@@ -50,13 +51,29 @@ public:
   /// The bodies' present poses (`tick` is left to the caller). Allocates nothing.
   virtual void poses(BodyPoses& out) const = 0;
 
-  /// For one thread that owns `solver`: lets the bodies' objects move in it (after its
-  /// setScene; allocates their moved copies) at their present poses. A dynamics whose objects
-  /// deform instead (Tissue/TissueDynamics.h) makes them deforming here.
-  virtual void attach(ProxySolver& solver)
+  /// The scene objects that deform (for makeDeformingObjects, off the haptic thread): none by
+  /// default; a dynamics whose objects deform (Tissue/TissueDynamics.h) lists them.
+  virtual std::vector<std::uint32_t> deformingObjects() const { return {}; }
+  /// Off the haptic thread, before `scene` is installed: makes everything install() needs, and
+  /// may allocate. A dynamics that keeps state for its scene (a tissue's coupling) is prepared
+  /// for one scene once and throws std::logic_error when asked again. Nothing by default.
+  virtual void prepare(const CollisionScene& scene) { (void)scene; }
+  /// On the thread that owns `solver`, once it has the scene prepare() was given and the moved
+  /// and deforming copies of the objects listed above (useMovingObjects, useDeformingObjects):
+  /// binds to it and gives it the bodies' present poses or surfaces. Allocates nothing.
+  virtual void install(ProxySolver& solver) { placeBodies(solver); }
+
+  /// For one thread that owns `solver` (a lockstep runner), after its setScene: the whole of the
+  /// above in one go (allocates).
+  void attach(ProxySolver& solver)
   {
     solver.setMovingObjects(movingObjects());
-    placeBodies(solver);
+    solver.setDeformingObjects(deformingObjects());
+    if (solver.scene() != nullptr)
+    {
+      prepare(*solver.scene());
+    }
+    install(solver);
   }
 };
 

@@ -10,7 +10,6 @@ namespace proxima
 TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object,
                              double stiffness)
   : m_solid(solid)
-  , m_solver(solver)
   , m_object(object)
   , m_stiffness(stiffness)
 {
@@ -25,11 +24,50 @@ TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint
   {
     solver.setDeformingObjects({object});
   }
+  allocate();
+  bind(solver);
+}
+
+TissueContact::TissueContact(ElasticSolid& solid, const CollisionScene& scene, std::uint32_t object,
+                             double stiffness)
+  : m_solid(solid)
+  , m_object(object)
+  , m_stiffness(stiffness)
+{
+  const std::size_t count = solid.positions().size();
+  if (object >= scene.objects.size())
+  {
+    throw std::invalid_argument("TissueContact: object " + std::to_string(object) +
+                                " of a scene of " + std::to_string(scene.objects.size()));
+  }
+  if (scene.objects[object].mesh.numPoints() != count)
+  {
+    throw std::invalid_argument("TissueContact: the object's mesh has " +
+                                std::to_string(scene.objects[object].mesh.numPoints()) +
+                                " points, the solid " + std::to_string(count));
+  }
+  allocate();
+}
+
+void TissueContact::allocate()
+{
+  const std::size_t count = m_solid.positions().size();
   m_footprint.resize(kMaxFootprint);
   m_scratch = std::make_unique<SphereTreeScratch>();
   m_forceSum.assign(count, Vec3{});
   m_isLoaded.assign(count, 0);
   m_loaded.reserve(count);
+}
+
+bool TissueContact::bind(ProxySolver& solver)
+{
+  if (!solver.isDeforming(m_object) ||
+      solver.placedMesh(m_object).numPoints() != m_solid.positions().size())
+  {
+    return false;
+  }
+  m_solver = &solver;
+  return true;
 }
 
 void TissueContact::addTick(const ProxyTickResult& result)
@@ -53,8 +91,8 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
   ++m_ticks;
   m_numSprings = 0;
   m_numApproaching = 0;
-  const CollisionObject& object = m_solver.queryObject(m_object);
-  const double radius = m_solver.parameters().radius;
+  const CollisionObject& object = m_solver->queryObject(m_object);
+  const double radius = m_solver->parameters().radius;
   const double gap = m_footprintGap * radius;
   const std::uint32_t found = object.tree.gatherWithin(
     object.mesh, proxy, radius + gap, m_footprint.data(), kMaxFootprint, *m_scratch);
@@ -104,7 +142,7 @@ void TissueContact::addPress(const Vec3& proxy, const Vec3& force, double stiffn
 
 double TissueContact::footprintWeight(double distanceToCentre) const
 {
-  const double radius = m_solver.parameters().radius;
+  const double radius = m_solver->parameters().radius;
   const double clearance = distanceToCentre - radius;
   return std::max(0.0, 1.0 - clearance / (m_footprintGap * radius));
 }
@@ -132,7 +170,7 @@ void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count, double 
   // Not touching, but within the footprint's gap: the nearest triangles, each along the
   // direction to the proxy, in case the step brings them into it (step() keeps those moving
   // toward it).
-  const CollisionObject& object = m_solver.queryObject(m_object);
+  const CollisionObject& object = m_solver->queryObject(m_object);
   for (std::uint32_t i = 0; i < count && m_numApproaching < kMaxContactSprings; ++i)
   {
     const NearbyTriangle& near = m_footprint[i];
@@ -190,7 +228,7 @@ void TissueContact::step()
   m_solid.setContactSprings(m_springs.data(), m_numSprings);
   m_solid.step();
   const std::vector<Vec3>& positions = m_solid.positions();
-  m_solver.setObjectPoints(m_object, positions.data(), positions.size());
+  m_solver->setObjectPoints(m_object, positions.data(), positions.size());
 }
 
 double TissueContact::maxDisplacement() const

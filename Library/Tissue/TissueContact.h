@@ -1,4 +1,4 @@
-// A tissue touched by the proxy, in lockstep: the force the proxy's spring presses a deforming
+// A tissue touched by the proxy, on whichever thread runs the proxy: the force the proxy's spring presses a deforming
 // object with goes to the corners of the triangles it touches, the elastic solid steps under it
 // at its own rate, and the proxy solver is given the surface where the step left it (issue 35,
 // item 3). The surface is the solid's boundary over the solid's own points (boundarySoup), so
@@ -6,6 +6,7 @@
 #pragma once
 
 #include "Core/Vec3.h"
+#include "Proxy/CollisionScene.h"
 #include "Proxy/ProxySolver.h"
 #include "Tissue/ElasticSolid.h"
 
@@ -17,15 +18,29 @@ namespace proxima
 {
 /// Couples an ElasticSolid to scene object `object` of a ProxySolver, which this makes deforming
 /// (ProxySolver::setDeformingObjects). Per proxy tick, addTick(); per simulation step, step().
-/// Neither allocates after construction.
+/// Neither allocates after construction. Made in two halves where a runner needs them apart:
+/// the construction from the scene allocates every buffer (any thread), and bind() couples it to
+/// the solver on the solver's own thread without allocating (ThreadedRuntime, at a scene's
+/// install).
 class TissueContact
 {
 public:
-  /// `object`'s mesh must have the solid's points, in order (a scene object built from
-  /// boundarySoup(solid.rest())); it is made deforming unless it already is (setDeformingObjects
-  /// with every tissue of the scene first, for a scene of several); `stiffness` is the spring's kp (N/m), the one the servo renders
-  /// the proxy's force with. Throws std::invalid_argument when the counts differ.
+  /// In one go, for a runner that owns `solver`: `object`'s mesh must have the solid's points, in
+  /// order (a scene object built from boundarySoup(solid.rest())); it is made deforming unless it
+  /// already is (setDeformingObjects with every tissue of the scene first, for a scene of
+  /// several); `stiffness` is the spring's kp (N/m), the one the servo renders the proxy's force
+  /// with. Throws std::invalid_argument when the counts differ.
   TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object, double stiffness);
+  /// The first half, unbound: allocates every buffer and checks `object` of `scene` as above
+  /// (also that it is in the scene). bind() before the first addTick, addPress or step.
+  TissueContact(ElasticSolid& solid, const CollisionScene& scene, std::uint32_t object,
+                double stiffness);
+  /// The second half: couples to `solver`, which has the scene this was made for and `object`
+  /// among its deforming objects (useDeformingObjects); false, and still unbound, when it has
+  /// not. Allocates nothing.
+  bool bind(ProxySolver& solver);
+  /// True once bound to a solver.
+  bool bound() const { return m_solver != nullptr; }
 
   /// After a proxy tick: the force the spring presses the object with, the sum of kp mu_i along
   /// -n_i over its contact planes (eq. 19, with each plane's stiffness scale), is spread over the
@@ -69,7 +84,7 @@ public:
 
 private:
   ElasticSolid& m_solid;
-  ProxySolver& m_solver;
+  ProxySolver* m_solver = nullptr;
   std::uint32_t m_object;
   double m_stiffness;
   double m_footprintGap = kFootprintGap;
@@ -87,6 +102,8 @@ private:
   /// toward it become springs of the next step.
   std::vector<ContactSpring> m_approaching = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numApproaching = 0;
+  /// Sizes the buffers for the solid's points (the constructors' shared half).
+  void allocate();
   /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
   /// sum to `total`.
   void noteApproach(const Vec3& proxy, std::uint32_t count, double total);

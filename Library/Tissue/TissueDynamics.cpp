@@ -26,6 +26,7 @@ TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffne
   // lockstep run is the same at any speed of the machine.
   const double ticks = std::round(tissues.front().settings.timeStep * rate);
   m_ticksPerStep = static_cast<int>(std::clamp(ticks, 1.0, 1e6));
+  m_nextStepTick = static_cast<std::uint64_t>(m_ticksPerStep) - 1;
   m_tissues.reserve(tissues.size());
   for (TissueObject& given : tissues)
   {
@@ -49,18 +50,41 @@ TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffne
 
 TissueDynamics::~TissueDynamics() = default;
 
-void TissueDynamics::attach(ProxySolver& solver)
+std::vector<std::uint32_t> TissueDynamics::deformingObjects() const
 {
   std::vector<std::uint32_t> objects;
+  objects.reserve(m_tissues.size());
   for (const Tissue& tissue : m_tissues)
   {
     objects.push_back(tissue.object);
   }
-  solver.setDeformingObjects(objects);
+  return objects;
+}
+
+void TissueDynamics::prepare(const CollisionScene& scene)
+{
+  if (m_tissues.front().contact != nullptr)
+  {
+    throw std::logic_error("TissueDynamics: already prepared for a scene (a scene published "
+                           "again needs its own tissues)");
+  }
   for (Tissue& tissue : m_tissues)
   {
     tissue.contact =
-      std::make_unique<TissueContact>(*tissue.solid, solver, tissue.object, m_stiffness);
+      std::make_unique<TissueContact>(*tissue.solid, scene, tissue.object, m_stiffness);
+  }
+}
+
+void TissueDynamics::install(ProxySolver& solver)
+{
+  for (Tissue& tissue : m_tissues)
+  {
+    // prepare() made each coupling for this scene and the runner made these objects deforming
+    // in it, so each binds; one that did not is left out of step() (its tissue stays at rest).
+    if (tissue.contact != nullptr)
+    {
+      tissue.contact->bind(solver);
+    }
   }
   placeBodies(solver);
 }
@@ -106,6 +130,10 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
   const auto begin = std::chrono::steady_clock::now();
   for (Tissue& tissue : m_tissues)
   {
+    if (!coupled(tissue))
+    {
+      continue;
+    }
     // The spring's press on this tissue, plane by plane (eq. 19): kp mu_i along -n_i.
     Vec3 force;
     double deepest = 0.0;
@@ -144,12 +172,28 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
       tissue.deepest = std::max(tissue.deepest, reading.indentation);
     }
   }
-  if (++m_ticksSinceStep >= m_ticksPerStep)
+  // On the servo's clock, not by counting calls: the solids step at the ticks whose number plus
+  // one is a multiple of the step, so a threaded runner whose first update comes a few ticks in,
+  // or which skips a finger sample, keeps lockstep's schedule (one step, under the mean of the
+  // ticks it saw, when a skipped sample held a step's tick).
+  // A clock that went back (a session placed again from tick 0) starts the schedule again.
+  const std::uint64_t every = static_cast<std::uint64_t>(m_ticksPerStep);
+  if (m_ticked && state.tick <= m_lastTick)
   {
-    m_ticksSinceStep = 0;
+    m_nextStepTick = (state.tick + every) / every * every - 1;
+  }
+  m_ticked = true;
+  m_lastTick = state.tick;
+  if (state.tick >= m_nextStepTick)
+  {
+    m_nextStepTick = (state.tick + 1 + every) / every * every - 1;
     ++m_steps;
     for (Tissue& tissue : m_tissues)
     {
+      if (!coupled(tissue))
+      {
+        continue;
+      }
       tissue.contact->step();
       tissue.reading.maxDisplacement = tissue.contact->maxDisplacement();
     }

@@ -51,7 +51,8 @@ struct TissueReading
 };
 
 /// The tissues of a scene, stepped by the runners once per tick (after the force stage) on the
-/// thread that owns the solver. The solids step every ticksPerStep() ticks.
+/// thread that owns the solver. The solids step every ticksPerStep() ticks, at the ticks whose
+/// number plus one is a multiple of it.
 class TissueDynamics : public TickDynamics
 {
 public:
@@ -64,14 +65,22 @@ public:
 
   /// None: tissues deform, they do not move as rigid bodies.
   std::vector<std::uint32_t> movingObjects() const override { return {}; }
-  /// Makes the tissue objects deforming in `solver` (after its setScene; allocates) and couples
-  /// each solid to it, then gives it the solids' present surfaces.
-  void attach(ProxySolver& solver) override;
-  /// Gives `solver` the solids' present surfaces (after attach). Allocates nothing.
+  /// The tissues' scene objects: they deform.
+  std::vector<std::uint32_t> deformingObjects() const override;
+  /// Couples each solid to its object of `scene` (allocates; any thread but the haptic ones).
+  /// Once: a tissue's coupling belongs to one scene, so a second call throws std::logic_error;
+  /// a scene published again needs a TissueDynamics of its own. Throws std::invalid_argument
+  /// when an object's mesh does not have its solid's points.
+  void prepare(const CollisionScene& scene) override;
+  /// Binds the couplings to `solver` (which has the prepared scene and these objects deforming)
+  /// and gives it the solids' present surfaces. Allocates nothing.
+  void install(ProxySolver& solver) override;
+  /// Gives `solver` the solids' present surfaces (after install). Allocates nothing.
   void placeBodies(ProxySolver& solver) const override;
   /// Presses each tissue with the tick's contacts on it (kp times their depths along their
-  /// normals), and on every ticksPerStep()-th tick steps the solids under the mean press and
-  /// hands the solver their surfaces. Sets `state.dynamicsNanoseconds`. Allocates nothing.
+  /// normals), and at the ticks whose number plus one is a multiple of ticksPerStep() (or the
+  /// first tick after one, when a threaded runner skipped it) steps the solids under the mean
+  /// press and hands the solver their surfaces. Sets `state.dynamicsNanoseconds`. Allocates nothing.
   void step(HapticState& state, ProxySolver& solver) override;
   /// No rigid poses: count 0.
   void poses(BodyPoses& out) const override { out.count = 0; }
@@ -100,6 +109,11 @@ private:
     TissueReading reading;
     double deepest = 0.0;
   };
+  /// True when `tissue`'s coupling was prepared and bound to a solver (install).
+  static bool coupled(const Tissue& tissue)
+  {
+    return tissue.contact != nullptr && tissue.contact->bound();
+  }
   /// The indentation of `tissue` by the proxy at `proxy` touching triangle `triangle` at `point`.
   double indentationAt(const Tissue& tissue, const ProxySolver& solver, std::uint32_t triangle,
                        const Vec3& point, const Vec3& proxy) const;
@@ -107,7 +121,12 @@ private:
   std::vector<Tissue> m_tissues;
   double m_stiffness = 0.0;
   int m_ticksPerStep = 1;
-  int m_ticksSinceStep = 0;
+  /// The tick at which the solids step next: the first whose number plus one is a multiple of
+  /// m_ticksPerStep after the last step's.
+  std::uint64_t m_nextStepTick = 0;
+  /// The last tick step() was given, once it has been given one.
+  std::uint64_t m_lastTick = 0;
+  bool m_ticked = false;
   std::uint64_t m_steps = 0;
 };
 

@@ -1,0 +1,202 @@
+// Tissue in the threaded runtime (issue 35: a real-time runner that steps a solid). The runtime
+// makes the tissue's deforming copy and its coupling on the publisher's thread and only binds
+// them at the scene's install; the proxy thread then steps the solid inside its updates, on the
+// servo's clock, as the lockstep runner does after each tick. So, until the proxy loop first
+// skips a finger sample, a threaded run of a press on a soft block equals a lockstep run bit for
+// bit, proxy, force and the solid's points alike; and whatever the machine's load, the solid
+// gives way under the press. Nothing here asserts on how fast the machine is.
+#include "Tissue/TissueDynamics.h"
+
+#include "Proxy/CollisionScene.h"
+#include "Runtime/LockstepRuntime.h"
+#include "Runtime/SimulatedDevice.h"
+#include "Runtime/ThreadedRuntime.h"
+#include "Tissue/BoxTetMesh.h"
+#include "Tissue/TetBoundary.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace proxima
+{
+namespace
+{
+using namespace std::chrono_literals;
+
+constexpr double kRate = 1000.0;
+constexpr double kRadius = 0.005;
+
+// A block of 4 x 4 x 2 cm (cells of 5 mm) with its top at z = 0: TestTissueContact's.
+TetMesh blockTets()
+{
+  return makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
+}
+
+std::shared_ptr<const CollisionScene> blockScene()
+{
+  auto scene = std::make_shared<CollisionScene>();
+  TriangleMesh surface;
+  MeshError error;
+  EXPECT_TRUE(surface.build(boundarySoup(blockTets()), error)) << error.message;
+  scene->addObject(std::move(surface));
+  return scene;
+}
+
+// 5 kPa, fixed along its base, stepping at 200 Hz (every 5 ticks).
+std::shared_ptr<TissueDynamics> softBlock()
+{
+  TissueObject tissue;
+  tissue.object = 0;
+  tissue.tets = blockTets();
+  tissue.materials.assign(tissue.tets.tets.size(), ElasticMaterial{5000.0, 0.45});
+  tissue.settings.timeStep = 0.005;
+  tissue.settings.damping = 20.0;
+  for (std::uint32_t v = 0; v < tissue.tets.points.size(); ++v)
+  {
+    if (tissue.tets.points[v].z < -0.02 + 1e-9)
+    {
+      tissue.fixedVertices.push_back(v);
+    }
+  }
+  std::vector<TissueObject> tissues;
+  tissues.push_back(std::move(tissue));
+  return std::make_shared<TissueDynamics>(std::move(tissues), ServoParameters{}.stiffness, kRate);
+}
+
+// From 1 cm above the top's centre down to 3 mm below it in 0.3 s, then held for 0.3 s.
+FingerPath pressAndHold()
+{
+  FingerPath path;
+  for (int k = 0; k <= 600; ++k)
+  {
+    const double t = k / kRate;
+    const double z = t < 0.3 ? 0.01 - 0.013 * t / 0.3 : -0.003;
+    path.times.push_back(t);
+    path.positions.push_back(Vec3{0.001, 0.002, z + kRadius});
+  }
+  return path;
+}
+
+ProxyParameters parameters()
+{
+  ProxyParameters proxy;
+  proxy.radius = kRadius;
+  proxy.timeStep = 1.0 / kRate;
+  return proxy;
+}
+
+bool sameBits(const Vec3& a, const Vec3& b)
+{
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(ThreadedTissue, AgreesWithLockstepUntilTheFirstSkippedSampleAndGivesWayUnderAPress)
+{
+  const auto scene = blockScene();
+  const FingerPath path = pressAndHold();
+  const std::uint64_t ticks = ticksCovering(path.startTime(), path.endTime(), kRate);
+  const Vec3 start = path.positions.front();
+
+  std::vector<HapticState> lockstep;
+  std::vector<std::vector<Vec3>> lockstepPoints; // the solid's points after each tick
+  {
+    const std::shared_ptr<TissueDynamics> tissue = softBlock();
+    auto solver = std::make_unique<ProxySolver>();
+    solver->setScene(scene.get(), parameters());
+    solver->resetProxy(start);
+    tissue->attach(*solver);
+    SimulatedDevice device(path);
+    LockstepSettings settings;
+    settings.rate = kRate;
+    settings.numTicks = ticks;
+    runLockstep(
+      settings, *solver, device, ServoParameters{},
+      [&](const HapticState& state) {
+        lockstep.push_back(state);
+        lockstepPoints.push_back(tissue->solid(0).positions());
+      },
+      tissue.get());
+    // The press dents the block by millimetres: what the threaded run is compared on.
+    ASSERT_GT(tissue->reading(0).maxDisplacement, 0.001);
+  }
+
+  SimulatedDevice device(path);
+  RuntimeSettings settings;
+  settings.servoRate = kRate;
+  settings.realtimeScheduling = false;
+  settings.recordTicks = ticks + 16;
+  settings.duration = path.endTime();
+  settings.tickBudget = TickWorkBudget{};
+  ThreadedRuntime runtime(device, ServoParameters{}, settings);
+  const std::shared_ptr<TissueDynamics> tissue = softBlock();
+  EXPECT_EQ(runtime.publishScene(scene, parameters(), start, nullptr, tissue), 1u);
+  // A tissue's coupling belongs to the scene it was published with: publishing it again is
+  // refused on this thread, and costs no version.
+  EXPECT_THROW(runtime.publishScene(scene, parameters(), start, nullptr, tissue), std::logic_error);
+  std::string message;
+  ASSERT_TRUE(runtime.start(message)) << message;
+  ASSERT_TRUE(runtime.waitForScene(1, 60s)) << "the proxy loop never installed the scene";
+  while (!runtime.finished())
+  {
+    // The run ends by itself at the path's end; the loops raise the scene event then.
+    runtime.waitForScene(2, 100ms);
+  }
+  runtime.stop();
+  EXPECT_EQ(runtime.liveSceneVersion(), 1u);
+  const std::vector<HapticState> threaded = runtime.records();
+  ASSERT_FALSE(threaded.empty());
+
+  // Whatever the load: the proxy thread stepped the solid and the press dented it.
+  EXPECT_GT(tissue->steps(), 0u);
+  EXPECT_GT(tissue->reading(0).maxDisplacement, 0.001);
+
+  const std::uint64_t firstContact = static_cast<std::uint64_t>(
+    std::find_if(lockstep.begin(), lockstep.end(),
+                 [](const HapticState& state) { return state.numContacts > 0; }) -
+    lockstep.begin());
+  ASSERT_LT(firstContact, lockstep.size());
+  ASSERT_LT(threaded.front().tick, firstContact) << "the proxy thread's first update came late";
+  std::size_t bitForBit = 0;
+  for (std::size_t i = 0; i < threaded.size(); ++i)
+  {
+    const HapticState& a = threaded[i];
+    if (i > 0 && a.tick != threaded[i - 1].tick + 1)
+    {
+      break; // the first skipped sample
+    }
+    ASSERT_LT(a.tick, lockstep.size());
+    const HapticState& b = lockstep[a.tick];
+    ASSERT_TRUE(sameBits(a.proxy, b.proxy)) << "tick " << a.tick;
+    ASSERT_TRUE(sameBits(a.force, b.force)) << "tick " << a.tick;
+    ASSERT_EQ(a.numContacts, b.numContacts) << "tick " << a.tick;
+    ++bitForBit;
+  }
+  if (bitForBit == threaded.size())
+  {
+    // No sample skipped: the solid ended where lockstep had it after the same tick, point for
+    // point.
+    const std::vector<Vec3>& expected = lockstepPoints[threaded.back().tick];
+    const std::vector<Vec3>& points = tissue->solid(0).positions();
+    ASSERT_EQ(points.size(), expected.size());
+    for (std::size_t v = 0; v < points.size(); ++v)
+    {
+      ASSERT_TRUE(sameBits(points[v], expected[v])) << "point " << v;
+    }
+  }
+  std::printf("[ measured ] %zu of %zu proxy updates bit for bit with lockstep (%zu lockstep "
+              "ticks, first contact at tick %llu); %llu solid steps\n",
+              bitForBit, threaded.size(), lockstep.size(),
+              static_cast<unsigned long long>(firstContact),
+              static_cast<unsigned long long>(tissue->steps()));
+}
+
+} // namespace
+} // namespace proxima
