@@ -103,7 +103,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
                  const FingerPath& fingerPath, std::uint64_t numTicks, HapticDevice& device,
                  const std::function<void(const HapticState&)>& onTick,
                  nlohmann::ordered_json& report, ProxyStartPlacement& start,
-                 std::shared_ptr<BodyCoupling> bodies)
+                 std::shared_ptr<TickDynamics> dynamics)
 {
   const SceneOptions& shared = options.scene;
   RuntimeSettings settings;
@@ -125,7 +125,7 @@ void runRealtime(const RunOptions& options, std::shared_ptr<const CollisionScene
   }
   ThreadedRuntime runtime(device, servoParameters(shared), settings);
   runtime.publishScene(std::move(scene), proxyParameters(shared), fingerPath.positions.front(),
-                       &start, std::move(bodies));
+                       &start, std::move(dynamics));
   std::string message;
   if (!runtime.start(message))
   {
@@ -214,11 +214,12 @@ int run(const RunOptions& options)
   {
     refuseBodiesOutWithoutBodies();
   }
-  const std::unique_ptr<TissueDynamics> tissue = std::move(prepared.tissue);
-  if (tissue != nullptr && options.realtime)
+  const std::shared_ptr<TissueDynamics> tissue = std::move(prepared.tissue);
+  if (tissue != nullptr && options.realtime && !options.tissueOut.empty())
   {
-    // The threaded runtime would step a solid inside the proxy's tick.
-    refuseSceneTissue(loaded, "a run on the real clock (--realtime)");
+    // The threaded runtime records each tick's state, not what the tissue did at each tick.
+    throw InputError("--tissue-out", "is written in lockstep only: leave out --realtime, or "
+                                     "--tissue-out (the summary still reports the tissue)");
   }
   if (tissue == nullptr && !options.tissueOut.empty())
   {
@@ -281,11 +282,18 @@ int run(const RunOptions& options)
         writeTick(record);
         outcome.summary.add(record);
       },
-      realtimeReport, outcome.start, bodies);
+      realtimeReport, outcome.start,
+      tissue != nullptr ? std::shared_ptr<TickDynamics>(tissue)
+                        : std::shared_ptr<TickDynamics>(bodies));
     outcome.runMilliseconds = millisecondsSince(runStart);
+    // The threads have stopped: what the bodies and tissues did is read here.
     if (bodies != nullptr)
     {
-      outcome.bodies = bodyOutcomes(*bodies); // the threads have stopped
+      outcome.bodies = bodyOutcomes(*bodies);
+    }
+    if (tissue != nullptr)
+    {
+      outcome.tissues = tissueOutcomes(*tissue, loaded);
     }
     realtimeJson = realtimeReport.dump();
   }

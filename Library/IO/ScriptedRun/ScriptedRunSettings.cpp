@@ -224,8 +224,8 @@ void refuseSceneTissue(const LoadedScene& loaded, const std::string& who)
   {
     throw InputError(loaded.description.path,
                      "the scene has tissue, which " + who +
-                       " does not deform yet (proxima run plays it in lockstep, "
-                       "Documentation/Tissue.md)");
+                       " does not deform yet (proxima run plays it, in lockstep or "
+                       "--realtime, Documentation/Tissue.md)");
   }
 }
 
