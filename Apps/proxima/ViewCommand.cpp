@@ -9,6 +9,7 @@
 // the spot it aims at), it follows the proxy, keeping the direction and distance the user gives it
 // with the mouse ('c' switches following on and off).
 #include "Command.h"
+#include "DeformingSurfaceActor.h"
 #include "DisplayCheck.h"
 #include "ForcePlot.h"
 #include "HudText.h"
@@ -34,7 +35,6 @@
 #include "Runtime/LoopStatistics.h"
 #include "Runtime/PointerDevice.h"
 #include "Runtime/ServoRate.h"
-#include "Tissue/DeformedScene.h"
 #include "VTK/LockstepStates.h"
 #include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
@@ -191,13 +191,15 @@ HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& sc
   return last;
 }
 
-// The scene's surface: one actor for the objects that stay put, and one per body, which its
-// pose moves (placeBodyActors).
+// The scene's surface: one actor for the objects that stay put, one per body, which its pose
+// moves (placeBodyActors), and one per tissue, whose points the solid's steps move
+// (placeTissueActors).
 struct SceneActors
 {
   vtkSmartPointer<vtkActor> still;
   std::vector<std::uint32_t> bodyObjects;
   std::vector<vtkSmartPointer<vtkActor>> bodies;
+  std::vector<shell::DeformingSurfaceActor> tissues;
 };
 
 // The objects of `scene` that are not bodies: those the still actor draws.
@@ -215,19 +217,44 @@ std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
   return still;
 }
 
-SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* bodies)
+SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* dynamics)
 {
   SceneActors actors;
-  if (bodies != nullptr)
+  std::vector<std::uint32_t> tissueObjects;
+  if (dynamics != nullptr)
   {
-    actors.bodyObjects = bodies->movingObjects();
+    actors.bodyObjects = dynamics->movingObjects();
+    tissueObjects = dynamics->deformingObjects();
   }
-  actors.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, actors.bodyObjects));
+  std::vector<std::uint32_t> notStill = actors.bodyObjects;
+  notStill.insert(notStill.end(), tissueObjects.begin(), tissueObjects.end());
+  actors.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, notStill));
   for (const std::uint32_t object : actors.bodyObjects)
   {
     actors.bodies.push_back(shell::makeSceneSurfaceActor(scene, {object}));
   }
+  for (const std::uint32_t object : tissueObjects)
+  {
+    actors.tissues.emplace_back(scene, object);
+  }
   return actors;
+}
+
+// The tissues' actors moved to `surfaces` (TissueDynamics::latestSurfaces, or a lockstep run's
+// solids), tissue k's points onto the actor of its object.
+void placeTissueActors(SceneActors& actors, const TissueDynamics& tissue,
+                       const std::vector<std::vector<Vec3>>& surfaces)
+{
+  for (std::size_t k = 0; k < tissue.numTissues() && k < surfaces.size(); ++k)
+  {
+    for (shell::DeformingSurfaceActor& actor : actors.tissues)
+    {
+      if (actor.object() == tissue.object(k))
+      {
+        actor.movePoints(surfaces[k]);
+      }
+    }
+  }
 }
 
 void placeBodyActors(const SceneActors& actors, const BodyPoses& poses)
@@ -446,8 +473,8 @@ struct ViewInputs
   LoadedScene loaded;
   std::vector<HingeAxis> hinges;
   std::shared_ptr<BodyCoupling> bodies;
-  /// The scene's tissues, for a lockstep screenshot (the window refuses them).
-  std::unique_ptr<TissueDynamics> tissue;
+  /// The scene's tissues: deformed by the window's loops, or by a lockstep screenshot's run.
+  std::shared_ptr<TissueDynamics> tissue;
   FingerPath fingerPath;
   std::shared_ptr<const CollisionScene> scene;
   double pathSeconds = 0.0;
@@ -480,18 +507,8 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
   inputs.hinges = sceneHinges(inputs.loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
   inputs.bodies = sceneBodies(shared, inputs.loaded);
-  // Tissue deforms in a lockstep screenshot, the same steps as `proxima run`; the window's
-  // real-time loops cannot step a solid yet.
-  if (options.screenshot.empty())
-  {
-    refuseSceneTissue(inputs.loaded,
-                      "proxima view's window (a --screenshot of a --path draws it in lockstep)");
-  }
-  else if (options.device.device != "sim")
-  {
-    refuseSceneTissue(inputs.loaded, "a screenshot from a live device (--device sim plays the "
-                                     "path in lockstep)");
-  }
+  // Tissue deforms in the window, where the proxy thread steps it, and in a screenshot, the same
+  // steps as `proxima run` (Documentation/Tissue.md).
   inputs.tissue = buildSceneTissue(inputs.loaded, shared.stiffness, shared.rate);
   inputs.fingerPath = shared.path.empty() ? mouseStartPath(*inputs.loaded.scene, shared.radius)
                                           : readFingerPathFile(shared.path);
@@ -518,11 +535,22 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
   }
 }
 
+// The scene's bodies or its tissues (a scene has one kind or none): what the loops step after
+// each proxy update.
+std::shared_ptr<TickDynamics> sceneDynamics(const ViewInputs& inputs)
+{
+  if (inputs.tissue != nullptr)
+  {
+    return inputs.tissue;
+  }
+  return inputs.bodies;
+}
+
 // The haptic loops' settings: the scene, the device, the proxy's start and the knobs.
 void configureHaptics(vtkHapticRenderer* haptics, const SceneOptions& shared,
                       const ViewInputs& inputs, HapticDevice& device)
 {
-  haptics->SetCollisionScene(inputs.scene, inputs.bodies);
+  haptics->SetCollisionScene(inputs.scene, sceneDynamics(inputs));
   haptics->SetDevice(&device);
   const Vec3& start = inputs.fingerPath.positions.front();
   haptics->SetProxyStart(start.x, start.y, start.z);
@@ -543,7 +571,7 @@ void configureHaptics(vtkHapticRenderer* haptics, const SceneOptions& shared,
 struct ViewStage
 {
   ViewStage(const ViewOptions& options, const ViewInputs& inputs)
-    : surface(makeSceneActors(*inputs.scene, inputs.bodies.get()))
+    : surface(makeSceneActors(*inputs.scene, sceneDynamics(inputs).get()))
     // The last 5 s of force, 0 to the clamp.
     , forcePlot(5.0, options.scene.maxForce)
   {
@@ -555,6 +583,10 @@ struct ViewStage
     for (const vtkSmartPointer<vtkActor>& body : surface.bodies)
     {
       renderer->AddActor(body);
+    }
+    for (const shell::DeformingSurfaceActor& tissue : surface.tissues)
+    {
+      renderer->AddActor(tissue.actor());
     }
     representation->AddToRenderer(renderer);
     renderer->AddViewProp(status);
@@ -569,21 +601,6 @@ struct ViewStage
     window->AddRenderer(renderer);
     window->SetWindowName("proxima view");
     renderer->ResetCamera();
-  }
-
-  /// Draws the objects that stay put as `scene` has them (a scene with tissue as deformed now,
-  /// Tissue/DeformedScene.h) instead of as the scene file gave them.
-  void showStillSurface(const CollisionScene& scene)
-  {
-    if (surface.still != nullptr)
-    {
-      renderer->RemoveActor(surface.still);
-    }
-    surface.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, surface.bodyObjects));
-    if (surface.still != nullptr)
-    {
-      renderer->AddActor(surface.still);
-    }
   }
 
   /// The force arrow and the hinges' axes sized for the objects framed around `state`.
@@ -623,11 +640,8 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     // same steps as the threads, on a virtual clock) in a fraction of --at, and is the same
     // picture every time. It takes the real-time default budget (lockstepStateAt), so that it
     // shows the tick the window would show.
-    TickDynamics* dynamics = inputs.bodies != nullptr
-                               ? static_cast<TickDynamics*>(inputs.bodies.get())
-                               : static_cast<TickDynamics*>(inputs.tissue.get());
     state = lockstepStateAt(shared, *inputs.scene, shifted, inputs.at, device.device(),
-                            stage.forcePlot, dynamics);
+                            stage.forcePlot, sceneDynamics(inputs).get());
     servo.rate = shared.rate;
     if (inputs.bodies != nullptr)
     {
@@ -636,7 +650,12 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     if (inputs.tissue != nullptr)
     {
       // The organ as the press has deformed it at --at, not as the scene file gives it.
-      stage.showStillSurface(deformedScene(*inputs.scene, *inputs.tissue));
+      std::vector<std::vector<Vec3>> solids;
+      for (std::size_t k = 0; k < inputs.tissue->numTissues(); ++k)
+      {
+        solids.push_back(inputs.tissue->solid(k).positions());
+      }
+      placeTissueActors(stage.surface, *inputs.tissue, solids);
     }
   }
   else
@@ -655,6 +674,12 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     servo = haptics->GetServoStatistics();
     poses = haptics->GetBodyPoses();
     haptics->Stop();
+    if (inputs.tissue != nullptr)
+    {
+      // The surfaces of the last step the loops took.
+      inputs.tissue->takeSurfaces();
+      placeTissueActors(stage.surface, *inputs.tissue, inputs.tissue->latestSurfaces().points);
+    }
   }
   placeBodyActors(stage.surface, poses);
   const Aabb framed = stage.frame(options, inputs, state, poses);
@@ -693,6 +718,8 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
 struct WindowFrame
 {
   vtkHapticRenderer* haptics;
+  /// The scene's tissues (null without), whose newest surfaces each frame draws.
+  TissueDynamics* tissue;
   ViewStage* stage;
   vtkHapticMouseFinger* mouse;
   bool follow;
@@ -719,6 +746,10 @@ void onWindowTimer(vtkObject* caller, unsigned long, void* clientData, void*)
   const HapticState state = f->haptics->GetState();
   stage.representation->SetState(state);
   placeBodyActors(stage.surface, f->haptics->GetBodyPoses());
+  if (f->tissue != nullptr && f->tissue->takeSurfaces())
+  {
+    placeTissueActors(stage.surface, *f->tissue, f->tissue->latestSurfaces().points);
+  }
   stage.forcePlot.add(state.time, norm(state.force));
   stage.forcePlot.update();
   stage.status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
@@ -786,8 +817,9 @@ int runWindow(const ViewOptions& options, const ViewInputs& inputs, ViewStage& s
     // The scene framed, then brought to the distance asked for.
     stage.renderer->GetActiveCamera()->SetDistance(options.viewDistance);
   }
-  WindowFrame frame{haptics, &stage, mouse ? mouseFinger.Get() : nullptr, !mouse,
-                    std::chrono::steady_clock::now()};
+  WindowFrame frame{haptics, inputs.tissue.get(),
+                    &stage,  mouse ? mouseFinger.Get() : nullptr,
+                    !mouse,  std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
   onTimer->SetClientData(&frame);
   onTimer->SetCallback(onWindowTimer);

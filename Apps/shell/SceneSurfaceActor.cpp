@@ -2,6 +2,7 @@
 
 #include "VTK/ScenePolyData.h"
 
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
@@ -11,19 +12,24 @@ namespace proxima::shell
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene)
 {
+  return makeSurfaceActor(proxima::vtk::scenePolyData(scene));
+}
+
+vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface)
+{
   auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
-  normals->SetInputData(proxima::vtk::scenePolyData(scene));
+  normals->SetInputData(surface);
   normals->SetFeatureAngle(60.0);
   normals->SplittingOn();
   normals->ConsistencyOn();
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputConnection(normals->GetOutputPort());
   mapper->ScalarVisibilityOff();
-  auto surface = vtkSmartPointer<vtkActor>::New();
-  surface->SetMapper(mapper);
-  surface->GetProperty()->SetColor(0.85, 0.8, 0.72);
-  surface->GetProperty()->SetSpecular(0.2);
-  return surface;
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.85, 0.8, 0.72);
+  actor->GetProperty()->SetSpecular(0.2);
+  return actor;
 }
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,

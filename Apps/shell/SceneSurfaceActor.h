@@ -11,10 +11,16 @@
 #include <cstdint>
 #include <vector>
 
+class vtkPolyData;
+
 namespace proxima::shell
 {
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene);
+
+/// The same for triangles given as vtkPolyData (the actor draws `surface` through a normals
+/// filter, so that moving its points and marking it modified moves the drawing).
+vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface);
 
 /// The same for some of the scene's objects only (a moving body's, which its own actor's
 /// transform then moves; or all the others), or null when `objects` is empty.

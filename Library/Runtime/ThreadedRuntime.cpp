@@ -39,6 +39,8 @@ struct SceneSlot
   /// The deforming copies of the dynamics' deforming objects (a tissue's), made on the
   /// publisher's thread; the slot's reference keeps the solver from ever freeing them.
   std::shared_ptr<DeformingObjectSet> deforming;
+  /// What the dynamics keeps for this scene (TickDynamics::prepare), freed with the slot.
+  std::unique_ptr<TickDynamics::SceneBinding> binding;
 };
 
 // The scene event is a futex on the atomic's own storage: waking its sleepers is one system call,
@@ -173,7 +175,7 @@ void ThreadedRuntime::Impl::installPendingScene()
   solver->useDeformingObjects(next->deforming);
   if (next->dynamics != nullptr)
   {
-    next->dynamics->install(*solver);
+    next->dynamics->install(*solver, next->binding.get());
   }
   if (next->movedOutside)
   {
@@ -341,6 +343,7 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
   // the scene (prepare throws) then costs no version.
   std::unique_ptr<MovingObjectSet> moving;
   std::shared_ptr<DeformingObjectSet> deforming;
+  std::unique_ptr<TickDynamics::SceneBinding> binding;
   if (dynamics != nullptr && scene != nullptr)
   {
     moving = makeMovingObjects(*scene, dynamics->movingObjects());
@@ -349,7 +352,7 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
     {
       deforming = makeDeformingObjects(*scene, deformingObjects);
     }
-    dynamics->prepare(*scene);
+    binding = dynamics->prepare(*scene);
   }
   const std::uint64_t version =
     m_impl->publishedVersions.fetch_add(1, std::memory_order_relaxed) + 1;
@@ -383,7 +386,8 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
                              version,
                              std::move(dynamics),
                              std::move(moving),
-                             std::move(deforming)};
+                             std::move(deforming),
+                             std::move(binding)};
   // A scene published before the proxy loop took the last one replaces it unseen.
   delete m_impl->pending.exchange(slot, std::memory_order_acq_rel);
   m_impl->collectRetired();

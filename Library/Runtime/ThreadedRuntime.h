@@ -100,7 +100,9 @@ public:
   /// deforming copies made and is prepared (TickDynamics::prepare) here too, so the proxy loop
   /// only binds it at the install; its solids then step inside the proxy updates, every few
   /// ticks, as lockstep steps them. A dynamics that refuses the scene throws here, on the
-  /// caller's thread, before anything is published.
+  /// caller's thread, before anything is published. The same dynamics may be published again
+  /// (each scene gets its own binding, freed here with the scene), but to one runtime at a time:
+  /// two running runtimes would step one solid from two threads.
   std::uint64_t publishScene(std::shared_ptr<const CollisionScene> scene,
                              const ProxyParameters& parameters, const Vec3& proxyStart,
                              ProxyStartPlacement* placement = nullptr,

@@ -11,6 +11,7 @@
 #include "Runtime/HapticState.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace proxima
@@ -54,27 +55,50 @@ public:
   /// The scene objects that deform (for makeDeformingObjects, off the haptic thread): none by
   /// default; a dynamics whose objects deform (Tissue/TissueDynamics.h) lists them.
   virtual std::vector<std::uint32_t> deformingObjects() const { return {}; }
-  /// Off the haptic thread, before `scene` is installed: makes everything install() needs, and
-  /// may allocate. A dynamics that keeps state for its scene (a tissue's coupling) is prepared
-  /// for one scene once and throws std::logic_error when asked again. Nothing by default.
-  virtual void prepare(const CollisionScene& scene) { (void)scene; }
-  /// On the thread that owns `solver`, once it has the scene prepare() was given and the moved
-  /// and deforming copies of the objects listed above (useMovingObjects, useDeformingObjects):
-  /// binds to it and gives it the bodies' present poses or surfaces. Allocates nothing.
-  virtual void install(ProxySolver& solver) { placeBodies(solver); }
+
+  /// What a dynamics keeps for one scene besides its own state (a tissue's coupling to the
+  /// solver: its buffers and the press it is summing). Made by prepare() off the haptic thread,
+  /// owned and freed by whoever published the scene (ThreadedRuntime's scene slot), so that a
+  /// scene published again, or to a new runtime, gets its own while the old one is still used.
+  class SceneBinding
+  {
+  public:
+    virtual ~SceneBinding() = default;
+  };
+  /// Off the haptic thread, before `scene` is installed: makes what install() needs for it, and
+  /// may allocate; null when nothing is needed (the default, and bodies). Throws
+  /// std::invalid_argument for a scene this dynamics cannot act on.
+  virtual std::unique_ptr<SceneBinding> prepare(const CollisionScene& scene)
+  {
+    (void)scene;
+    return nullptr;
+  }
+  /// On the thread that owns `solver`, once it has the scene prepare() made `binding` for and the
+  /// moved and deforming copies of the objects listed above (useMovingObjects,
+  /// useDeformingObjects): acts through `binding` from now on and gives the solver the bodies'
+  /// present poses or surfaces. `binding` must outlive its use (until the next install). Allocates
+  /// nothing.
+  virtual void install(ProxySolver& solver, SceneBinding* binding)
+  {
+    (void)binding;
+    placeBodies(solver);
+  }
 
   /// For one thread that owns `solver` (a lockstep runner), after its setScene: the whole of the
-  /// above in one go (allocates).
+  /// above in one go (allocates); the binding is kept here.
   void attach(ProxySolver& solver)
   {
     solver.setMovingObjects(movingObjects());
     solver.setDeformingObjects(deformingObjects());
-    if (solver.scene() != nullptr)
-    {
-      prepare(*solver.scene());
-    }
-    install(solver);
+    std::unique_ptr<SceneBinding> binding =
+      solver.scene() != nullptr ? prepare(*solver.scene()) : nullptr;
+    install(solver, binding.get());
+    m_attached = std::move(binding);
   }
+
+private:
+  /// attach()'s binding.
+  std::unique_ptr<SceneBinding> m_attached;
 };
 
 } // namespace proxima

@@ -11,8 +11,24 @@
 namespace proxima
 {
 
+namespace
+{
+// Each tissue's points at rest: what the hand-over holds before the first step, and the room it
+// keeps for every later one.
+TissueDynamics::Surfaces surfacesAtRest(const std::vector<TissueObject>& tissues)
+{
+  TissueDynamics::Surfaces surfaces;
+  for (const TissueObject& tissue : tissues)
+  {
+    surfaces.points.push_back(tissue.tets.points);
+  }
+  return surfaces;
+}
+} // namespace
+
 TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffness, double rate)
-  : m_stiffness(stiffness)
+  : m_surfaces(surfacesAtRest(tissues))
+  , m_stiffness(stiffness)
 {
   if (tissues.empty())
   {
@@ -61,32 +77,63 @@ std::vector<std::uint32_t> TissueDynamics::deformingObjects() const
   return objects;
 }
 
-void TissueDynamics::prepare(const CollisionScene& scene)
+struct TissueDynamics::Binding : SceneBinding
 {
-  if (m_tissues.front().contact != nullptr)
-  {
-    throw std::logic_error("TissueDynamics: already prepared for a scene (a scene published "
-                           "again needs its own tissues)");
-  }
+  std::vector<std::unique_ptr<TissueContact>> contacts;
+};
+
+std::unique_ptr<TickDynamics::SceneBinding> TissueDynamics::prepare(const CollisionScene& scene)
+{
+  auto binding = std::make_unique<Binding>();
   for (Tissue& tissue : m_tissues)
   {
-    tissue.contact =
-      std::make_unique<TissueContact>(*tissue.solid, scene, tissue.object, m_stiffness);
+    binding->contacts.push_back(
+      std::make_unique<TissueContact>(*tissue.solid, scene, tissue.object, m_stiffness));
   }
+  return binding;
 }
 
-void TissueDynamics::install(ProxySolver& solver)
+void TissueDynamics::install(ProxySolver& solver, SceneBinding* binding)
 {
-  for (Tissue& tissue : m_tissues)
+  // Installed once per scene, never per tick: the cast's cost is no tick's.
+  m_binding = dynamic_cast<Binding*>(binding);
+  if (m_binding != nullptr && m_binding->contacts.size() == m_tissues.size())
   {
-    // prepare() made each coupling for this scene and the runner made these objects deforming
-    // in it, so each binds; one that did not is left out of step() (its tissue stays at rest).
-    if (tissue.contact != nullptr)
+    for (const std::unique_ptr<TissueContact>& contact : m_binding->contacts)
     {
-      tissue.contact->bind(solver);
+      // Made by prepare() for this scene, with the runner making these objects deforming, so
+      // each binds; one that did not is left out of step() (its tissue stays as it is).
+      contact->bind(solver);
     }
   }
+  else
+  {
+    m_binding = nullptr;
+  }
   placeBodies(solver);
+}
+
+TissueContact* TissueDynamics::coupling(std::size_t k) const
+{
+  if (m_binding == nullptr)
+  {
+    return nullptr;
+  }
+  TissueContact* contact = m_binding->contacts[k].get();
+  return contact->bound() ? contact : nullptr;
+}
+
+void TissueDynamics::publishSurfaces(std::uint64_t tick)
+{
+  Surfaces& surfaces = m_surfaces.back();
+  surfaces.tick = tick;
+  surfaces.steps = m_steps;
+  for (std::size_t k = 0; k < m_tissues.size(); ++k)
+  {
+    const std::vector<Vec3>& positions = m_tissues[k].solid->positions();
+    std::copy(positions.begin(), positions.end(), surfaces.points[k].begin());
+  }
+  m_surfaces.publish();
 }
 
 void TissueDynamics::placeBodies(ProxySolver& solver) const
@@ -128,9 +175,11 @@ double TissueDynamics::indentationAt(const Tissue& tissue, const ProxySolver& so
 void TissueDynamics::step(HapticState& state, ProxySolver& solver)
 {
   const auto begin = std::chrono::steady_clock::now();
-  for (Tissue& tissue : m_tissues)
+  for (std::size_t t = 0; t < m_tissues.size(); ++t)
   {
-    if (!coupled(tissue))
+    Tissue& tissue = m_tissues[t];
+    TissueContact* coupled = coupling(t);
+    if (coupled == nullptr)
     {
       continue;
     }
@@ -158,7 +207,7 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
       }
     }
     const double stiffness = deepestContact >= 0 ? m_stiffness * state.stiffnessScale : 0.0;
-    tissue.contact->addPress(state.proxy, force, stiffness);
+    coupled->addPress(state.proxy, force, stiffness);
     TissueReading& reading = tissue.reading;
     reading.force = norm(force);
     const int chosen = deepestContact >= 0 ? deepestContact : firstContact;
@@ -188,15 +237,16 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
   {
     m_nextStepTick = (state.tick + 1 + every) / every * every - 1;
     ++m_steps;
-    for (Tissue& tissue : m_tissues)
+    for (std::size_t t = 0; t < m_tissues.size(); ++t)
     {
-      if (!coupled(tissue))
+      TissueContact* contact = coupling(t);
+      if (contact != nullptr)
       {
-        continue;
+        contact->step();
+        m_tissues[t].reading.maxDisplacement = contact->maxDisplacement();
       }
-      tissue.contact->step();
-      tissue.reading.maxDisplacement = tissue.contact->maxDisplacement();
     }
+    publishSurfaces(state.tick);
   }
   const auto end = std::chrono::steady_clock::now();
   state.dynamicsNanoseconds =

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "Runtime/TickDynamics.h"
+#include "Runtime/TripleBuffer.h"
 #include "Tissue/ElasticSolid.h"
 #include "Tissue/TetMesh.h"
 #include "Tissue/TissueContact.h"
@@ -67,14 +68,15 @@ public:
   std::vector<std::uint32_t> movingObjects() const override { return {}; }
   /// The tissues' scene objects: they deform.
   std::vector<std::uint32_t> deformingObjects() const override;
-  /// Couples each solid to its object of `scene` (allocates; any thread but the haptic ones).
-  /// Once: a tissue's coupling belongs to one scene, so a second call throws std::logic_error;
-  /// a scene published again needs a TissueDynamics of its own. Throws std::invalid_argument
-  /// when an object's mesh does not have its solid's points.
-  void prepare(const CollisionScene& scene) override;
-  /// Binds the couplings to `solver` (which has the prepared scene and these objects deforming)
-  /// and gives it the solids' present surfaces. Allocates nothing.
-  void install(ProxySolver& solver) override;
+  /// Couples each solid to its object of `scene` (allocates; any thread but the haptic ones): the
+  /// binding holds each tissue's TissueContact. Throws std::invalid_argument when an object is
+  /// not in the scene or its mesh does not have its solid's points.
+  std::unique_ptr<SceneBinding> prepare(const CollisionScene& scene) override;
+  /// Acts through `binding` (prepare's, for the scene `solver` has, with these objects
+  /// deforming) from now on: binds its couplings to `solver` and gives it the solids' present
+  /// surfaces. A null or foreign binding leaves the solids unpressed and unstepped. Allocates
+  /// nothing.
+  void install(ProxySolver& solver, SceneBinding* binding) override;
   /// Gives `solver` the solids' present surfaces (after install). Allocates nothing.
   void placeBodies(ProxySolver& solver) const override;
   /// Presses each tissue with the tick's contacts on it (kp times their depths along their
@@ -100,25 +102,46 @@ public:
   /// The solids' steps so far.
   std::uint64_t steps() const { return m_steps; }
 
+  /// The tissues' surfaces as a step left them, for drawing on another thread.
+  struct Surfaces
+  {
+    /// The tick whose step left them (0 with the surfaces at rest, before any step).
+    std::uint64_t tick = 0;
+    /// The solids' steps so far when they were handed over.
+    std::uint64_t steps = 0;
+    /// Per tissue (in the order of object()), its solid's points: its object's mesh's points.
+    std::vector<std::vector<Vec3>> points;
+  };
+  /// For one reader thread (a window drawing a live run), while the solids step on another:
+  /// takes the surfaces of the newest step, and returns true, or returns false when no step came
+  /// since the last take. The newest taken are latestSurfaces(); at rest before any take.
+  bool takeSurfaces() { return m_surfaces.take(); }
+  /// The surfaces the last takeSurfaces() took (the reader's thread only).
+  const Surfaces& latestSurfaces() const { return m_surfaces.front(); }
+
 private:
   struct Tissue
   {
     std::uint32_t object = 0;
     std::unique_ptr<ElasticSolid> solid;
-    std::unique_ptr<TissueContact> contact;
     TissueReading reading;
     double deepest = 0.0;
   };
-  /// True when `tissue`'s coupling was prepared and bound to a solver (install).
-  static bool coupled(const Tissue& tissue)
-  {
-    return tissue.contact != nullptr && tissue.contact->bound();
-  }
+  /// What prepare() makes: per tissue, its coupling to the scene's solver.
+  struct Binding;
+  /// Tissue `k`'s coupling when installed and bound to a solver, else null.
+  TissueContact* coupling(std::size_t k) const;
+  /// Copies the solids' points into the hand-over and publishes them (no allocation).
+  void publishSurfaces(std::uint64_t tick);
   /// The indentation of `tissue` by the proxy at `proxy` touching triangle `triangle` at `point`.
   double indentationAt(const Tissue& tissue, const ProxySolver& solver, std::uint32_t triangle,
                        const Vec3& point, const Vec3& proxy) const;
 
   std::vector<Tissue> m_tissues;
+  /// The binding install() was given (owned by whoever published the scene), or null.
+  Binding* m_binding = nullptr;
+  /// The surfaces after each step, to a drawing thread.
+  TripleBuffer<Surfaces> m_surfaces;
   double m_stiffness = 0.0;
   int m_ticksPerStep = 1;
   /// The tick at which the solids step next: the first whose number plus one is a multiple of

@@ -6,6 +6,9 @@ deformed it, and plays the same steps as `proxima run`:
   the kidney's rest shape): the whole proxy shows in its dent. The proxy's blue pixels span as
   many rows as columns (within 15 %), as when it hovers above the kidney. Drawn at rest, as the
   picture once was, the rest surface hides the proxy's lower part: 29 rows of 40 (0.72).
+- the same from a live device (a replay of the path on the real clock, `--device replay:`): the
+  threaded runtime's proxy thread stepped the solid and the picture draws the surface its last
+  step handed over, so the proxy shows whole in its dent there too.
 - the force the picture reports is the force of `proxima run --tick-budget default` on that tick
   (the real-time default budget, which the picture's lockstep run takes), to the 4 decimals the
   line prints.
@@ -29,10 +32,10 @@ RUN = ["--scene", "Data/Scenes/kidney-tissue.json", "--path", "Data/Paths/Tissue
        "--radius", "0.004", "--stiffness", "500"]
 
 
-def screenshot(proxima, source, out_dir, name, at):
+def screenshot(proxima, source, out_dir, name, at, device=()):
     """The picture's blue proxy pixels (a boolean image) and the force its line reports."""
     png = os.path.join(out_dir, name + ".png")
-    result = subprocess.run([proxima, "view"] + RUN +
+    result = subprocess.run([proxima, "view"] + RUN + list(device) +
                             ["--at", str(at), "--view-distance", "0.12", "--width", str(WIDTH),
                              "--height", str(HEIGHT), "--screenshot", png],
                             capture_output=True, text=True, timeout=300, cwd=source)
@@ -65,6 +68,22 @@ def main():
         failures.append(f"the held proxy is hidden below the surface drawn ({held_shape:.3f} rows "
                         f"per column against {hover_shape:.3f} hovering): the kidney is drawn at "
                         "rest, not deformed")
+
+    # The path as a device recording (what a replay plays), from a lockstep run of it.
+    recording = os.path.join(out_dir, "kidney-device.csv")
+    result = subprocess.run([proxima, "run"] + RUN +
+                            ["--out", os.path.join(out_dir, "kidney-recorded.csv"),
+                             "--record-device", recording],
+                            capture_output=True, text=True, timeout=300, cwd=source)
+    assert result.returncode == 0, result.stderr
+    live, _ = screenshot(proxima, source, out_dir, "kidney-held-live", HELD,
+                         ["--device", "replay:" + recording])
+    live_shape = rows_per_column(live)
+    print(f"proxy's rows per column held in the dent, live: {live_shape:.3f}")
+    if live_shape < 0.85 * hover_shape:
+        failures.append(f"live, the held proxy is hidden below the surface drawn ({live_shape:.3f} "
+                        f"rows per column against {hover_shape:.3f} hovering): the surface the "
+                        "threaded runtime's steps handed over was not drawn")
 
     trace = os.path.join(out_dir, "kidney-run.csv")
     result = subprocess.run([proxima, "run"] + RUN + ["--tick-budget", "default", "--out", trace],
