@@ -207,10 +207,19 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded)
 {
-  // The real-time runners would step a solid inside the proxy's tick: its servo-rate local
-  // model is not built yet (Documentation/Tissue.md).
-  refuseSceneTissue(loaded, "a real-time run (--realtime, proxima view, proxima serve, Python's "
-                            "live sessions)");
+  // A scene has bodies or tissue, never both (the scene file refuses an object with both; a
+  // scene of several objects is refused below when it mixes them).
+  std::shared_ptr<TickDynamics> tissue =
+    buildSceneTissue(loaded, settings.stiffness, settings.rate);
+  if (tissue != nullptr)
+  {
+    if (loaded.description.hasBodies())
+    {
+      throw InputError(loaded.description.path,
+                       "the scene has both bodies and tissue, which no runner steps together yet");
+    }
+    return tissue;
+  }
 #ifdef PROXIMA_WITH_DYNAMICS
   return std::shared_ptr<TickDynamics>(sceneBodies(settings, loaded));
 #else

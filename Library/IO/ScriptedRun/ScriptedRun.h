@@ -153,8 +153,9 @@ std::vector<BodyOutcome> bodyOutcomes(BodyCoupling& bodies);
 /// none. Throws InputError as buildSceneBodies does, or when this build has no Dynamics layer.
 std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
                                           const LoadedScene& loaded);
-/// The same, as the runners see it (for HapticSession::setDynamics and the like), or null.
-/// Throws InputError for a scene with tissue, which only a lockstep run plays so far.
+/// The scene's bodies, or its tissues (coupled as buildSceneTissue does), as the runners see them
+/// (for HapticSession::setDynamics, ThreadedRuntime::publishScene and the like), or null. Throws
+/// InputError as sceneBodies does, or for a scene with both bodies and tissue.
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded);
 

@@ -80,3 +80,31 @@ def test_a_session_moves_the_scenes_bodies_as_the_command_line_does(tmp_path):
     stepped = [by_hand.step(finger) for finger in fingers]
     assert numpy.array_equal([tick["proxy"][0] for tick in stepped], trace["proxy_x"][:1500])
     assert numpy.array_equal([tick["force"][2] for tick in stepped], trace["force_z"][:1500])
+
+
+def test_a_session_deforms_the_scenes_tissue_as_the_command_line_does(tmp_path):
+    """The kidney as soft tissue (Data/Scenes/kidney-tissue.json) pressed and released: a
+    session's run gives `proxima run`'s trace bit for bit, the solid stepping every 5 ticks as
+    there, and stepping by hand on a fresh session gives the same ticks."""
+    scene = os.path.join(SOURCE, "Data", "Scenes", "kidney-tissue.json")
+    path = os.path.join(SOURCE, "Data", "Paths", "Tissue", "kidney-press.csv")
+    trace_file = str(tmp_path / "trace.csv")
+    tissue_file = str(tmp_path / "tissue.csv")
+    proxima_cli("run", "--scene", scene, "--path", path, "--radius", "0.004", "--stiffness",
+                "500", "--out", trace_file, "--tissue-out", tissue_file)
+    reference = read_cli_trace(trace_file)
+    # The press dents the kidney by millimetres: a trace that depends on the solid's steps.
+    indentation = numpy.genfromtxt(tissue_file, delimiter=",", names=True)["indentation"]
+    assert indentation.max() > 0.004
+    session = proxima.Session(scene=scene, radius=0.004, stiffness=500)
+    trace = session.run(path)
+    for column in ("proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z", "contacts",
+                   "flags"):
+        assert numpy.array_equal(trace[column], reference[column]), column
+    assert reference["contacts"].max() > 0
+    fingers = numpy.column_stack([reference["finger_x"], reference["finger_y"],
+                                  reference["finger_z"]])[:2000]
+    by_hand = proxima.Session(scene=scene, radius=0.004, stiffness=500)
+    stepped = [by_hand.step(finger) for finger in fingers]
+    assert numpy.array_equal([tick["proxy"][2] for tick in stepped], trace["proxy_z"][:2000])
+    assert numpy.array_equal([tick["force"][2] for tick in stepped], trace["force_z"][:2000])
