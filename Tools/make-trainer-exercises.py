@@ -317,8 +317,7 @@ def main():
         "name": "Soft liver palpation: find the hidden nodule",
         "instructions": "The liver gives way under your finger. Somewhere under its upper surface "
                         "is a hard nodule. Press gently over the surface until you feel it push "
-                        "back harder, then mark the spot (the M key). Headless only for now "
-                        "(--path): the window cannot deform tissue yet.",
+                        "back harder, then mark the spot (the M key).",
         "tasks": [{"type": "palpation", "object": 0, "inclusion": 0, "pass_distance": 0.01}],
     })
 
@@ -380,8 +379,7 @@ def main():
         "name": "Soft kidney: press the upper pole, then the lower",
         "instructions": "The kidney gives way under your finger. Press its upper pole, then its "
                         "lower pole, each with between 0.05 and 0.25 N for a third of a second. "
-                        "Do not press harder than 0.4 N. Headless only for now (--path): the "
-                        "window cannot deform tissue yet.",
+                        "Do not press harder than 0.4 N.",
         "tasks": [{
             "type": "targets",
             "targets": [{"name": n, "center": rounded(s[0]), "radius": 0.006} for n, s in poles],

@@ -31,6 +31,7 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -62,7 +63,27 @@ HapticWindow::HapticWindow(const HapticWindowSettings& settings, QWidget* parent
   setCentralWidget(m_view);
 
   m_renderer = vtkSmartPointer<vtkRenderer>::New();
-  m_renderer->AddActor(makeSceneSurfaceActor(*m_settings.scene));
+  // The objects that stay put in one actor; each tissue in its own, whose points its steps move.
+  std::vector<std::uint32_t> still;
+  const std::vector<std::uint32_t> deforming = m_settings.tissue != nullptr
+                                                 ? m_settings.tissue->deformingObjects()
+                                                 : std::vector<std::uint32_t>{};
+  for (std::uint32_t object = 0; object < m_settings.scene->objects.size(); ++object)
+  {
+    if (std::find(deforming.begin(), deforming.end(), object) == deforming.end())
+    {
+      still.push_back(object);
+    }
+  }
+  if (vtkSmartPointer<vtkActor> surface = makeSceneSurfaceActor(*m_settings.scene, still))
+  {
+    m_renderer->AddActor(surface);
+  }
+  for (const std::uint32_t object : deforming)
+  {
+    m_tissueActors.emplace_back(*m_settings.scene, object);
+    m_renderer->AddActor(m_tissueActors.back().actor());
+  }
   m_representation = vtkSmartPointer<vtkHapticStateRepresentation>::New();
   m_representation->SetForceScale(30.0 * m_settings.radius / m_settings.maxForce);
   m_representation->AddToRenderer(m_renderer);
@@ -80,7 +101,7 @@ HapticWindow::HapticWindow(const HapticWindowSettings& settings, QWidget* parent
   interactor->SetInteractorStyle(style);
 
   m_haptics = vtkSmartPointer<vtkHapticRenderer>::New();
-  m_haptics->SetCollisionScene(m_settings.scene);
+  m_haptics->SetCollisionScene(m_settings.scene, m_settings.tissue);
   m_haptics->SetProxyRadius(m_settings.radius);
   m_haptics->SetStiffness(m_settings.stiffness);
   m_haptics->SetMaxForce(m_settings.maxForce);
@@ -473,6 +494,20 @@ void HapticWindow::refresh()
     m_forcePlot.add(tick.time, norm(tick.force));
   }
   ticksArrived(m_ticks);
+  if (m_settings.tissue != nullptr && m_settings.tissue->takeSurfaces())
+  {
+    const TissueDynamics::Surfaces& surfaces = m_settings.tissue->latestSurfaces();
+    for (std::size_t k = 0; k < m_settings.tissue->numTissues() && k < surfaces.points.size(); ++k)
+    {
+      for (DeformingSurfaceActor& actor : m_tissueActors)
+      {
+        if (actor.object() == m_settings.tissue->object(k))
+        {
+          actor.movePoints(surfaces.points[k]);
+        }
+      }
+    }
+  }
   const HapticState state = m_haptics->GetState();
   m_representation->SetState(state);
   m_forcePlot.update();

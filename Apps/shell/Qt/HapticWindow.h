@@ -13,10 +13,12 @@
 // state stream), hudLines() adds their own lines, and renderer() takes their actors.
 #pragma once
 
+#include "DeformingSurfaceActor.h"
 #include "ForcePlot.h"
 #include "Proxy/CollisionScene.h"
 #include "Runtime/FingerPath.h"
 #include "Runtime/HapticState.h"
+#include "Tissue/TissueDynamics.h"
 
 #include <QMainWindow>
 #include <QTimer>
@@ -54,6 +56,9 @@ struct HapticWindowSettings
 {
   std::string title = "Proxima";
   std::shared_ptr<const CollisionScene> scene;
+  /// The scene's tissues (Tissue/TissueDynamics.h), or null: the loops step them, and each frame
+  /// draws their newest surfaces.
+  std::shared_ptr<TissueDynamics> tissue;
   double radius = 0.002;
   double stiffness = 500.0;
   double maxForce = 10.0;
@@ -156,6 +161,8 @@ private:
   std::unique_ptr<HapticDevice> m_device;
   std::unique_ptr<RecordingDevice> m_recorder;
   std::string m_deviceSpec;
+  /// The tissues' surfaces, moved each frame to the newest step's.
+  std::vector<DeformingSurfaceActor> m_tissueActors;
   QTimer m_timer;
   QLabel* m_status = nullptr;
   QMenu* m_sessionMenu = nullptr;

@@ -6,6 +6,7 @@
 #include "TrainerWindow.h"
 
 #include "IO/InputChecks/InputError.h"
+#include "IO/Scene/SceneTissue.h"
 #include "IO/Output/StandardOutput.h"
 
 #include <QApplication>
@@ -50,10 +51,12 @@ std::unique_ptr<TrainerWindow> openWindow(const std::string& path,
 {
   const Exercise exercise = readExerciseFile(path);
   LoadedScene loaded = loadExerciseScene(exerciseRunSettings(exercise, ""));
-  // The window runs the real-time loops, which cannot step a solid yet: a soft organ's
-  // exercise scores headless (--path) only.
-  refuseSceneTissue(loaded, "the trainer's window (give --path to score it headless)");
-  return std::make_unique<TrainerWindow>(exercise, windowSettings(exercise, loaded, options));
+  // A soft organ deforms in the window: the loops step its solid as the headless session does.
+  std::shared_ptr<TissueDynamics> tissue =
+    buildSceneTissue(loaded, exercise.stiffness, exercise.rate);
+  shell::HapticWindowSettings settings = windowSettings(exercise, loaded, options);
+  settings.tissue = std::move(tissue);
+  return std::make_unique<TrainerWindow>(exercise, settings);
 }
 
 // The exercise to open when none was given: one of the shipped ones, or a file; empty to quit.
