@@ -192,8 +192,8 @@ HapticState lockstepStateAt(const SceneOptions& shared, const CollisionScene& sc
 }
 
 // The scene's surface: one actor for the objects that stay put, one per body, which its pose
-// moves (placeBodyActors), and one per tissue, whose points the solid's steps move
-// (placeTissueActors).
+// moves (placeBodyActors), and one per tissue, which draws its solid's newest step
+// (updateTissueActors).
 struct SceneActors
 {
   vtkSmartPointer<vtkActor> still;
@@ -217,44 +217,29 @@ std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
   return still;
 }
 
-SceneActors makeSceneActors(const CollisionScene& scene, const TickDynamics* dynamics)
+SceneActors makeSceneActors(const std::shared_ptr<const CollisionScene>& scene,
+                            const TickDynamics* bodies,
+                            const std::shared_ptr<TissueDynamics>& tissue)
 {
   SceneActors actors;
-  std::vector<std::uint32_t> tissueObjects;
-  if (dynamics != nullptr)
+  std::vector<std::uint32_t> notStill;
+  if (bodies != nullptr)
   {
-    actors.bodyObjects = dynamics->movingObjects();
-    tissueObjects = dynamics->deformingObjects();
+    actors.bodyObjects = bodies->movingObjects();
+    notStill = actors.bodyObjects;
   }
-  std::vector<std::uint32_t> notStill = actors.bodyObjects;
-  notStill.insert(notStill.end(), tissueObjects.begin(), tissueObjects.end());
-  actors.still = shell::makeSceneSurfaceActor(scene, stillObjects(scene, notStill));
+  if (tissue != nullptr)
+  {
+    const std::vector<std::uint32_t> deforming = tissue->deformingObjects();
+    notStill.insert(notStill.end(), deforming.begin(), deforming.end());
+  }
+  actors.still = shell::makeSceneSurfaceActor(*scene, stillObjects(*scene, notStill));
   for (const std::uint32_t object : actors.bodyObjects)
   {
-    actors.bodies.push_back(shell::makeSceneSurfaceActor(scene, {object}));
+    actors.bodies.push_back(shell::makeSceneSurfaceActor(*scene, {object}));
   }
-  for (const std::uint32_t object : tissueObjects)
-  {
-    actors.tissues.emplace_back(scene, object);
-  }
+  actors.tissues = shell::makeTissueActors(tissue, scene);
   return actors;
-}
-
-// The tissues' actors moved to `surfaces` (TissueDynamics::latestSurfaces, or a lockstep run's
-// solids), tissue k's points onto the actor of its object.
-void placeTissueActors(SceneActors& actors, const TissueDynamics& tissue,
-                       const std::vector<std::vector<Vec3>>& surfaces)
-{
-  for (std::size_t k = 0; k < tissue.numTissues() && k < surfaces.size(); ++k)
-  {
-    for (shell::DeformingSurfaceActor& actor : actors.tissues)
-    {
-      if (actor.object() == tissue.object(k))
-      {
-        actor.movePoints(surfaces[k]);
-      }
-    }
-  }
 }
 
 void placeBodyActors(const SceneActors& actors, const BodyPoses& poses)
@@ -278,6 +263,15 @@ void placeBodyActors(const SceneActors& actors, const BodyPoses& poses)
       matrix->SetElement(r, 3, pose.translation[r]);
     }
     actors.bodies[static_cast<std::size_t>(at - actors.bodyObjects.begin())]->SetUserMatrix(matrix);
+  }
+}
+
+// The tissues' actors brought to the newest step the loops (or a lockstep run) handed over.
+void updateTissueActors(SceneActors& actors)
+{
+  for (shell::DeformingSurfaceActor& tissue : actors.tissues)
+  {
+    tissue.update();
   }
 }
 
@@ -571,7 +565,7 @@ void configureHaptics(vtkHapticRenderer* haptics, const SceneOptions& shared,
 struct ViewStage
 {
   ViewStage(const ViewOptions& options, const ViewInputs& inputs)
-    : surface(makeSceneActors(*inputs.scene, sceneDynamics(inputs).get()))
+    : surface(makeSceneActors(inputs.scene, inputs.bodies.get(), inputs.tissue))
     // The last 5 s of force, 0 to the clamp.
     , forcePlot(5.0, options.scene.maxForce)
   {
@@ -647,16 +641,8 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     {
       inputs.bodies->poses(poses);
     }
-    if (inputs.tissue != nullptr)
-    {
-      // The organ as the press has deformed it at --at, not as the scene file gives it.
-      std::vector<std::vector<Vec3>> solids;
-      for (std::size_t k = 0; k < inputs.tissue->numTissues(); ++k)
-      {
-        solids.push_back(inputs.tissue->solid(k).positions());
-      }
-      placeTissueActors(stage.surface, *inputs.tissue, solids);
-    }
+    // The organ as the press has deformed it at --at, not as the scene file gives it.
+    updateTissueActors(stage.surface);
   }
   else
   {
@@ -674,12 +660,8 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     servo = haptics->GetServoStatistics();
     poses = haptics->GetBodyPoses();
     haptics->Stop();
-    if (inputs.tissue != nullptr)
-    {
-      // The surfaces of the last step the loops took.
-      inputs.tissue->takeSurfaces();
-      placeTissueActors(stage.surface, *inputs.tissue, inputs.tissue->latestSurfaces().points);
-    }
+    // The surfaces of the last step the loops took.
+    updateTissueActors(stage.surface);
   }
   placeBodyActors(stage.surface, poses);
   const Aabb framed = stage.frame(options, inputs, state, poses);
@@ -718,8 +700,6 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
 struct WindowFrame
 {
   vtkHapticRenderer* haptics;
-  /// The scene's tissues (null without), whose newest surfaces each frame draws.
-  TissueDynamics* tissue;
   ViewStage* stage;
   vtkHapticMouseFinger* mouse;
   bool follow;
@@ -746,10 +726,7 @@ void onWindowTimer(vtkObject* caller, unsigned long, void* clientData, void*)
   const HapticState state = f->haptics->GetState();
   stage.representation->SetState(state);
   placeBodyActors(stage.surface, f->haptics->GetBodyPoses());
-  if (f->tissue != nullptr && f->tissue->takeSurfaces())
-  {
-    placeTissueActors(stage.surface, *f->tissue, f->tissue->latestSurfaces().points);
-  }
+  updateTissueActors(stage.surface);
   stage.forcePlot.add(state.time, norm(state.force));
   stage.forcePlot.update();
   stage.status->SetInput(statusText(state, f->haptics->GetServoStatistics(), f->mouse).c_str());
@@ -817,9 +794,8 @@ int runWindow(const ViewOptions& options, const ViewInputs& inputs, ViewStage& s
     // The scene framed, then brought to the distance asked for.
     stage.renderer->GetActiveCamera()->SetDistance(options.viewDistance);
   }
-  WindowFrame frame{haptics, inputs.tissue.get(),
-                    &stage,  mouse ? mouseFinger.Get() : nullptr,
-                    !mouse,  std::chrono::steady_clock::now()};
+  WindowFrame frame{haptics, &stage, mouse ? mouseFinger.Get() : nullptr, !mouse,
+                    std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> onTimer;
   onTimer->SetClientData(&frame);
   onTimer->SetCallback(onWindowTimer);

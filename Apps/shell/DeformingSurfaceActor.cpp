@@ -1,39 +1,30 @@
 #include "DeformingSurfaceActor.h"
 
 #include "SceneSurfaceActor.h"
-#include "VTK/ScenePolyData.h"
 
-#include <vtkDataArray.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
+#include <utility>
 
 namespace proxima::shell
 {
 
-DeformingSurfaceActor::DeformingSurfaceActor(const CollisionScene& scene, std::uint32_t object)
-  : m_object(object)
+DeformingSurfaceActor::DeformingSurfaceActor(std::shared_ptr<TissueDynamics> tissue,
+                                             std::shared_ptr<const CollisionScene> scene,
+                                             std::size_t index)
+  : m_source(vtkSmartPointer<vtkHapticTissue>::New())
 {
-  CollisionScene one; // shares the object's mesh, copies nothing
-  one.addObject(scene.objects.shared(object));
-  m_surface = proxima::vtk::scenePolyData(one);
-  m_actor = makeSurfaceActor(m_surface);
+  m_source->SetTissue(std::move(tissue), std::move(scene), static_cast<int>(index));
+  m_actor = makeSurfaceActor(m_source->GetOutputPort());
 }
 
-bool DeformingSurfaceActor::movePoints(const std::vector<Vec3>& points)
+std::vector<DeformingSurfaceActor> makeTissueActors(
+  const std::shared_ptr<TissueDynamics>& tissue, const std::shared_ptr<const CollisionScene>& scene)
 {
-  vtkPoints* drawn = m_surface->GetPoints();
-  if (drawn == nullptr || static_cast<std::size_t>(drawn->GetNumberOfPoints()) != points.size())
+  std::vector<DeformingSurfaceActor> actors;
+  for (std::size_t k = 0; tissue != nullptr && k < tissue->numTissues(); ++k)
   {
-    return false;
+    actors.emplace_back(tissue, scene, k);
   }
-  vtkDataArray* coordinates = drawn->GetData();
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    coordinates->SetTuple3(static_cast<vtkIdType>(i), points[i].x, points[i].y, points[i].z);
-  }
-  drawn->Modified();
-  m_surface->Modified();
-  return true;
+  return actors;
 }
 
 } // namespace proxima::shell

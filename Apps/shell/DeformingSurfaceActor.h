@@ -1,41 +1,43 @@
-// A tissue's surface drawn as it deforms (Documentation/Tissue.md): one object's triangles, as
-// the scene's surface actor draws them, whose points a window moves to where the solid's newest
-// step left them, in place, without building the actor again.
+// A tissue's surface drawn as it deforms (Documentation/Tissue.md): vtkHapticTissue, the
+// pipeline's source of a tissue's newest step, through the scene surface's normals, colour and
+// shading. A window calls update() once a frame; a lockstep run's picture calls it once, after
+// the run (the lockstep run hands over its steps the same way).
 #pragma once
 
-#include "Core/Vec3.h"
 #include "Proxy/CollisionScene.h"
+#include "Tissue/TissueDynamics.h"
+#include "VTK/vtkHapticTissue.h"
 
 #include <vtkActor.h>
 #include <vtkSmartPointer.h>
 
-#include <cstdint>
+#include <cstddef>
+#include <memory>
 #include <vector>
-
-class vtkPolyData;
 
 namespace proxima::shell
 {
 
-/// Object `object` of a scene, drawn in the scene surface's colour and shading, with points that
-/// move.
+/// Tissue `index` of `tissue` (objects of `scene`), drawn as its newest step left it.
 class DeformingSurfaceActor
 {
 public:
-  /// The object as `scene` has it (at rest).
-  DeformingSurfaceActor(const CollisionScene& scene, std::uint32_t object);
-  /// The scene object drawn.
-  std::uint32_t object() const { return m_object; }
+  DeformingSurfaceActor(std::shared_ptr<TissueDynamics> tissue,
+                        std::shared_ptr<const CollisionScene> scene, std::size_t index);
   /// The actor to add to a renderer.
   vtkActor* actor() const { return m_actor; }
-  /// Moves the surface's points to `points` (the object mesh's points, in order, in the scene's
-  /// frame; another count is ignored and returns false). Its normals follow at the next render.
-  bool movePoints(const std::vector<Vec3>& points);
+  /// Takes the newest step's surface, drawn at the next render; true when it is newer than the
+  /// one drawn. The drawing thread only.
+  bool update() { return m_source->TakeNewestStep(); }
 
 private:
-  std::uint32_t m_object;
-  vtkSmartPointer<vtkPolyData> m_surface;
+  vtkSmartPointer<vtkHapticTissue> m_source;
   vtkSmartPointer<vtkActor> m_actor;
 };
+
+/// One actor per tissue of `tissue` (null: none).
+std::vector<DeformingSurfaceActor> makeTissueActors(
+  const std::shared_ptr<TissueDynamics>& tissue,
+  const std::shared_ptr<const CollisionScene>& scene);
 
 } // namespace proxima::shell

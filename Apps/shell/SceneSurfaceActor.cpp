@@ -2,6 +2,7 @@
 
 #include "VTK/ScenePolyData.h"
 
+#include <vtkAlgorithmOutput.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
@@ -10,15 +11,11 @@
 namespace proxima::shell
 {
 
-vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene)
+namespace
 {
-  return makeSurfaceActor(proxima::vtk::scenePolyData(scene));
-}
-
-vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface)
+// The surface's look: sharp edges kept, smooth bends smooth, one warm tissue colour.
+vtkSmartPointer<vtkActor> surfaceActorOf(vtkPolyDataNormals* normals)
 {
-  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
-  normals->SetInputData(surface);
   normals->SetFeatureAngle(60.0);
   normals->SplittingOn();
   normals->ConsistencyOn();
@@ -30,6 +27,26 @@ vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface)
   actor->GetProperty()->SetColor(0.85, 0.8, 0.72);
   actor->GetProperty()->SetSpecular(0.2);
   return actor;
+}
+} // namespace
+
+vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene)
+{
+  return makeSurfaceActor(proxima::vtk::scenePolyData(scene));
+}
+
+vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface)
+{
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputData(surface);
+  return surfaceActorOf(normals);
+}
+
+vtkSmartPointer<vtkActor> makeSurfaceActor(vtkAlgorithmOutput* surface)
+{
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputConnection(surface);
+  return surfaceActorOf(normals);
 }
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,

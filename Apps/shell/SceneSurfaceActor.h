@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+class vtkAlgorithmOutput;
 class vtkPolyData;
 
 namespace proxima::shell
@@ -18,9 +19,10 @@ namespace proxima::shell
 
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene);
 
-/// The same for triangles given as vtkPolyData (the actor draws `surface` through a normals
-/// filter, so that moving its points and marking it modified moves the drawing).
+/// The same for triangles given as vtkPolyData.
 vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface);
+/// The same for a pipeline's output (vtkHapticTissue's: each update of the source redraws it).
+vtkSmartPointer<vtkActor> makeSurfaceActor(vtkAlgorithmOutput* surface);
 
 /// The same for some of the scene's objects only (a moving body's, which its own actor's
 /// transform then moves; or all the others), or null when `objects` is empty.

@@ -79,10 +79,10 @@ HapticWindow::HapticWindow(const HapticWindowSettings& settings, QWidget* parent
   {
     m_renderer->AddActor(surface);
   }
-  for (const std::uint32_t object : deforming)
+  m_tissueActors = makeTissueActors(m_settings.tissue, m_settings.scene);
+  for (const DeformingSurfaceActor& tissue : m_tissueActors)
   {
-    m_tissueActors.emplace_back(*m_settings.scene, object);
-    m_renderer->AddActor(m_tissueActors.back().actor());
+    m_renderer->AddActor(tissue.actor());
   }
   m_representation = vtkSmartPointer<vtkHapticStateRepresentation>::New();
   m_representation->SetForceScale(30.0 * m_settings.radius / m_settings.maxForce);
@@ -494,19 +494,9 @@ void HapticWindow::refresh()
     m_forcePlot.add(tick.time, norm(tick.force));
   }
   ticksArrived(m_ticks);
-  if (m_settings.tissue != nullptr && m_settings.tissue->takeSurfaces())
+  for (DeformingSurfaceActor& tissue : m_tissueActors)
   {
-    const TissueDynamics::Surfaces& surfaces = m_settings.tissue->latestSurfaces();
-    for (std::size_t k = 0; k < m_settings.tissue->numTissues() && k < surfaces.points.size(); ++k)
-    {
-      for (DeformingSurfaceActor& actor : m_tissueActors)
-      {
-        if (actor.object() == m_settings.tissue->object(k))
-        {
-          actor.movePoints(surfaces.points[k]);
-        }
-      }
-    }
+    tissue.update();
   }
   const HapticState state = m_haptics->GetState();
   m_representation->SetState(state);

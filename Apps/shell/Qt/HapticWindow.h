@@ -161,7 +161,7 @@ private:
   std::unique_ptr<HapticDevice> m_device;
   std::unique_ptr<RecordingDevice> m_recorder;
   std::string m_deviceSpec;
-  /// The tissues' surfaces, moved each frame to the newest step's.
+  /// The tissues' surfaces, each frame brought to the newest step's.
   std::vector<DeformingSurfaceActor> m_tissueActors;
   QTimer m_timer;
   QLabel* m_status = nullptr;
