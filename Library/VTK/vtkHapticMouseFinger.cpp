@@ -11,6 +11,7 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cstring>
 
 vtkStandardNewMacro(vtkHapticMouseFinger);
@@ -153,8 +154,25 @@ void vtkHapticMouseFinger::Aim()
     }
     hover = nearPoint + (farPoint - nearPoint) * first;
   }
+  // A tissue under the finger gives way, and the proxy sinks with it: a press measured from the
+  // proxy would move the finger deeper at every aim, pushing with a constant force until the
+  // tissue tore through. While every contact is on a deforming object and the cursor's ray meets
+  // the surface as the scene gave it, the press is measured from that surface at rest (the hover
+  // point), so that the wheel sets how deep the finger goes, as on a rigid surface.
+  bool touching = state.numContacts > 0;
+  if (touching && m_hovering)
+  {
+    const std::vector<std::uint32_t> deforming = m_haptics->GetDeformingObjects();
+    bool onTissueOnly = !deforming.empty();
+    for (int k = 0; k < state.numContacts && onTissueOnly; ++k)
+    {
+      onTissueOnly =
+        std::find(deforming.begin(), deforming.end(), state.contacts[k].object) != deforming.end();
+    }
+    touching = !onTissueOnly;
+  }
   const proxima::Vec3 aim = m_aimPlane.aim(nearPoint, farPoint - nearPoint, view, state.proxy,
-                                           state.numContacts > 0, m_hovering ? &hover : nullptr);
+                                           touching, m_hovering ? &hover : nullptr);
   m_device->aimAt(aim);
 }
 

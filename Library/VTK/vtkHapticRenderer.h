@@ -62,6 +62,12 @@ public:
   /// The newest scene snapshot (published, or waiting for Start); null before any. For the
   /// thread that sets scenes, as the snapshot is replaced there.
   std::shared_ptr<const proxima::CollisionScene> GetCollisionScene() const { return m_current; }
+  /// The scene objects that deform (a scene's tissues, given with SetCollisionScene); none
+  /// without.
+  std::vector<std::uint32_t> GetDeformingObjects() const
+  {
+    return m_bodies != nullptr ? m_bodies->deformingObjects() : std::vector<std::uint32_t>{};
+  }
 
   /// The device (not owned; must outlive the run), or a finger path played by a simulated device
   /// the renderer owns. Set one before Start, or between Stop and the next Start (a device

@@ -8,6 +8,9 @@
 #include "VtkTestSupport.h"
 
 #include "Runtime/PointerDevice.h"
+#include "Tissue/BoxTetMesh.h"
+#include "Tissue/TetBoundary.h"
+#include "Tissue/TissueDynamics.h"
 #include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
 
@@ -57,9 +60,10 @@ struct MouseRig
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   vtkNew<vtkHapticMouseFinger> mouse;
 
-  MouseRig()
+  explicit MouseRig(std::shared_ptr<const CollisionScene> scene = floorScene(),
+                    std::shared_ptr<TickDynamics> dynamics = nullptr)
   {
-    haptics->SetCollisionScene(floorScene());
+    haptics->SetCollisionScene(std::move(scene), std::move(dynamics));
     haptics->SetDevice(&device);
     haptics->SetProxyStart(0.01, 0.01, 0.05);
     haptics->SetProxyRadius(kRadius);
@@ -89,6 +93,34 @@ struct MouseRig
     interactor->InvokeEvent(event, nullptr);
   }
 };
+
+// A soft block (5 kPa, 4 x 4 x 2 cm of 5 mm cells, fixed along its base) with its top at z = 0,
+// where the floor is, and its surface.
+std::shared_ptr<TissueDynamics> softBlock(std::shared_ptr<const CollisionScene>& scene)
+{
+  const TetMesh tets = makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
+  TriangleMesh mesh;
+  MeshError error;
+  EXPECT_TRUE(mesh.build(boundarySoup(tets), error)) << error.message;
+  auto built = std::make_shared<CollisionScene>();
+  built->addObject(std::move(mesh));
+  scene = built;
+  TissueObject block;
+  block.tets = tets;
+  block.materials.assign(tets.tets.size(), ElasticMaterial{5000.0, 0.45});
+  block.settings.timeStep = 0.005;
+  block.settings.damping = 20.0;
+  for (std::uint32_t v = 0; v < tets.points.size(); ++v)
+  {
+    if (tets.points[v].z < -0.02 + 1e-9)
+    {
+      block.fixedVertices.push_back(v);
+    }
+  }
+  std::vector<TissueObject> tissues;
+  tissues.push_back(std::move(block));
+  return std::make_shared<TissueDynamics>(std::move(tissues), MouseRig::kStiffness, 1000.0);
+}
 
 TEST(MouseFinger, TheCursorHoversTheFingerOverTheSurfaceUnderIt)
 {
@@ -179,6 +211,47 @@ TEST(MouseFinger, ADragTurnsTheCameraAndLeavesTheFinger)
   rig.send(vtkCommand::MouseMoveEvent, 250, 220);
   EXPECT_NE(rig.device.aim(), aim);
   rig.haptics->Stop();
+}
+
+// On tissue the wheel sets how deep the finger goes, as on a rigid surface: pressed 4 notches
+// (4 mm) into the soft block, the finger stays 4 mm below the block's top as the scene gave it
+// while the block gives way under it, the proxy sinking into the dent and the force staying below
+// kp times the press. Measured from the sinking proxy, the press ran the finger deeper at every
+// frame, a constant force of kp times 4 mm pushing the block centimetres down.
+TEST(MouseFinger, OnTissueTheWheelSetsHowDeepTheFingerGoesNotTheForce)
+{
+  std::shared_ptr<const CollisionScene> scene;
+  std::shared_ptr<TissueDynamics> tissue = softBlock(scene);
+  MouseRig rig(scene, tissue);
+  ASSERT_TRUE(rig.haptics->Start()) << rig.haptics->GetStartMessage();
+  rig.send(vtkCommand::MouseMoveEvent, 200, 200);
+  ASSERT_TRUE(waitFor([&] {
+    rig.mouse->Update(0.0);
+    return rig.haptics->GetState().numContacts > 0;
+  }));
+  for (int notch = 0; notch < 4; ++notch)
+  {
+    rig.send(vtkCommand::MouseWheelForwardEvent, 200, 200);
+  }
+  const double press = 2.0 * MouseRig::kRadius;
+  ASSERT_DOUBLE_EQ(rig.mouse->GetDepth(), press);
+  // A second of the block under the press (200 steps of its solid), aimed again at every poll as
+  // the window's frames aim.
+  const double pressedAt = rig.haptics->GetState().time;
+  ASSERT_TRUE(waitFor([&] {
+    rig.mouse->Update(0.0);
+    return rig.haptics->GetState().time > pressedAt + 1.0;
+  }));
+  rig.mouse->Update(0.0);
+  const HapticState state = rig.haptics->GetState();
+  rig.haptics->Stop();
+  // The finger where the press puts it below the top at rest (the cursor's hover point, z = r).
+  EXPECT_NEAR(state.finger.z, MouseRig::kRadius - press, 1e-9);
+  // The block gave way: the proxy sank below where it touched the top at rest, and the force is
+  // below kp times the press, yet the block pushes back.
+  EXPECT_LT(state.proxy.z, MouseRig::kRadius - 0.0005);
+  EXPECT_LT(state.force.z, MouseRig::kStiffness * press);
+  EXPECT_GT(state.force.z, 0.0);
 }
 
 } // namespace
