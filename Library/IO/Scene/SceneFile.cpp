@@ -87,6 +87,20 @@ public:
     {
       scene.objects.push_back(readObject(objects[i], element("objects", i)));
     }
+    if (scene.hasBodies() && scene.hasTissue())
+    {
+      // The runners step one dynamics per scene: the lever of a scene with a kidney beside it
+      // stood still under the finger's press.
+      for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      {
+        if (scene.objects[i].hasTissue)
+        {
+          fail(child(element("objects", i), "tissue"),
+               "a scene has bodies or tissue, not both yet (this one has bodies too): no "
+               "runner steps rigid bodies and elastic solids together");
+        }
+      }
+    }
     if (m_mjcf && !scene.hasBodies())
     {
       fail("mjcf", "no object binds a body of it (give an object \"body\": {\"name\": ...})");

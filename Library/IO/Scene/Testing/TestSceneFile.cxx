@@ -321,6 +321,16 @@ TEST_F(SceneFile, BadTissueIsRefusedWhereItIs)
                           "tissue": {"youngs_modulus": 3000, "tet_size": 0.005, )" +
                         fixed + "}}]}"),
                 "objects[0].tissue: an object is either a rigid body or tissue, not both");
+  // Nor a body and tissue on two objects: no runner steps both (a lever beside a kidney stood
+  // still under the finger's press).
+  expectRefused(write("bodies-and-tissue.json",
+                      R"({"version": 3, "objects": [{"mesh": "m.obj",
+                          "body": {"joint": {"type": "free"}, "density": 1000}},
+                          {"mesh": "m.obj", "tissue": {"youngs_modulus": 3000,
+                          "tet_size": 0.005, )" +
+                        fixed + "}}]}"),
+                "objects[1].tissue: a scene has bodies or tissue, not both yet (this one has "
+                "bodies too): no runner steps rigid bodies and elastic solids together");
   expectRefused(write("shaded.json",
                       R"({"version": 3, "objects": [{"mesh": "m.obj",
                           "material": {"shading": "on"},
