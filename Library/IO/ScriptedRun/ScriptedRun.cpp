@@ -207,17 +207,11 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded)
 {
-  // A scene has bodies or tissue, never both (the scene file refuses an object with both; a
-  // scene of several objects is refused below when it mixes them).
+  // A scene has bodies or tissue, never both (the scene file refuses a scene with both).
   std::shared_ptr<TickDynamics> tissue =
     buildSceneTissue(loaded, settings.stiffness, settings.rate);
   if (tissue != nullptr)
   {
-    if (loaded.description.hasBodies())
-    {
-      throw InputError(loaded.description.path,
-                       "the scene has both bodies and tissue, which no runner steps together yet");
-    }
     return tissue;
   }
 #ifdef PROXIMA_WITH_DYNAMICS

@@ -155,7 +155,7 @@ std::unique_ptr<BodyCoupling> sceneBodies(const ScriptedRunSettings& settings,
                                           const LoadedScene& loaded);
 /// The scene's bodies, or its tissues (coupled as buildSceneTissue does), as the runners see them
 /// (for HapticSession::setDynamics, ThreadedRuntime::publishScene and the like), or null. Throws
-/// InputError as sceneBodies does, or for a scene with both bodies and tissue.
+/// InputError as sceneBodies does.
 std::shared_ptr<TickDynamics> sceneDynamics(const ScriptedRunSettings& settings,
                                             const LoadedScene& loaded);
 
