@@ -41,6 +41,12 @@ shared_only = sys.argv[4:] == ["--shared"]
 proxima = os.path.join(build, "bin", "proxima")
 meshes, paths = os.path.join(test_data, "meshes"), os.path.join(test_data, "paths")
 work = tempfile.mkdtemp(prefix="proxima-remote-test-")
+# The servers' run folders go to a folder of this test's own (TMPDIR, which the servers started
+# here inherit), so that another test's server at work at the same time (proxima.live-server's
+# scene upload, under ctest -j) is not taken for one of these runs' leftovers.
+SERVER_TMP = os.path.join(work, "tmp")
+os.makedirs(SERVER_TMP)
+os.environ["TMPDIR"] = SERVER_TMP
 TIMED = ("solve_ns", "read_ms", "tree_build_ms", "run_ms", "dynamics_ns")
 
 
@@ -127,7 +133,7 @@ def untimed(summary):
 
 
 def leftovers():
-    return set(glob.glob(os.path.join(tempfile.gettempdir(), "proxima-remote-??????")))
+    return set(glob.glob(os.path.join(SERVER_TMP, "proxima-remote-??????")))
 
 
 def compare_with_local(name, options, bodies=False):
