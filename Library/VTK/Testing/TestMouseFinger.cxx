@@ -248,10 +248,14 @@ TEST(MouseFinger, OnTissueTheWheelSetsHowDeepTheFingerGoesNotTheForce)
   // The finger where the press puts it below the top at rest (the cursor's hover point, z = r).
   EXPECT_NEAR(state.finger.z, MouseRig::kRadius - press, 1e-9);
   // The block gave way: the proxy sank below where it touched the top at rest, and the force is
-  // below kp times the press, yet the block pushes back.
+  // below kp times the press, yet the block pushes back. (Unless the servo faded a stale proxy's
+  // force: a sanitizer build steps the block in 7-19 ms, past the 5 ms watchdog.)
   EXPECT_LT(state.proxy.z, MouseRig::kRadius - 0.0005);
   EXPECT_LT(state.force.z, MouseRig::kStiffness * press);
-  EXPECT_GT(state.force.z, 0.0);
+  if (!state.conditions.has(TickCondition::forceFading))
+  {
+    EXPECT_GT(state.force.z, 0.0);
+  }
 }
 
 } // namespace
