@@ -7,26 +7,17 @@
 
 namespace proxima
 {
-TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object,
-                             double stiffness)
-  : m_solid(solid)
-  , m_object(object)
-  , m_stiffness(stiffness)
+namespace
 {
-  const std::size_t count = solid.positions().size();
-  if (solver.placedMesh(object).numPoints() != count)
+const CollisionScene& sceneOf(const ProxySolver& solver)
+{
+  if (solver.scene() == nullptr)
   {
-    throw std::invalid_argument("TissueContact: the object's mesh has " +
-                                std::to_string(solver.placedMesh(object).numPoints()) +
-                                " points, the solid " + std::to_string(count));
+    throw std::invalid_argument("TissueContact: the solver has no scene");
   }
-  if (!solver.isDeforming(object))
-  {
-    solver.setDeformingObjects({object});
-  }
-  allocate();
-  bind(solver);
+  return *solver.scene();
 }
+} // namespace
 
 TissueContact::TissueContact(ElasticSolid& solid, const CollisionScene& scene, std::uint32_t object,
                              double stiffness)
@@ -46,17 +37,22 @@ TissueContact::TissueContact(ElasticSolid& solid, const CollisionScene& scene, s
                                 std::to_string(scene.objects[object].mesh.numPoints()) +
                                 " points, the solid " + std::to_string(count));
   }
-  allocate();
-}
-
-void TissueContact::allocate()
-{
-  const std::size_t count = m_solid.positions().size();
   m_footprint.resize(kMaxFootprint);
   m_scratch = std::make_unique<SphereTreeScratch>();
   m_forceSum.assign(count, Vec3{});
   m_isLoaded.assign(count, 0);
   m_loaded.reserve(count);
+}
+
+TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object,
+                             double stiffness)
+  : TissueContact(solid, sceneOf(solver), object, stiffness)
+{
+  if (!solver.isDeforming(object))
+  {
+    solver.setDeformingObjects({object});
+  }
+  bind(solver);
 }
 
 bool TissueContact::bind(ProxySolver& solver)

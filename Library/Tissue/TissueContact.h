@@ -102,8 +102,6 @@ private:
   /// toward it become springs of the next step.
   std::vector<ContactSpring> m_approaching = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numApproaching = 0;
-  /// Sizes the buffers for the solid's points (the constructors' shared half).
-  void allocate();
   /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
   /// sum to `total`.
   void noteApproach(const Vec3& proxy, std::uint32_t count, double total);
