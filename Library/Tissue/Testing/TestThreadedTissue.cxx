@@ -11,8 +11,7 @@
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/SimulatedDevice.h"
 #include "Runtime/ThreadedRuntime.h"
-#include "Tissue/BoxTetMesh.h"
-#include "Tissue/TetBoundary.h"
+#include "Tissue/Testing/SoftBlock.h"
 
 #include <gtest/gtest.h>
 
@@ -33,41 +32,17 @@ using namespace std::chrono_literals;
 constexpr double kRate = 1000.0;
 constexpr double kRadius = 0.005;
 
-// A block of 4 x 4 x 2 cm (cells of 5 mm) with its top at z = 0: TestTissueContact's.
-TetMesh blockTets()
-{
-  return makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
-}
+// The block of 8 x 8 x 4 cells of 5 mm, TestTissueContact's, kp = 1000 N/m at 1 kHz.
+constexpr int kCellsAcross = 8;
 
 std::shared_ptr<const CollisionScene> blockScene()
 {
-  auto scene = std::make_shared<CollisionScene>();
-  TriangleMesh surface;
-  MeshError error;
-  EXPECT_TRUE(surface.build(boundarySoup(blockTets()), error)) << error.message;
-  scene->addObject(std::move(surface));
-  return scene;
+  return testing_support::softBlockScene(kCellsAcross);
 }
 
-// 5 kPa, fixed along its base, stepping at 200 Hz (every 5 ticks).
 std::shared_ptr<TissueDynamics> softBlock()
 {
-  TissueObject tissue;
-  tissue.object = 0;
-  tissue.tets = blockTets();
-  tissue.materials.assign(tissue.tets.tets.size(), ElasticMaterial{5000.0, 0.45});
-  tissue.settings.timeStep = 0.005;
-  tissue.settings.damping = 20.0;
-  for (std::uint32_t v = 0; v < tissue.tets.points.size(); ++v)
-  {
-    if (tissue.tets.points[v].z < -0.02 + 1e-9)
-    {
-      tissue.fixedVertices.push_back(v);
-    }
-  }
-  std::vector<TissueObject> tissues;
-  tissues.push_back(std::move(tissue));
-  return std::make_shared<TissueDynamics>(std::move(tissues), ServoParameters{}.stiffness, kRate);
+  return testing_support::softBlockDynamics(kCellsAcross, ServoParameters{}.stiffness, kRate);
 }
 
 // From 1 cm above the top's centre down to 3 mm below it in 0.3 s, then held for 0.3 s.

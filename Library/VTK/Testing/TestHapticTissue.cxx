@@ -6,8 +6,7 @@
 
 #include "Runtime/LockstepRuntime.h"
 #include "Runtime/SimulatedDevice.h"
-#include "Tissue/BoxTetMesh.h"
-#include "Tissue/TetBoundary.h"
+#include "Tissue/Testing/SoftBlock.h"
 
 #include <vtkCellData.h>
 #include <vtkNew.h>
@@ -26,33 +25,13 @@ namespace
 {
 constexpr double kRate = 1000.0;
 
-TetMesh blockTets()
-{
-  return makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 6, 6, 3);
-}
+// The soft block of 6 x 6 x 3 cells, kp = 1000 N/m at 1 kHz.
+constexpr int kCellsAcross = 6;
 
 TEST(HapticTissue, DrawsTheObjectOverTheNewestStepsPoints)
 {
-  auto scene = std::make_shared<CollisionScene>();
-  TriangleMesh surface;
-  MeshError error;
-  ASSERT_TRUE(surface.build(boundarySoup(blockTets()), error)) << error.message;
-  scene->addObject(std::move(surface));
-  TissueObject block;
-  block.tets = blockTets();
-  block.materials.assign(block.tets.tets.size(), ElasticMaterial{5000.0, 0.45});
-  block.settings.timeStep = 0.005;
-  block.settings.damping = 20.0;
-  for (std::uint32_t v = 0; v < block.tets.points.size(); ++v)
-  {
-    if (block.tets.points[v].z < -0.02 + 1e-9)
-    {
-      block.fixedVertices.push_back(v);
-    }
-  }
-  std::vector<TissueObject> tissues;
-  tissues.push_back(std::move(block));
-  auto tissue = std::make_shared<TissueDynamics>(std::move(tissues), 1000.0, kRate);
+  const auto scene = testing_support::softBlockScene(kCellsAcross);
+  auto tissue = testing_support::softBlockDynamics(kCellsAcross, 1000.0, kRate);
 
   vtkNew<vtkHapticTissue> source;
   source->SetTissue(tissue, scene, 0);

@@ -8,8 +8,7 @@
 #include "VtkTestSupport.h"
 
 #include "Runtime/PointerDevice.h"
-#include "Tissue/BoxTetMesh.h"
-#include "Tissue/TetBoundary.h"
+#include "Tissue/Testing/SoftBlock.h"
 #include "Tissue/TissueDynamics.h"
 #include "VTK/vtkHapticMouseFinger.h"
 #include "VTK/vtkHapticRenderer.h"
@@ -94,32 +93,13 @@ struct MouseRig
   }
 };
 
-// A soft block (5 kPa, 4 x 4 x 2 cm of 5 mm cells, fixed along its base) with its top at z = 0,
+// The soft block (5 kPa, 4 x 4 x 2 cm of 5 mm cells, fixed along its base) with its top at z = 0,
 // where the floor is, and its surface.
 std::shared_ptr<TissueDynamics> softBlock(std::shared_ptr<const CollisionScene>& scene)
 {
-  const TetMesh tets = makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
-  TriangleMesh mesh;
-  MeshError error;
-  EXPECT_TRUE(mesh.build(boundarySoup(tets), error)) << error.message;
-  auto built = std::make_shared<CollisionScene>();
-  built->addObject(std::move(mesh));
-  scene = built;
-  TissueObject block;
-  block.tets = tets;
-  block.materials.assign(tets.tets.size(), ElasticMaterial{5000.0, 0.45});
-  block.settings.timeStep = 0.005;
-  block.settings.damping = 20.0;
-  for (std::uint32_t v = 0; v < tets.points.size(); ++v)
-  {
-    if (tets.points[v].z < -0.02 + 1e-9)
-    {
-      block.fixedVertices.push_back(v);
-    }
-  }
-  std::vector<TissueObject> tissues;
-  tissues.push_back(std::move(block));
-  return std::make_shared<TissueDynamics>(std::move(tissues), MouseRig::kStiffness, 1000.0);
+  constexpr int kCellsAcross = 8;
+  scene = testing_support::softBlockScene(kCellsAcross);
+  return testing_support::softBlockDynamics(kCellsAcross, MouseRig::kStiffness, 1000.0);
 }
 
 TEST(MouseFinger, TheCursorHoversTheFingerOverTheSurfaceUnderIt)
