@@ -202,21 +202,6 @@ struct SceneActors
   std::vector<shell::DeformingSurfaceActor> tissues;
 };
 
-// The objects of `scene` that are not bodies: those the still actor draws.
-std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
-                                        const std::vector<std::uint32_t>& bodyObjects)
-{
-  std::vector<std::uint32_t> still;
-  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
-  {
-    if (std::find(bodyObjects.begin(), bodyObjects.end(), object) == bodyObjects.end())
-    {
-      still.push_back(object);
-    }
-  }
-  return still;
-}
-
 SceneActors makeSceneActors(const std::shared_ptr<const CollisionScene>& scene,
                             const TickDynamics* bodies,
                             const std::shared_ptr<TissueDynamics>& tissue)
@@ -233,7 +218,7 @@ SceneActors makeSceneActors(const std::shared_ptr<const CollisionScene>& scene,
     const std::vector<std::uint32_t> deforming = tissue->deformingObjects();
     notStill.insert(notStill.end(), deforming.begin(), deforming.end());
   }
-  actors.still = shell::makeSceneSurfaceActor(*scene, stillObjects(*scene, notStill));
+  actors.still = shell::makeSceneSurfaceActor(*scene, shell::stillObjects(*scene, notStill));
   for (const std::uint32_t object : actors.bodyObjects)
   {
     actors.bodies.push_back(shell::makeSceneSurfaceActor(*scene, {object}));
@@ -531,7 +516,7 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
 
 // The scene's bodies or its tissues (a scene has one kind or none): what the loops step after
 // each proxy update.
-std::shared_ptr<TickDynamics> sceneDynamics(const ViewInputs& inputs)
+std::shared_ptr<TickDynamics> dynamicsOfInputs(const ViewInputs& inputs)
 {
   if (inputs.tissue != nullptr)
   {
@@ -544,7 +529,7 @@ std::shared_ptr<TickDynamics> sceneDynamics(const ViewInputs& inputs)
 void configureHaptics(vtkHapticRenderer* haptics, const SceneOptions& shared,
                       const ViewInputs& inputs, HapticDevice& device)
 {
-  haptics->SetCollisionScene(inputs.scene, sceneDynamics(inputs));
+  haptics->SetCollisionScene(inputs.scene, dynamicsOfInputs(inputs));
   haptics->SetDevice(&device);
   const Vec3& start = inputs.fingerPath.positions.front();
   haptics->SetProxyStart(start.x, start.y, start.z);
@@ -635,7 +620,7 @@ int takeScreenshot(const ViewOptions& options, ViewInputs& inputs, ViewStage& st
     // picture every time. It takes the real-time default budget (lockstepStateAt), so that it
     // shows the tick the window would show.
     state = lockstepStateAt(shared, *inputs.scene, shifted, inputs.at, device.device(),
-                            stage.forcePlot, sceneDynamics(inputs).get());
+                            stage.forcePlot, dynamicsOfInputs(inputs).get());
     servo.rate = shared.rate;
     if (inputs.bodies != nullptr)
     {

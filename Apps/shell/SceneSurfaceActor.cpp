@@ -8,6 +8,8 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 
+#include <algorithm>
+
 namespace proxima::shell
 {
 
@@ -62,6 +64,20 @@ vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,
     some.addObject(scene.objects.shared(object));
   }
   return makeSceneSurfaceActor(some);
+}
+
+std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
+                                        const std::vector<std::uint32_t>& notStill)
+{
+  std::vector<std::uint32_t> still;
+  for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+  {
+    if (std::find(notStill.begin(), notStill.end(), object) == notStill.end())
+    {
+      still.push_back(object);
+    }
+  }
+  return still;
 }
 
 } // namespace proxima::shell

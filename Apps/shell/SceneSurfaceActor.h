@@ -29,4 +29,9 @@ vtkSmartPointer<vtkActor> makeSurfaceActor(vtkAlgorithmOutput* surface);
 vtkSmartPointer<vtkActor> makeSceneSurfaceActor(const CollisionScene& scene,
                                                 const std::vector<std::uint32_t>& objects);
 
+/// The objects of `scene` not among `notStill` (bodies that move, tissues that deform), in
+/// order: those one still actor draws while the others get actors of their own.
+std::vector<std::uint32_t> stillObjects(const CollisionScene& scene,
+                                        const std::vector<std::uint32_t>& notStill);
+
 } // namespace proxima::shell

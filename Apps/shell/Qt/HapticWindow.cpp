@@ -31,7 +31,6 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -64,17 +63,9 @@ HapticWindow::HapticWindow(const HapticWindowSettings& settings, QWidget* parent
 
   m_renderer = vtkSmartPointer<vtkRenderer>::New();
   // The objects that stay put in one actor; each tissue in its own, whose points its steps move.
-  std::vector<std::uint32_t> still;
-  const std::vector<std::uint32_t> deforming = m_settings.tissue != nullptr
-                                                 ? m_settings.tissue->deformingObjects()
-                                                 : std::vector<std::uint32_t>{};
-  for (std::uint32_t object = 0; object < m_settings.scene->objects.size(); ++object)
-  {
-    if (std::find(deforming.begin(), deforming.end(), object) == deforming.end())
-    {
-      still.push_back(object);
-    }
-  }
+  const std::vector<std::uint32_t> still = stillObjects(
+    *m_settings.scene, m_settings.tissue != nullptr ? m_settings.tissue->deformingObjects()
+                                                    : std::vector<std::uint32_t>{});
   if (vtkSmartPointer<vtkActor> surface = makeSceneSurfaceActor(*m_settings.scene, still))
   {
     m_renderer->AddActor(surface);
