@@ -49,6 +49,13 @@ def screenshot(proxima, source, out_dir, name, at, device=()):
     return (blue > 0.5) & (blue - green > 0.25) & (blue - red > 0.35), force
 
 
+def run(proxima, source, extra):
+    """`proxima run` of the kidney press with `extra` arguments; fails the check if it fails."""
+    result = subprocess.run([proxima, "run"] + RUN + extra, capture_output=True, text=True,
+                            timeout=300, cwd=source)
+    assert result.returncode == 0, result.stderr
+
+
 def rows_per_column(mask):
     rows = numpy.where(mask.any(axis=1))[0]
     columns = numpy.where(mask.any(axis=0))[0]
@@ -71,11 +78,8 @@ def main():
 
     # The path as a device recording (what a replay plays), from a lockstep run of it.
     recording = os.path.join(out_dir, "kidney-device.csv")
-    result = subprocess.run([proxima, "run"] + RUN +
-                            ["--out", os.path.join(out_dir, "kidney-recorded.csv"),
-                             "--record-device", recording],
-                            capture_output=True, text=True, timeout=300, cwd=source)
-    assert result.returncode == 0, result.stderr
+    run(proxima, source, ["--out", os.path.join(out_dir, "kidney-recorded.csv"),
+                          "--record-device", recording])
     live, _ = screenshot(proxima, source, out_dir, "kidney-held-live", HELD,
                          ["--device", "replay:" + recording])
     live_shape = rows_per_column(live)
@@ -86,9 +90,7 @@ def main():
                         "threaded runtime's steps handed over was not drawn")
 
     trace = os.path.join(out_dir, "kidney-run.csv")
-    result = subprocess.run([proxima, "run"] + RUN + ["--tick-budget", "default", "--out", trace],
-                            capture_output=True, text=True, timeout=300, cwd=source)
-    assert result.returncode == 0, result.stderr
+    run(proxima, source, ["--tick-budget", "default", "--out", trace])
     with open(trace, newline="") as rows:
         for row in csv.DictReader(rows):
             if abs(float(row["t"]) - HELD) < 1e-9:
