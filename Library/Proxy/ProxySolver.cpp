@@ -204,6 +204,7 @@ void ProxySolver::followMovingObjects(ProxyTickResult& result)
   }
   if (moved)
   {
+    ++m_surfaceChanges;
     m_planesValid = false;
     result.proxy = m_proxy;
   }
@@ -321,6 +322,7 @@ bool ProxySolver::followDeformingObjects(ProxyTickResult& result)
   }
   if (moved)
   {
+    ++m_surfaceChanges;
     m_planesValid = false;
     result.proxy = m_proxy;
     if (pushed)

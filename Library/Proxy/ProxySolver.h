@@ -210,6 +210,9 @@ public:
   {
     return m_deforming != nullptr && !m_deforming->entries.empty();
   }
+  /// How many updates have moved deforming objects to new points (setObjectPoints): a counter
+  /// that tells the servo a tissue's surface has just changed.
+  std::uint64_t surfaceChanges() const { return m_surfaceChanges; }
   /// True when scene object `object` is one of the deforming objects.
   bool isDeforming(std::uint32_t object) const
   {
@@ -377,6 +380,7 @@ private:
   std::shared_ptr<MovingObjectSet> m_ownedMoving;
   /// The deforming objects (null: none), shared with copies like the moving objects.
   std::shared_ptr<DeformingObjectSet> m_deforming;
+  std::uint64_t m_surfaceChanges = 0;
   double m_skin = 0.0;
   Vec3 m_proxy;
   SphereTreeScratch m_scratch;

@@ -48,6 +48,9 @@ struct ContactSnapshot
   /// How far the spring presses into this plane (m; the goal solver's multiplier): the contacts
   /// share the force on the finger in proportion to it, and a moving body feels its share.
   double depth = 0.0;
+  /// True when the object deforms (a tissue): the servo renders its local model
+  /// (LocalContactModel.h) between the tissue's steps.
+  bool deforms = false;
 };
 
 /// What one haptic tick did: the proxy step's result, the force step's, and the conditions the
@@ -84,6 +87,9 @@ struct HapticState
   std::int64_t dynamicsNanoseconds = 0;
   /// Version of the scene the proxy step ran on (ThreadedRuntime::publishScene).
   std::uint64_t sceneVersion = 0;
+  /// How many times the solver's deforming objects have moved (ProxySolver::surfaceChanges): a
+  /// new value is the first tick on a surface a tissue's step has just left.
+  std::uint64_t surfaceChanges = 0;
   /// Seconds between this tick and the finger sample the proxy was computed from: 0 in
   /// lockstep, about one period in the threaded runtime, more when the proxy loop stalls.
   double proxyAge = 0.0;

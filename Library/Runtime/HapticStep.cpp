@@ -35,7 +35,9 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
     contact.staticFriction = plane.staticFriction;
     contact.dynamicFriction = plane.dynamicFriction;
     contact.depth = plane.depth;
+    contact.deforms = solver.isDeforming(plane.object);
   }
+  state.surfaceChanges = solver.surfaceChanges();
   state.contactObject = result.numContacts > 0 ? static_cast<int>(result.contacts[0].object) : -1;
   state.iterations = result.iterations;
   state.trianglesTested = result.queries.trianglesTested;

@@ -51,6 +51,7 @@ void ServoForce::watchForSceneChanges(double time, const HapticState& state)
   if (m_sceneSeen && state.sceneVersion != m_sceneVersion)
   {
     m_rateLimitUntil = time + m_parameters.sceneChangeWindow;
+    m_localModel.reset();
   }
   m_sceneSeen = true;
   m_sceneVersion = state.sceneVersion;
@@ -101,7 +102,10 @@ ServoForce::SpringForce ServoForce::springForce(const TickInput& input, double g
   // A stiffness map at the contact scales kp there (1 elsewhere): the spring stays continuous,
   // since proxy and finger coincide out of contact.
   spring.stretch = state.proxy - input.sample.position;
-  spring.force = spring.stretch * (m_parameters.stiffness * state.stiffnessScale);
+  const double stiffness = m_parameters.stiffness * state.stiffnessScale;
+  spring.force = spring.stretch * stiffness;
+  // On tissue, between its steps: the contact's local model (the spring itself elsewhere).
+  spring.force = m_localModel.force(state, input.sample.position, stiffness, spring.force);
   if (m_gain < 1.0)
   {
     // Fading back in after a fault.

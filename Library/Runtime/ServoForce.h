@@ -10,6 +10,7 @@
 
 #include "Runtime/HapticDevice.h"
 #include "Runtime/HapticState.h"
+#include "Runtime/LocalContactModel.h"
 #include "Runtime/ServoParameters.h"
 
 #include <cstdint>
@@ -39,6 +40,8 @@ public:
   const Vec3& lastForce() const { return m_lastForce; }
   /// 1 when the spring force is rendered in full, 0 when faded out.
   double gain() const { return m_gain; }
+  /// The local model of a contact on deforming tissue, rendered between the tissue's steps.
+  const LocalContactModel& localModel() const { return m_localModel; }
 
 private:
   /// The force before the clamp and the rate limit: the spring's, or a fading or held one.
@@ -79,6 +82,7 @@ private:
   std::uint64_t m_sceneVersion = 0;
   bool m_sceneSeen = false;
   double m_rateLimitUntil = -1.0;
+  LocalContactModel m_localModel;
 };
 
 } // namespace proxima
