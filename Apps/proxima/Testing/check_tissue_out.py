@@ -4,8 +4,9 @@ summary, which are computed apart from it:
 - the header of Documentation/Tissue.md, one row per tick, in order, for object 0;
 - a row is `touched` exactly when the trace's tick touches object 0;
 - on a tick with one contact plane whose force was not clamped, the spring's press on the tissue
-  (from the contact's depth, kp mu) has the magnitude of the force the servo rendered (from the
-  proxy and the finger, kp |proxy - finger|);
+  (from the contact's depth, kp mu) has the magnitude of the spring's force from the trace's
+  proxy and finger, kp |proxy - finger| (what the servo renders at the solid's steps; between
+  them it renders its local model, check_tissue_servo_model.py);
 - the tissue gave way while pressed (indentation and displacement above `min_depth`), and is
   back near rest at the end (displacement under a tenth of the deepest);
 - the summary's deepest indentation is the column's largest, and its displacement at the end
@@ -50,7 +51,8 @@ def main():
         assert touched == on_tissue, (row, tick)
         deepest = max(deepest, indentation)
         if int(tick["contacts"]) == 1 and on_tissue:
-            rendered = math.sqrt(sum(float(tick["force_" + a]) ** 2 for a in "xyz"))
+            rendered = summary["stiffness_N_per_m"] * math.sqrt(sum(
+                (float(tick["proxy_" + a]) - float(tick["finger_" + a])) ** 2 for a in "xyz"))
             if rendered > 1e-3 and int(tick["flags"]) & FORCE_SHAPED == 0:
                 worst = max(worst, abs(force - rendered) / rendered)
                 compared += 1
