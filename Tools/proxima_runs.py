@@ -1,7 +1,9 @@
 """Shared by the figure scripts in Tools/: run the proxima command line, write finger paths and
 read trace files (DESIGN.md section 3)."""
 import csv
+import os
 import subprocess
+import tempfile
 
 import matplotlib
 
@@ -30,3 +32,19 @@ def read_trace(path):
                                                         "object", "flags")
                                else float(value)) for key, value in row.items()})
     return rows
+
+
+def write_atomically(path, text=None, figure=None):
+    """Writes a file through a temporary one beside it, so that a failed write leaves nothing."""
+    folder = os.path.dirname(path)
+    handle, temporary = tempfile.mkstemp(dir=folder, suffix=os.path.splitext(path)[1])
+    try:
+        with os.fdopen(handle, "w") as f:
+            if text is not None:
+                f.write(text)
+        if figure is not None:
+            figure.savefig(temporary, dpi=110)
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise

@@ -11,10 +11,9 @@ import os
 import platform
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import proxima_runs  # noqa: E402,F401  (sets the Agg backend)
+import proxima_runs  # noqa: E402  (sets the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -32,22 +31,6 @@ RUNS = (
 
 # A depth whose force changed by more than this fraction over its last 20 ticks did not settle.
 SETTLED = 0.01
-
-
-def write_atomically(path, text=None, figure=None):
-    """Writes a file through a temporary one beside it, so that a failed write leaves nothing."""
-    folder = os.path.dirname(path)
-    handle, temporary = tempfile.mkstemp(dir=folder, suffix=os.path.splitext(path)[1])
-    try:
-        with os.fdopen(handle, "w") as f:
-            if text is not None:
-                f.write(text)
-        if figure is not None:
-            figure.savefig(temporary, dpi=110)
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
 
 
 def main():
@@ -81,7 +64,8 @@ def main():
             "step's depth through Hertz's law, so a stiffer block stops shallower).\n"
             "A depth is not settled when the rendered force changed by more than %g %% of itself "
             "from one tick to the next in the last 20 ticks of its hold.\n" % (100 * SETTLED))
-    write_atomically(os.path.join(ROOT, "Documentation", "TissueHertzTable.md"), text=text)
+    proxima_runs.write_atomically(os.path.join(ROOT, "Documentation", "TissueHertzTable.md"),
+                                  text=text)
 
     figure, axis = plt.subplots(figsize=(7.5, 4.5))
     for r in results:
@@ -105,8 +89,8 @@ def main():
     figure.text(0.01, 0.01, where + "  |  /usr/bin/python3 Tools/tissue_hertz.py", fontsize=7,
                 color="grey")
     figure.tight_layout(rect=(0, 0.03, 1, 1))
-    write_atomically(os.path.join(ROOT, "Documentation", "Figures", "tissue_hertz.png"),
-                     figure=figure)
+    proxima_runs.write_atomically(
+        os.path.join(ROOT, "Documentation", "Figures", "tissue_hertz.png"), figure=figure)
 
 
 if __name__ == "__main__":
