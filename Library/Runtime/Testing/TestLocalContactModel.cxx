@@ -15,7 +15,9 @@
 
 namespace proxima
 {
-namespace
+// Named, so that the unity build's batch that also holds TestServoForce.cxx keeps the two files'
+// constants apart.
+namespace local_contact_model_tests
 {
 constexpr double kPeriod = 0.001;
 constexpr double kSpring = 1000.0; // kp, N/m
@@ -241,5 +243,5 @@ TEST(LocalContactModel, ANewSceneForgetsTheMeasuredStiffness)
   EXPECT_EQ(stage.localModel().stiffness(), kSpring);
 }
 
-} // namespace
+} // namespace local_contact_model_tests
 } // namespace proxima
