@@ -2,20 +2,16 @@
 
 #include "Proxy/ProxyStart.h"
 #include "Runtime/DeadlineClock.h"
+#include "Runtime/FutexWord.h"
 #include "Runtime/HapticStep.h"
 #include "Runtime/ServoRate.h"
 #include "Runtime/SnapshotChannel.h"
 #include "Runtime/StateStream.h"
 
-#include <linux/futex.h>
 #include <sys/prctl.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 #include <atomic>
-#include <climits>
 #include <cmath>
-#include <ctime>
 #include <stdexcept>
 #include <thread>
 
@@ -43,33 +39,6 @@ struct SceneSlot
   std::unique_ptr<TickDynamics::SceneBinding> binding;
 };
 
-// The scene event is a futex on the atomic's own storage: waking its sleepers is one system call,
-// with no lock and no allocation, so the proxy thread may raise it; and a sleeper that read the
-// count before an event is not put to sleep after it (the kernel compares the word first).
-static_assert(std::atomic<std::uint32_t>::is_always_lock_free &&
-              sizeof(std::atomic<std::uint32_t>) == sizeof(std::uint32_t));
-
-std::uint32_t* futexWord(std::atomic<std::uint32_t>& word)
-{
-  return reinterpret_cast<std::uint32_t*>(&word);
-}
-
-void wakeAllSleepers(std::atomic<std::uint32_t>& word)
-{
-  syscall(SYS_futex, futexWord(word), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
-}
-
-// Returns when `word` no longer holds `seen`, when woken, or after `limit`; a signal or a
-// spurious wake-up returns early too, so the caller checks its condition again.
-void sleepWhileUnchanged(std::atomic<std::uint32_t>& word, std::uint32_t seen,
-                         std::chrono::nanoseconds limit)
-{
-  const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(limit);
-  timespec relative{};
-  relative.tv_sec = static_cast<time_t>(seconds.count());
-  relative.tv_nsec = static_cast<long>((limit - seconds).count());
-  syscall(SYS_futex, futexWord(word), FUTEX_WAIT_PRIVATE, seen, &relative, nullptr, 0);
-}
 } // namespace
 
 struct ThreadedRuntime::Impl
@@ -352,6 +321,7 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
     {
       deforming = makeDeformingObjects(*scene, deformingObjects);
     }
+    dynamics->runStepsOnOwnThread();
     binding = dynamics->prepare(*scene);
   }
   const std::uint64_t version =
