@@ -73,6 +73,18 @@ public:
     (void)scene;
     return nullptr;
   }
+  /// Called by a real-time runner (ThreadedRuntime::publishScene) on the publisher's thread
+  /// before prepare(): a dynamics whose step is long may from now on run it on a thread of its
+  /// own, handing its result to the solver in beforeUpdate(). Nothing by default.
+  virtual void runStepsOnOwnThread() {}
+  /// Before each proxy update (HapticStep.h: stepProxyHalf), on the solver's thread: a step
+  /// finished on the dynamics' own thread gives the solver its result here. Nothing by default.
+  /// Allocates nothing; never waits.
+  virtual void beforeUpdate(ProxySolver& solver, std::uint64_t tick)
+  {
+    (void)solver;
+    (void)tick;
+  }
   /// On the thread that owns `solver`, once it has the scene prepare() made `binding` for and the
   /// moved and deforming copies of the objects listed above (useMovingObjects,
   /// useDeformingObjects): acts through `binding` from now on and gives the solver the bodies'

@@ -21,7 +21,7 @@ CollisionScene deformedScene(const CollisionScene& scene, const TissueDynamics& 
       auto moved = std::make_shared<CollisionObject>();
       moved->mesh = scene.objects[object].mesh;
       moved->material = scene.objects[object].material;
-      const std::vector<Vec3>& points = tissue.solid(k).positions();
+      const std::vector<Vec3>& points = tissue.surface(k);
       if (moved->mesh.movePoints(points.data(), points.size()))
       {
         pointer = std::move(moved);

@@ -9,7 +9,7 @@ namespace proxima
 {
 
 /// A copy of `scene` that shares every object but the tissues', each of which is its mesh moved to
-/// its solid's present points (the surface the proxy touches after the solids' last step). The
+/// the surface last handed to the solver (TissueDynamics::surface: the one the proxy touches). The
 /// tissue objects have no sphere tree or filter records: for drawing, not for queries. Allocates:
 /// not for the haptic thread. A tissue whose object is out of range, or whose solid has another
 /// number of points than the object's mesh, is left as the scene has it.

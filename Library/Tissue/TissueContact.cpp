@@ -186,6 +186,63 @@ void TissueContact::noteApproach(const Vec3& proxy, std::uint32_t count, double 
 
 void TissueContact::step()
 {
+  loadStep();
+  m_solid.step();
+  handOverSurface();
+}
+
+void TissueContact::handOverSurface()
+{
+  const std::vector<Vec3>& positions = m_solid.positions();
+  m_solver->setObjectPoints(m_object, positions.data(), positions.size());
+}
+
+void TissueContact::addLagCorrection()
+{
+  // The ticks since the last step pressed the surface the solver had, which a solid stepping a
+  // step behind (TissueDynamics on its own thread) has since moved on from: each spring is
+  // anchored at the point the proxy pressed, not where the solid now starts, so a surface that
+  // already gave way under the press is pressed that much less, as the proxy would have pressed
+  // it had it seen it. With no lag (step()) every point is where it was pressed and this adds
+  // nothing.
+  const std::vector<Vec3>& pressed = m_solver->queryObject(m_object).mesh.points();
+  const std::vector<Vec3>& now = m_solid.positions();
+  const double ticks = static_cast<double>(m_ticks);
+  for (int k = 0; k < m_numSprings; ++k)
+  {
+    const ContactSpring& spring = m_springs[k];
+    Vec3 moved;
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t vertex = spring.vertices[static_cast<std::size_t>(c)];
+      moved += (now[vertex] - pressed[vertex]) * spring.weights[static_cast<std::size_t>(c)];
+    }
+    const double along = dot(moved, spring.normal);
+    if (along == 0.0)
+    {
+      continue;
+    }
+    // Summed as a tick's press is, so the mean over the ticks gives it once.
+    const Vec3 force = spring.normal * (-spring.stiffness * along * ticks);
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t vertex = spring.vertices[static_cast<std::size_t>(c)];
+      m_forceSum[vertex] += force * spring.weights[static_cast<std::size_t>(c)];
+      if (m_isLoaded[vertex] == 0)
+      {
+        m_isLoaded[vertex] = 1;
+        m_loaded.push_back(vertex);
+      }
+    }
+  }
+}
+
+void TissueContact::loadStep()
+{
+  if (m_numSprings > 0 && m_ticks > 0)
+  {
+    addLagCorrection();
+  }
   if (m_numSprings == 0)
   {
     // A surface springing back toward a proxy it does not touch yet would rise into it within
@@ -222,9 +279,6 @@ void TissueContact::step()
   m_loaded.clear();
   m_ticks = 0;
   m_solid.setContactSprings(m_springs.data(), m_numSprings);
-  m_solid.step();
-  const std::vector<Vec3>& positions = m_solid.positions();
-  m_solver->setObjectPoints(m_object, positions.data(), positions.size());
 }
 
 double TissueContact::maxDisplacement() const

@@ -76,6 +76,15 @@ public:
   /// the direction to it the same way, from where they are, so that a surface springing back
   /// does not rise into the proxy unheld.
   void step();
+  /// The first half of step(), for a solid that steps on another thread a step behind
+  /// (TissueDynamics): gives the solid the press summed since the last step and the springs, as
+  /// step() does, each spring anchored where the proxy pressed the surface the solver has (the
+  /// solid may have moved on from it by a step). Then the solid steps, on any thread. Allocates
+  /// nothing; the solid must not be stepping.
+  void loadStep();
+  /// The last half of step(): gives the solver the solid's points. Allocates nothing; the solid
+  /// must not be stepping.
+  void handOverSurface();
 
   /// The force the last step applied to the solid, summed over its vertices (N).
   const Vec3& lastForce() const { return m_lastForce; }
@@ -102,6 +111,9 @@ private:
   /// toward it become springs of the next step.
   std::vector<ContactSpring> m_approaching = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numApproaching = 0;
+  /// Adds to the press the springs' pull back to where the proxy pressed them, for a solid that
+  /// has moved on since (loadStep).
+  void addLagCorrection();
   /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
   /// sum to `total`.
   void noteApproach(const Vec3& proxy, std::uint32_t count, double total);

@@ -1,6 +1,7 @@
 #include "Tissue/TissueDynamics.h"
 
 #include "Geometry/ClosestPoint.h"
+#include "Runtime/FutexWord.h"
 
 #include <algorithm>
 #include <chrono>
@@ -50,6 +51,7 @@ TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffne
     settings.timeStep = m_ticksPerStep / rate;
     Tissue tissue;
     tissue.object = given.object;
+    tissue.handedOver = given.tets.points;
     tissue.solid = std::make_unique<ElasticSolid>(given.tets, given.materials, settings);
     for (const std::uint32_t vertex : given.fixedVertices)
     {
@@ -64,7 +66,148 @@ TissueDynamics::TissueDynamics(std::vector<TissueObject> tissues, double stiffne
   }
 }
 
-TissueDynamics::~TissueDynamics() = default;
+TissueDynamics::~TissueDynamics()
+{
+  if (m_solidThread.joinable())
+  {
+    m_stopping.store(true, std::memory_order_release);
+    m_requested.fetch_add(1, std::memory_order_acq_rel);
+    wakeAllSleepers(m_requested);
+    m_solidThread.join();
+  }
+}
+
+void TissueDynamics::runStepsOnOwnThread()
+{
+  if (!m_solidThread.joinable())
+  {
+    m_solidThread = std::thread([this] { solidThreadLoop(); });
+  }
+}
+
+void TissueDynamics::solidThreadLoop()
+{
+  std::uint32_t done = m_completed.load(std::memory_order_acquire);
+  for (;;)
+  {
+    const std::uint32_t wanted = m_requested.load(std::memory_order_acquire);
+    if (m_stopping.load(std::memory_order_acquire))
+    {
+      return;
+    }
+    if (wanted == done)
+    {
+      // Woken by launch() at once; the limit only bounds a wait that missed its wake-up.
+      sleepWhileUnchanged(m_requested, wanted, std::chrono::milliseconds(100));
+      continue;
+    }
+    stepLaunchedSolids();
+    done = wanted;
+    m_completed.store(done, std::memory_order_release);
+    wakeAllSleepers(m_completed); // for waitForSolids(); no haptic thread sleeps on it
+  }
+}
+
+void TissueDynamics::waitForSolids() const
+{
+  for (;;)
+  {
+    const std::uint32_t done = m_completed.load(std::memory_order_acquire);
+    if (done == m_launched || !m_solidThread.joinable())
+    {
+      return;
+    }
+    sleepWhileUnchanged(m_completed, done, std::chrono::milliseconds(10));
+  }
+}
+
+bool TissueDynamics::launchedStepDone() const
+{
+  return m_completed.load(std::memory_order_acquire) == m_launched;
+}
+
+void TissueDynamics::stepLaunchedSolids()
+{
+  for (Tissue& tissue : m_tissues)
+  {
+    if (tissue.launched)
+    {
+      tissue.solid->step();
+    }
+  }
+}
+
+void TissueDynamics::launch()
+{
+  for (std::size_t t = 0; t < m_tissues.size(); ++t)
+  {
+    TissueContact* contact = coupling(t);
+    m_tissues[t].launched = contact != nullptr;
+    if (contact != nullptr)
+    {
+      contact->loadStep();
+    }
+  }
+  ++m_steps;
+  ++m_launched;
+  m_inFlight = true;
+  if (m_solidThread.joinable())
+  {
+    m_requested.store(m_launched, std::memory_order_release);
+    wakeAllSleepers(m_requested);
+  }
+  else
+  {
+    stepLaunchedSolids();
+    m_completed.store(m_launched, std::memory_order_release);
+  }
+}
+
+void TissueDynamics::beforeUpdate(ProxySolver& solver, std::uint64_t tick)
+{
+  if (!m_inFlight)
+  {
+    return;
+  }
+  if (!launchedStepDone())
+  {
+    // This update meets the surface before the step in flight, where lockstep would give it
+    // the step's (a step launched at the last tick); it goes on with the older one, unwaited.
+    ++m_staleUpdates;
+    m_firstStaleUpdate = std::min(m_firstStaleUpdate, tick);
+  }
+  else
+  {
+    const auto begin = std::chrono::steady_clock::now();
+    handOver(solver);
+    const auto end = std::chrono::steady_clock::now();
+    m_handOverNanoseconds =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+  }
+}
+
+void TissueDynamics::handOver(ProxySolver& solver)
+{
+  for (Tissue& tissue : m_tissues)
+  {
+    if (!tissue.launched)
+    {
+      continue;
+    }
+    const std::vector<Vec3>& positions = tissue.solid->positions();
+    std::copy(positions.begin(), positions.end(), tissue.handedOver.begin());
+    solver.setObjectPoints(tissue.object, positions.data(), positions.size());
+    const std::vector<Vec3>& rest = tissue.solid->rest().points;
+    double largest = 0.0;
+    for (std::size_t i = 0; i < positions.size(); ++i)
+    {
+      largest = std::max(largest, distance(positions[i], rest[i]));
+    }
+    tissue.reading.maxDisplacement = largest;
+  }
+  m_inFlight = false;
+  publishSurfaces(m_launchTick);
+}
 
 std::vector<std::uint32_t> TissueDynamics::deformingObjects() const
 {
@@ -130,18 +273,18 @@ void TissueDynamics::publishSurfaces(std::uint64_t tick)
   surfaces.steps = m_steps;
   for (std::size_t k = 0; k < m_tissues.size(); ++k)
   {
-    const std::vector<Vec3>& positions = m_tissues[k].solid->positions();
-    std::copy(positions.begin(), positions.end(), surfaces.points[k].begin());
+    const std::vector<Vec3>& points = m_tissues[k].handedOver;
+    std::copy(points.begin(), points.end(), surfaces.points[k].begin());
   }
   m_surfaces.publish();
 }
 
 void TissueDynamics::placeBodies(ProxySolver& solver) const
 {
+  // The surfaces handed over, never the solids themselves, which their thread may be stepping.
   for (const Tissue& tissue : m_tissues)
   {
-    const std::vector<Vec3>& positions = tissue.solid->positions();
-    solver.setObjectPoints(tissue.object, positions.data(), positions.size());
+    solver.setObjectPoints(tissue.object, tissue.handedOver.data(), tissue.handedOver.size());
   }
 }
 
@@ -233,24 +376,40 @@ void TissueDynamics::step(HapticState& state, ProxySolver& solver)
   }
   m_ticked = true;
   m_lastTick = state.tick;
-  if (state.tick >= m_nextStepTick)
+  // At a step's tick the next step launches under the press of the ticks since. In lockstep it
+  // steps here and is handed over at once; on the solids' thread it is handed over before the
+  // first proxy update after it finished (beforeUpdate), which is the next one when it takes
+  // less than a tick, as in lockstep. A step still running at the next step's tick is never
+  // waited for: the press goes on summing and the next step launches once it is handed over.
+  if (state.tick >= m_nextStepTick || m_launchLate)
   {
-    m_nextStepTick = (state.tick + 1 + every) / every * every - 1;
-    ++m_steps;
-    for (std::size_t t = 0; t < m_tissues.size(); ++t)
+    if (m_inFlight && !launchedStepDone())
     {
-      TissueContact* contact = coupling(t);
-      if (contact != nullptr)
+      m_lateSteps += m_launchLate ? 0 : 1;
+      m_launchLate = true;
+    }
+    else
+    {
+      if (m_inFlight)
       {
-        contact->step();
-        m_tissues[t].reading.maxDisplacement = contact->maxDisplacement();
+        handOver(solver);
+      }
+      m_launchLate = false;
+      m_nextStepTick = (state.tick + 1 + every) / every * every - 1;
+      m_launchTick = state.tick;
+      launch();
+      if (launchedStepDone())
+      {
+        handOver(solver);
       }
     }
-    publishSurfaces(state.tick);
   }
   const auto end = std::chrono::steady_clock::now();
+  // A hand-over before this tick's update is this tick's dynamics too.
   state.dynamicsNanoseconds =
-    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+    std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count() +
+    m_handOverNanoseconds;
+  m_handOverNanoseconds = 0;
 }
 
 } // namespace proxima

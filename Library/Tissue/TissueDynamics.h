@@ -1,6 +1,10 @@
 // A scene's tissues as the runners' dynamics step (Runtime/TickDynamics.h): each tissue object's
 // elastic solid coupled to the proxy (TissueContact), pressed by the proxy's spring every tick and
-// stepped at its own slower rate, its surface handed to the solver for the next tick. What a
+// stepped at its own slower rate. In lockstep the solids step at a step's tick and the next
+// proxy update meets their surface; in a real-time runner they step on a thread of their own
+// (runStepsOnOwnThread), so the proxy thread only loads the press and hands the surface over
+// before the first update after the step finished: the same run while a step takes less than a
+// tick, a surface a few ticks late when it takes longer, and a proxy thread that never waits. What a
 // scene file's "tissue" objects become (IO/Scene/SceneTissue.h); `proxima run --scene` plays it
 // in lockstep, so that a run with tissue is reproducible bit for bit.
 #pragma once
@@ -11,9 +15,11 @@
 #include "Tissue/TetMesh.h"
 #include "Tissue/TissueContact.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace proxima
@@ -81,9 +87,31 @@ public:
   void placeBodies(ProxySolver& solver) const override;
   /// Presses each tissue with the tick's contacts on it (kp times their depths along their
   /// normals), and at the ticks whose number plus one is a multiple of ticksPerStep() (or the
-  /// first tick after one, when a threaded runner skipped it) steps the solids under the mean
-  /// press and hands the solver their surfaces. Sets `state.dynamicsNanoseconds`. Allocates nothing.
+  /// first tick after one, when a threaded runner skipped it, or the solids' thread was still
+  /// stepping) hands the solver the surfaces the last step left and launches the next step under
+  /// the mean press. Sets `state.dynamicsNanoseconds`. Allocates nothing; never waits.
   void step(HapticState& state, ProxySolver& solver) override;
+  /// Before the proxy update of tick `tick`: a step that finished on the solids' thread is handed
+  /// to the solver, so that this update meets its surface. Allocates nothing; never waits.
+  void beforeUpdate(ProxySolver& solver, std::uint64_t tick) override;
+  /// From now on the solids step on a thread of their own, started here (once; joined when this
+  /// is destroyed), so that a long step costs the proxy thread nothing: ThreadedRuntime calls it
+  /// when a scene is published. Without it (lockstep) they step on the caller's thread.
+  void runStepsOnOwnThread() override;
+  /// True once the solids step on their own thread.
+  bool stepsOnOwnThread() const { return m_solidThread.joinable(); }
+  /// Waits until no step is in flight (after a real-time run, before reading solid()); returns
+  /// at once in lockstep. Not on a haptic thread.
+  void waitForSolids() const;
+  /// The step ticks at which the last step was still running on the solids' thread, so that the
+  /// next launched late (never in lockstep).
+  std::uint64_t lateSteps() const { return m_lateSteps; }
+  /// The proxy updates that met a surface older than lockstep would have given them: the step
+  /// launched before them had not finished (never in lockstep). While there are none, a
+  /// real-time run is lockstep's bit for bit, sample for sample.
+  std::uint64_t staleUpdates() const { return m_staleUpdates; }
+  /// The first such update's tick, or the largest std::uint64_t while there is none.
+  std::uint64_t firstStaleUpdate() const { return m_firstStaleUpdate; }
   /// No rigid poses: count 0.
   void poses(BodyPoses& out) const override { out.count = 0; }
 
@@ -91,8 +119,13 @@ public:
   std::size_t numTissues() const { return m_tissues.size(); }
   /// Tissue `k`'s scene object.
   std::uint32_t object(std::size_t k) const { return m_tissues[k].object; }
-  /// Tissue `k`'s solid.
+  /// Tissue `k`'s solid, a step ahead of the surface handed to the solver while a step is in
+  /// flight (a real-time run's last: waitForSolids() first).
   const ElasticSolid& solid(std::size_t k) const { return *m_tissues[k].solid; }
+  /// Tissue `k`'s surface as last handed to the solver: the points of the surface the proxy
+  /// rests on (the solid's at rest before the first hand-over). On the solver's thread or after
+  /// the run.
+  const std::vector<Vec3>& surface(std::size_t k) const { return m_tissues[k].handedOver; }
   /// Tissue `k` after the last tick.
   const TissueReading& reading(std::size_t k) const { return m_tissues[k].reading; }
   /// The largest indentation tissue `k` has had in the run so far (m).
@@ -126,13 +159,29 @@ private:
     std::unique_ptr<ElasticSolid> solid;
     TissueReading reading;
     double deepest = 0.0;
+    /// The points last handed to the solver.
+    std::vector<Vec3> handedOver;
+    /// True when the step in flight steps this solid (its coupling was bound at the launch).
+    bool launched = false;
   };
   /// What prepare() makes: per tissue, its coupling to the scene's solver.
   struct Binding;
   /// Tissue `k`'s coupling when installed and bound to a solver, else null.
   TissueContact* coupling(std::size_t k) const;
-  /// Copies the solids' points into the hand-over and publishes them (no allocation).
+  /// Copies the surfaces handed over into the drawing hand-over and publishes them (no
+  /// allocation).
   void publishSurfaces(std::uint64_t tick);
+  /// Hands the solver the surfaces the step in flight left (it has finished), and publishes
+  /// them for drawing as left by the step of its launch's tick.
+  void handOver(ProxySolver& solver);
+  /// Loads the press into each bound solid and starts their step (on their thread, or here).
+  void launch();
+  /// Steps the solids launch() loaded (on the solids' thread, or the caller's in lockstep).
+  void stepLaunchedSolids();
+  /// True when the step in flight has finished.
+  bool launchedStepDone() const;
+  /// The solids' thread: steps each launch, sleeping between.
+  void solidThreadLoop();
   /// The indentation of `tissue` by the proxy at `proxy` touching triangle `triangle` at `point`.
   double indentationAt(const Tissue& tissue, const ProxySolver& solver, std::uint32_t triangle,
                        const Vec3& point, const Vec3& proxy) const;
@@ -151,6 +200,23 @@ private:
   std::uint64_t m_lastTick = 0;
   bool m_ticked = false;
   std::uint64_t m_steps = 0;
+  /// A launched step not yet handed over, and a step tick that found it still running.
+  bool m_inFlight = false;
+  bool m_launchLate = false;
+  std::uint64_t m_lateSteps = 0;
+  /// The tick whose step is in flight (or was last).
+  std::uint64_t m_launchTick = 0;
+  std::uint64_t m_staleUpdates = 0;
+  std::uint64_t m_firstStaleUpdate = ~std::uint64_t{0};
+  /// The time the hand-over before this tick's update took (ns), added to its dynamics time.
+  std::int64_t m_handOverNanoseconds = 0;
+  /// Steps launched (the haptic thread's count, published to the solids' thread in
+  /// m_requested) and finished (the solids' thread's, or the launcher's in lockstep).
+  std::uint32_t m_launched = 0;
+  std::atomic<std::uint32_t> m_requested{0};
+  mutable std::atomic<std::uint32_t> m_completed{0};
+  std::atomic<bool> m_stopping{false};
+  std::thread m_solidThread;
 };
 
 } // namespace proxima

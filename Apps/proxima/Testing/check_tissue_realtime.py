@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Checks a `proxima run --realtime` of a scene with one tissue against the lockstep run of the
 same path (its summary): the threaded runtime steps the solid inside its proxy updates on the
-servo's clock, so the tissue must do what it did in lockstep, up to the finger samples the
-real-time loop skipped (Documentation/Tissue.md, "On the real clock").
+servo's clock on a thread of its own, so the tissue must do what it did in lockstep, up to the
+finger samples the real-time loop skipped and the steps that outlasted a tick
+(Documentation/Tissue.md, "On the real clock").
+- lockstep launched no step late and no update met a step-old surface (late_steps and
+  stale_updates are 0: the solid steps inline there);
 - both summaries are of the same scene and tissue (tetrahedra, vertices, ticks per step);
 - the real-time run stepped the solid at least `min_share` as often as lockstep did: a skipped
   sample only loses a step when it held every tick of one, but a slow machine skips many (600 of
@@ -29,6 +32,7 @@ def main():
     live, reference = realtime["tissue"][0], lockstep["tissue"][0]
     for key in ("object", "tetrahedra", "vertices", "fixed_vertices", "ticks_per_step"):
         assert live[key] == reference[key], (key, live[key], reference[key])
+    assert reference["late_steps"] == 0 and reference["stale_updates"] == 0, reference
     assert live["steps"] >= min_share * reference["steps"], (live["steps"], reference["steps"])
     deepest, expected = live["deepest_indentation_m"], reference["deepest_indentation_m"]
     assert deepest > 0.001, deepest
@@ -38,7 +42,8 @@ def main():
     print(f"real-time: {live['steps']} solid steps (lockstep {reference['steps']}), deepest "
           f"indentation {deepest * 1e3:.4f} mm (lockstep {expected * 1e3:.4f} mm), dynamics "
           f"p99.9 {realtime['dynamics_ns']['p99.9'] / 1e3:.0f} us, servo missed deadlines "
-          f"{realtime['realtime']['servo']['missed_deadlines']}")
+          f"{realtime['realtime']['servo']['missed_deadlines']}; {live['late_steps']} steps "
+          f"launched late, {live['stale_updates']} updates met a step-old surface")
 
 
 if __name__ == "__main__":

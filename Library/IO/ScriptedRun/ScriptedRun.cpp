@@ -103,6 +103,7 @@ ScriptedRunOutcome playScriptedPath(const ScriptedRunSettings& settings,
 std::vector<TissueOutcome> tissueOutcomes(const TissueDynamics& tissue, const LoadedScene& loaded)
 {
   std::vector<TissueOutcome> reports;
+  tissue.waitForSolids(); // a real-time run's last step may still be running
   for (std::size_t k = 0; k < tissue.numTissues(); ++k)
   {
     const ElasticSolid& solid = tissue.solid(k);
@@ -116,6 +117,8 @@ std::vector<TissueOutcome> tissueOutcomes(const TissueDynamics& tissue, const Lo
     }
     report.ticksPerStep = tissue.ticksPerStep();
     report.steps = tissue.steps();
+    report.lateSteps = tissue.lateSteps();
+    report.staleUpdates = tissue.staleUpdates();
     report.deepestIndentation = tissue.deepestIndentation(k);
     report.maxDisplacement = tissue.reading(k).maxDisplacement;
     report.energy = solid.kineticEnergy() + solid.elasticEnergy();

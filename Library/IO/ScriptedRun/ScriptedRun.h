@@ -68,6 +68,12 @@ struct TissueOutcome
   int ticksPerStep = 1;
   /// The solid's steps over the run.
   std::uint64_t steps = 0;
+  /// On the real clock, where the solid steps on its own thread: the steps launched late, the
+  /// last one still running at their tick (TissueDynamics::lateSteps). 0 in lockstep.
+  std::uint64_t lateSteps = 0;
+  /// On the real clock: the proxy updates that met a surface a step older than lockstep's
+  /// (TissueDynamics::staleUpdates). 0 in lockstep.
+  std::uint64_t staleUpdates = 0;
   /// The deepest the proxy pushed the surface in over the run (m).
   double deepestIndentation = 0.0;
   /// The largest distance of a vertex from its rest position at the end (m).

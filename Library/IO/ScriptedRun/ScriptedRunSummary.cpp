@@ -186,6 +186,8 @@ std::string scriptedRunSummaryJson(const ScriptedRunSettings& settings, const Lo
                          {"fixed_vertices", tissue.fixedVertices},
                          {"ticks_per_step", tissue.ticksPerStep},
                          {"steps", tissue.steps},
+                         {"late_steps", tissue.lateSteps},
+                         {"stale_updates", tissue.staleUpdates},
                          {"deepest_indentation_m", tissue.deepestIndentation},
                          {"max_displacement_at_end_m", tissue.maxDisplacement},
                          {"energy_at_end_J", tissue.energy},
