@@ -42,6 +42,10 @@ enum class TickCondition : std::uint32_t
   startedOutside = 1u << 10,
   /// A moving object came into the proxy at the tick's start and pushed it along.
   pushedByObject = 1u << 11,
+  /// The proxy met a deforming object's surface a step older than lockstep gives it: the solid's
+  /// step launched at the last step tick, on its own thread, had not finished (real-time runners
+  /// only; Documentation/Tissue.md, "On the real clock").
+  surfaceLagging = 1u << 12,
 };
 
 /// The set of conditions a tick met, as the bitmask of their TickCondition values.
@@ -137,6 +141,7 @@ inline constexpr TickConditionName kTickConditionNames[] = {
   {TickCondition::forceRateLimited, "force_rate_limited"},
   {TickCondition::startedOutside, "started_outside"},
   {TickCondition::pushedByObject, "pushed_by_object"},
+  {TickCondition::surfaceLagging, "surface_lagging"},
 };
 
 /// The name of `condition` in kTickConditionNames ("" for a value that is no single condition).

@@ -112,7 +112,7 @@ struct HapticState
 inline constexpr TickConditions kProxyStepConditions =
   TickCondition::budgetLimited | TickCondition::hitIterationCap | TickCondition::fingerRefused |
   TickCondition::stuck | TickCondition::frictionLimited | TickCondition::contactOverflow |
-  TickCondition::startedOutside | TickCondition::pushedByObject;
+  TickCondition::startedOutside | TickCondition::pushedByObject | TickCondition::surfaceLagging;
 /// The conditions the force step (ServoForce.h) reports.
 inline constexpr TickConditions kForceStepConditions =
   TickCondition::forceClamped | TickCondition::forceFading | TickCondition::deviceLost |

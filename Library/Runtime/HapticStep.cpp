@@ -54,11 +54,9 @@ void stepProxy(ProxySolver& solver, const TickInput& input, HapticState& state)
 void stepProxyHalf(ProxySolver& solver, const TickInput& input, std::uint64_t sceneVersion,
                    ServoForce& force, TickDynamics* dynamics, HapticState& state)
 {
-  if (dynamics != nullptr)
-  {
-    dynamics->beforeUpdate(solver, input.tick);
-  }
+  const bool lagging = dynamics != nullptr && dynamics->beforeUpdate(solver, input.tick);
   stepProxy(solver, input, state);
+  state.conditions.set(TickCondition::surfaceLagging, lagging);
   state.sceneVersion = sceneVersion;
   state.proxyAge = 0.0;
   force.step(input, state);

@@ -321,7 +321,8 @@ std::uint64_t ThreadedRuntime::publishScene(std::shared_ptr<const CollisionScene
     {
       deforming = makeDeformingObjects(*scene, deformingObjects);
     }
-    dynamics->runStepsOnOwnThread();
+    dynamics->runStepsOnOwnThread(
+      m_impl->settings.realtimeScheduling ? m_impl->settings.dynamicsPriority : 0);
     binding = dynamics->prepare(*scene);
   }
   const std::uint64_t version =

@@ -44,6 +44,10 @@ struct RuntimeSettings
   int servoPriority = 80;
   /// SCHED_FIFO priority asked for the proxy thread when `realtimeScheduling`.
   int proxyPriority = 70;
+  /// SCHED_FIFO priority asked for a dynamics' own thread (a tissue's solid:
+  /// TickDynamics::runStepsOnOwnThread) when `realtimeScheduling`: below both loops, so that a
+  /// step yields to them and to nothing else; a refusal leaves it at normal priority.
+  int dynamicsPriority = 60;
   /// Keep the states of the first `recordTicks` proxy updates (preallocated), each with the
   /// force the lockstep runner would give it, for comparing a threaded run with a lockstep one;
   /// 0 keeps none.

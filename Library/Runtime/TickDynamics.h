@@ -75,15 +75,19 @@ public:
   }
   /// Called by a real-time runner (ThreadedRuntime::publishScene) on the publisher's thread
   /// before prepare(): a dynamics whose step is long may from now on run it on a thread of its
-  /// own, handing its result to the solver in beforeUpdate(). Nothing by default.
-  virtual void runStepsOnOwnThread() {}
+  /// own, handing its result to the solver in beforeUpdate(); with `fifoPriority` above 0 it
+  /// asks for SCHED_FIFO at that priority (the runner's loops run above it). Nothing by default.
+  virtual void runStepsOnOwnThread(int fifoPriority) { (void)fifoPriority; }
   /// Before each proxy update (HapticStep.h: stepProxyHalf), on the solver's thread: a step
-  /// finished on the dynamics' own thread gives the solver its result here. Nothing by default.
-  /// Allocates nothing; never waits.
-  virtual void beforeUpdate(ProxySolver& solver, std::uint64_t tick)
+  /// finished on the dynamics' own thread gives the solver its result here. True when the
+  /// update is to meet a surface older than lockstep would give it (a step still running): the
+  /// tick is flagged TickCondition::surfaceLagging. Nothing by default. Allocates nothing; never
+  /// waits.
+  virtual bool beforeUpdate(ProxySolver& solver, std::uint64_t tick)
   {
     (void)solver;
     (void)tick;
+    return false;
   }
   /// On the thread that owns `solver`, once it has the scene prepare() made `binding` for and the
   /// moved and deforming copies of the objects listed above (useMovingObjects,

@@ -1,6 +1,7 @@
 #include "Tissue/TissueDynamics.h"
 
 #include "Geometry/ClosestPoint.h"
+#include "Runtime/DeadlineClock.h"
 #include "Runtime/FutexWord.h"
 
 #include <algorithm>
@@ -77,11 +78,17 @@ TissueDynamics::~TissueDynamics()
   }
 }
 
-void TissueDynamics::runStepsOnOwnThread()
+void TissueDynamics::runStepsOnOwnThread(int fifoPriority)
 {
   if (!m_solidThread.joinable())
   {
     m_solidThread = std::thread([this] { solidThreadLoop(); });
+  }
+  if (fifoPriority > 0)
+  {
+    // Refused without the privilege, as the loops' request is (their runner says so): the
+    // solids then step at normal priority, and a loaded machine lags their surface more.
+    requestFifoScheduling(m_solidThread, fifoPriority);
   }
 }
 
@@ -163,11 +170,11 @@ void TissueDynamics::launch()
   }
 }
 
-void TissueDynamics::beforeUpdate(ProxySolver& solver, std::uint64_t tick)
+bool TissueDynamics::beforeUpdate(ProxySolver& solver, std::uint64_t tick)
 {
   if (!m_inFlight)
   {
-    return;
+    return false;
   }
   if (!launchedStepDone())
   {
@@ -175,15 +182,13 @@ void TissueDynamics::beforeUpdate(ProxySolver& solver, std::uint64_t tick)
     // the step's (a step launched at the last tick); it goes on with the older one, unwaited.
     ++m_staleUpdates;
     m_firstStaleUpdate = std::min(m_firstStaleUpdate, tick);
+    return true;
   }
-  else
-  {
-    const auto begin = std::chrono::steady_clock::now();
-    handOver(solver);
-    const auto end = std::chrono::steady_clock::now();
-    m_handOverNanoseconds =
-      std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
-  }
+  const auto begin = std::chrono::steady_clock::now();
+  handOver(solver);
+  const auto end = std::chrono::steady_clock::now();
+  m_handOverNanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(end - begin).count();
+  return false;
 }
 
 void TissueDynamics::handOver(ProxySolver& solver)

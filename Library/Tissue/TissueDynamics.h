@@ -93,11 +93,13 @@ public:
   void step(HapticState& state, ProxySolver& solver) override;
   /// Before the proxy update of tick `tick`: a step that finished on the solids' thread is handed
   /// to the solver, so that this update meets its surface. Allocates nothing; never waits.
-  void beforeUpdate(ProxySolver& solver, std::uint64_t tick) override;
+  bool beforeUpdate(ProxySolver& solver, std::uint64_t tick) override;
   /// From now on the solids step on a thread of their own, started here (once; joined when this
   /// is destroyed), so that a long step costs the proxy thread nothing: ThreadedRuntime calls it
-  /// when a scene is published. Without it (lockstep) they step on the caller's thread.
-  void runStepsOnOwnThread() override;
+  /// when a scene is published. With `fifoPriority` above 0 the thread asks for SCHED_FIFO at it
+  /// (a refusal leaves it at normal priority). Without it (lockstep) they step on the caller's
+  /// thread.
+  void runStepsOnOwnThread(int fifoPriority) override;
   /// True once the solids step on their own thread.
   bool stepsOnOwnThread() const { return m_solidThread.joinable(); }
   /// Waits until no step is in flight (after a real-time run, before reading solid()); returns

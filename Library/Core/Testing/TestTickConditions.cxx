@@ -31,6 +31,7 @@ TEST(TickConditions, BitsAreTheTraceFormatsFlagValues)
   EXPECT_EQ(TickConditions(TickCondition::forceRateLimited).bits(), 512u);
   EXPECT_EQ(TickConditions(TickCondition::startedOutside).bits(), 1024u);
   EXPECT_EQ(TickConditions(TickCondition::pushedByObject).bits(), 2048u);
+  EXPECT_EQ(TickConditions(TickCondition::surfaceLagging).bits(), 4096u);
 }
 
 TEST(TickConditions, TheNamesTableListsEveryBitOnceInOrder)
@@ -44,7 +45,7 @@ TEST(TickConditions, TheNamesTableListsEveryBitOnceInOrder)
     EXPECT_EQ(std::string(tickConditionName(entry.condition)), entry.name);
     expected <<= 1;
   }
-  EXPECT_EQ(names.size(), 12u);
+  EXPECT_EQ(names.size(), 13u);
   // A value that is no single condition has no name.
   EXPECT_EQ(std::string(tickConditionName(static_cast<TickCondition>(3u))), "");
 }

@@ -158,6 +158,17 @@ TEST(ThreadedTissue, AgreesWithLockstepUntilTheFirstSkippedSampleAndGivesWayUnde
   EXPECT_FALSE(tissue->takeSurfaces());
   const std::vector<HapticState> threaded = runtime.records();
   ASSERT_FALSE(threaded.empty());
+  // Each update that met a step-old surface is flagged, and only those.
+  std::uint64_t flagged = 0;
+  for (const HapticState& record : threaded)
+  {
+    if (record.conditions.has(TickCondition::surfaceLagging))
+    {
+      EXPECT_GE(record.tick, tissue->firstStaleUpdate());
+      ++flagged;
+    }
+  }
+  EXPECT_EQ(flagged, tissue->staleUpdates());
 
   // Whatever the load: the solid's thread stepped it and the press dented it.
   EXPECT_GT(tissue->steps(), 0u);
