@@ -42,6 +42,8 @@ TissueContact::TissueContact(ElasticSolid& solid, const CollisionScene& scene, s
   m_forceSum.assign(count, Vec3{});
   m_isLoaded.assign(count, 0);
   m_loaded.reserve(count);
+  m_applied.assign(count, Vec3{});
+  m_appliedTo.reserve(count);
 }
 
 TissueContact::TissueContact(ElasticSolid& solid, ProxySolver& solver, std::uint32_t object,
@@ -268,6 +270,10 @@ void TissueContact::loadStep()
   const double share = m_ticks > 0 ? 1.0 / static_cast<double>(m_ticks) : 0.0;
   m_solid.clearExternalForces();
   m_lastForce = Vec3{};
+  if (m_relaxation < 1.0)
+  {
+    applyRelaxedLoad(share);
+  }
   for (const std::uint32_t vertex : m_loaded)
   {
     const Vec3 force = m_forceSum[vertex] * share;
@@ -279,6 +285,47 @@ void TissueContact::loadStep()
   m_loaded.clear();
   m_ticks = 0;
   m_solid.setContactSprings(m_springs.data(), m_numSprings);
+}
+
+void TissueContact::applyRelaxedLoad(double share)
+{
+  // This step's footprint gets m_relaxation of the load; the last step's load, scaled to this
+  // step's total force, the rest. The vertices of either are loaded.
+  Vec3 total;
+  for (const std::uint32_t vertex : m_loaded)
+  {
+    m_forceSum[vertex] = m_forceSum[vertex] * share;
+    total += m_forceSum[vertex];
+  }
+  Vec3 before;
+  for (const std::uint32_t vertex : m_appliedTo)
+  {
+    before += m_applied[vertex];
+    if (m_isLoaded[vertex] == 0)
+    {
+      m_isLoaded[vertex] = 1;
+      m_loaded.push_back(vertex);
+    }
+  }
+  // Without a last load, or without a press now (the proxy left), this step's is the whole.
+  const bool blend = norm(before) > 0.0 && norm(total) > 0.0;
+  const double kept = blend ? (1.0 - m_relaxation) * norm(total) / norm(before) : 0.0;
+  const double fresh = blend ? m_relaxation : 1.0;
+  m_appliedTo.clear();
+  for (const std::uint32_t vertex : m_loaded)
+  {
+    const Vec3 force = m_forceSum[vertex] * fresh + m_applied[vertex] * kept;
+    m_applied[vertex] = force;
+    if (force.x != 0.0 || force.y != 0.0 || force.z != 0.0)
+    {
+      m_appliedTo.push_back(vertex);
+    }
+    m_solid.setExternalForce(vertex, force);
+    m_lastForce += force;
+    m_forceSum[vertex] = Vec3{};
+    m_isLoaded[vertex] = 0;
+  }
+  m_loaded.clear();
 }
 
 double TissueContact::maxDisplacement() const

@@ -61,6 +61,21 @@ public:
   void setFootprintGap(double fraction) { m_footprintGap = fraction; }
   /// How far the footprint reaches beyond the proxy's radius, as a fraction of it.
   double footprintGap() const { return m_footprintGap; }
+  /// Sets how much of each step's load is this step's footprint: 1 (the default) loads the
+  /// solid as the ticks since the last step pressed it; below 1, the rest keeps the shape of the
+  /// last step's load, scaled to this step's total, so that the total is the press's and only
+  /// how it is spread lags. A narrow footprint on a fine mesh then settles where it chattered:
+  /// the triangles a step moves out of the footprint lose their load over a few steps, not at
+  /// once (Documentation/Tissue.md, "Hertz's law"). A fraction outside (0, 1] is ignored.
+  void setLoadRelaxation(double fraction)
+  {
+    if (fraction > 0.0 && fraction <= 1.0)
+    {
+      m_relaxation = fraction;
+    }
+  }
+  /// How much of each step's load is this step's footprint (setLoadRelaxation).
+  double loadRelaxation() const { return m_relaxation; }
   /// The most triangles a footprint spreads the force over (the nearest first).
   static constexpr std::uint32_t kMaxFootprint = 512;
   static_assert(3 * kMaxFootprint <= kMaxContactSprings,
@@ -97,6 +112,10 @@ private:
   std::uint32_t m_object;
   double m_stiffness;
   double m_footprintGap = kFootprintGap;
+  double m_relaxation = 1.0;
+  /// Per vertex, the force the last step applied, and the vertices it applied one to.
+  std::vector<Vec3> m_applied;
+  std::vector<std::uint32_t> m_appliedTo;
   /// Per vertex, the force summed over the ticks since the last step.
   std::vector<Vec3> m_forceSum;
   /// The vertices with a force in m_forceSum (each once), to clear them after a step.
@@ -111,6 +130,9 @@ private:
   /// toward it become springs of the next step.
   std::vector<ContactSpring> m_approaching = std::vector<ContactSpring>(kMaxContactSprings);
   int m_numApproaching = 0;
+  /// Loads the solid with the mean press of the ticks since the last step (`share` is one over
+  /// their number) blended with the last step's load (setLoadRelaxation), and clears the sums.
+  void applyRelaxedLoad(double share);
   /// Adds to the press the springs' pull back to where the proxy pressed them, for a solid that
   /// has moved on since (loadStep).
   void addLagCorrection();

@@ -7,7 +7,7 @@
 // The block's cells are finest under the proxy and grow away from it (makeGridTetMesh), so that
 // the contact spans many cells while the block spans many contact radii.
 //
-//   TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS]
+//   TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS LOAD_RELAXATION]
 //
 // Tools/tissue_hertz.py runs it for Documentation/TissueHertzTable.md. It prints one JSON
 // object: the mesh (tetrahedra) and per depth d/R, d, F, Hertz's F, their ratio and how much the
@@ -62,17 +62,20 @@ int main(int argc, char** argv)
 {
   if (argc < 3)
   {
-    std::fprintf(stderr, "usage: TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS]\n");
+    std::fprintf(stderr, "usage: TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS "
+                         "LOAD_RELAXATION]\n");
     return 2;
   }
   const double finest = std::atof(argv[1]) * 1e-3;
   const double growth = std::atof(argv[2]);
   const double gap = argc > 3 ? std::atof(argv[3]) : TissueContact::kFootprintGap;
   const int iterations = argc > 4 ? std::atoi(argv[4]) : 200;
-  if (!(finest > 0.0 && finest < kHalfWidth) || !(growth >= 1.0) || !(gap > 0.0) || iterations < 1)
+  const double relaxation = argc > 5 ? std::atof(argv[5]) : 1.0;
+  if (!(finest > 0.0 && finest < kHalfWidth) || !(growth >= 1.0) || !(gap > 0.0) ||
+      iterations < 1 || !(relaxation > 0.0 && relaxation <= 1.0))
   {
     std::fprintf(stderr, "TissueHertzContact: want 0 < FINEST_MM < 25, GROWTH >= 1, "
-                         "FOOTPRINT_GAP > 0 and ITERATIONS >= 1\n");
+                         "FOOTPRINT_GAP > 0, ITERATIONS >= 1 and 0 < LOAD_RELAXATION <= 1\n");
     return 2;
   }
 
@@ -110,6 +113,7 @@ int main(int argc, char** argv)
   solver->setScene(&scene, parameters);
   TissueContact contact(solid, *solver, 0, kStiffness);
   contact.setFootprintGap(gap);
+  contact.setLoadRelaxation(relaxation);
 
   const auto started = std::chrono::steady_clock::now();
   const double depths[] = {0.05, 0.075, 0.1, 0.125, 0.15, 0.175, 0.2};
@@ -118,8 +122,8 @@ int main(int argc, char** argv)
   double fingerZ = kRadius + 0.002;
   solver->resetProxy({0.0, 0.0, fingerZ});
   std::printf("{\"finest_m\": %g, \"growth\": %g, \"footprint_gap\": %g, \"iterations\": %d, "
-              "\"tetrahedra\": %zu, \"depths\": [",
-              finest, growth, gap, iterations, block.tets.size());
+              "\"load_relaxation\": %g, \"tetrahedra\": %zu, \"depths\": [",
+              finest, growth, gap, iterations, relaxation, block.tets.size());
   bool first = true;
   for (const double relative : depths)
   {

@@ -113,39 +113,61 @@ TEST(TetBoundary, AGradedGridFillsItsBoxAndIsClosed)
   EXPECT_NEAR(enclosed, totalVolume(mesh), 1e-15);
 }
 
-// A block of 4 x 4 x 2 cm (cells of 5 mm), 5 kPa, fixed along its base; a proxy of 5 mm radius
-// on a 1000 N/m spring. The finger comes down from 1 cm above the top's centre to 3 mm below it
-// in 0.4 s, holds 1 s, goes back up in 0.4 s and waits 1.2 s.
-TEST(TissueContact, APressAndReleaseOnASoftBlock)
+constexpr double kRadius = 0.005;
+constexpr double kStiffness = 1000.0;
+constexpr double kRate = 1000.0;
+constexpr int kTicksPerStep = 5; // the solid at 200 Hz
+
+// A block of 4 x 4 x 2 cm (cells of 5 mm), 5 kPa, fixed along its base, its surface a scene of
+// one object; a proxy of 5 mm radius on a 1000 N/m spring.
+struct SoftBlockContact
 {
-  constexpr double kRadius = 0.005;
-  constexpr double kStiffness = 1000.0;
-  constexpr double kRate = 1000.0;
-  constexpr int kTicksPerStep = 5; // the solid at 200 Hz
-  const TetMesh block = makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
-  ElasticSolidSettings settings;
-  settings.timeStep = kTicksPerStep / kRate;
-  settings.damping = 20.0;
-  ElasticSolid solid(block, ElasticMaterial{5000.0, 0.45}, settings);
-  for (std::uint32_t v = 0; v < block.points.size(); ++v)
-  {
-    if (block.points[v].z < -0.02 + 1e-9)
-    {
-      solid.fixVertex(v);
-    }
-  }
+  TetMesh block = makeBoxTetMesh(Vec3{-0.02, -0.02, -0.02}, Vec3{0.02, 0.02, 0.0}, 8, 8, 4);
+  std::unique_ptr<ElasticSolid> solid;
   CollisionScene scene;
-  TriangleMesh surface;
-  MeshError error;
-  ASSERT_TRUE(surface.build(boundarySoup(block), error)) << error.message;
-  scene.addObject(std::move(surface));
-  ProxyParameters parameters;
-  parameters.radius = kRadius;
-  parameters.stiffness = kStiffness;
-  parameters.timeStep = 1.0 / kRate;
-  auto solver = std::make_unique<ProxySolver>();
-  solver->setScene(&scene, parameters);
-  TissueContact contact(solid, *solver, 0, kStiffness);
+  std::unique_ptr<ProxySolver> solver = std::make_unique<ProxySolver>();
+  std::unique_ptr<TissueContact> contact;
+
+  SoftBlockContact()
+  {
+    ElasticSolidSettings settings;
+    settings.timeStep = kTicksPerStep / kRate;
+    settings.damping = 20.0;
+    solid = std::make_unique<ElasticSolid>(block, ElasticMaterial{5000.0, 0.45}, settings);
+    for (std::uint32_t v = 0; v < block.points.size(); ++v)
+    {
+      if (block.points[v].z < -0.02 + 1e-9)
+      {
+        solid->fixVertex(v);
+      }
+    }
+    TriangleMesh surface;
+    MeshError error;
+    if (!surface.build(boundarySoup(block), error))
+    {
+      ADD_FAILURE() << error.message;
+    }
+    scene.addObject(std::move(surface));
+    ProxyParameters parameters;
+    parameters.radius = kRadius;
+    parameters.stiffness = kStiffness;
+    parameters.timeStep = 1.0 / kRate;
+    solver->setScene(&scene, parameters);
+    contact = std::make_unique<TissueContact>(*solid, *solver, 0, kStiffness);
+  }
+};
+
+// The finger comes down from 1 cm above the top's centre to 3 mm below it in 0.4 s, holds 1 s,
+// goes back up in 0.4 s and waits 1.2 s; the solid loaded with `relaxation` of each step's
+// footprint (TissueContact::setLoadRelaxation).
+void pressAndReleaseTheSoftBlock(double relaxation)
+{
+  SoftBlockContact fixture;
+  ElasticSolid& solid = *fixture.solid;
+  ProxySolver* solver = fixture.solver.get();
+  TissueContact& contact = *fixture.contact;
+  contact.setLoadRelaxation(relaxation);
+  ASSERT_EQ(contact.loadRelaxation(), relaxation);
 
   auto fingerAt = [](double t) {
     const double high = 0.01;
@@ -240,6 +262,77 @@ TEST(TissueContact, APressAndReleaseOnASoftBlock)
   EXPECT_LE(excess, 1e-6 * work) << "the solid gained energy the proxy did not put in";
   EXPECT_LT(restEnergy, 1e-3 * work) << "the block is not back at rest after the release";
   EXPECT_LT(contact.maxDisplacement(), 1e-4);
+}
+
+TEST(TissueContact, APressAndReleaseOnASoftBlock)
+{
+  pressAndReleaseTheSoftBlock(1.0);
+}
+
+// The same with a load that lags: still no penetration, no chatter, no energy gain, back at rest.
+TEST(TissueContact, APressAndReleaseOnASoftBlockWithARelaxedLoad)
+{
+  pressAndReleaseTheSoftBlock(0.3);
+}
+
+// The relaxed load in closed form: pressed at A for a step, then at B (far enough that the two
+// footprints share no vertex) with a force of another size, the solid's load is the press's total
+// every step, and A's footprint keeps (1 - a)^n of it after n steps at B, a the relaxation.
+TEST(TissueContact, ARelaxedLoadKeepsThePressesTotalAndForgetsTheLastShapeGeometrically)
+{
+  constexpr double kRelaxation = 0.3;
+  SoftBlockContact fixture;
+  TissueContact& contact = *fixture.contact;
+  const ElasticSolid& solid = *fixture.solid;
+  contact.setLoadRelaxation(kRelaxation);
+  contact.setLoadRelaxation(0.0); // outside (0, 1]: ignored
+  contact.setLoadRelaxation(1.5);
+  ASSERT_EQ(contact.loadRelaxation(), kRelaxation);
+  // The proxy resting on the top (z = 0), 1 mm into its surface's reach, at x = -1 cm and +1 cm:
+  // footprints of radius sqrt((1.25 R)^2 - (R - 1 mm)^2) = 4.8 mm, on cells 5 mm wide, so the
+  // one reaches x = -5.2 mm and the other x = 5.2 mm: no vertex of the cells about x = 0.
+  const Vec3 atA{-0.01, 0.0, kRadius - 0.001};
+  const Vec3 atB{0.01, 0.0, kRadius - 0.001};
+  const Vec3 pressA{0.0, 0.0, -0.4};
+  const Vec3 pressB{0.0, 0.0, -1.0};
+  auto loadOn = [&](double side) {
+    // The load on the vertices of one half of the top (x < 0 for A, x > 0 for B).
+    Vec3 sum;
+    for (std::uint32_t v = 0; v < solid.positions().size(); ++v)
+    {
+      if (solid.positions()[v].x * side > 0.0)
+      {
+        sum += solid.externalForce(v);
+      }
+    }
+    return sum;
+  };
+  for (int tick = 0; tick < kTicksPerStep; ++tick)
+  {
+    contact.addPress(atA, pressA, kStiffness);
+  }
+  contact.loadStep();
+  // The first step has no last load: all of A's press on A's footprint.
+  EXPECT_NEAR(loadOn(-1.0).z, pressA.z, 1e-12);
+  EXPECT_NEAR(loadOn(+1.0).z, 0.0, 1e-15);
+  EXPECT_NEAR(contact.lastForce().z, pressA.z, 1e-12);
+  double kept = 1.0;
+  for (int step = 1; step <= 8; ++step)
+  {
+    for (int tick = 0; tick < kTicksPerStep; ++tick)
+    {
+      contact.addPress(atB, pressB, kStiffness);
+    }
+    contact.loadStep();
+    kept *= 1.0 - kRelaxation;
+    EXPECT_NEAR(contact.lastForce().z, pressB.z, 1e-12) << "step " << step;
+    EXPECT_NEAR(loadOn(-1.0).z, kept * pressB.z, 1e-12) << "step " << step;
+    EXPECT_NEAR(loadOn(+1.0).z, (1.0 - kept) * pressB.z, 1e-12) << "step " << step;
+  }
+  // The proxy gone (no press): no load at all, at once.
+  contact.loadStep();
+  EXPECT_EQ(norm(contact.lastForce()), 0.0);
+  EXPECT_EQ(norm(loadOn(-1.0)) + norm(loadOn(+1.0)), 0.0);
 }
 } // namespace
 } // namespace proxima
