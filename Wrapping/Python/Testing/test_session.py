@@ -9,9 +9,10 @@ from conftest import SOURCE, needs_shared_data, proxima_cli, read_cli_trace, sha
 
 def test_tick_conditions_name_the_flags_bits():
     bits = proxima.TICK_CONDITIONS
-    assert len(bits) == 12
-    assert sorted(bits.values()) == [1 << i for i in range(12)]
+    assert len(bits) == 13
+    assert sorted(bits.values()) == [1 << i for i in range(13)]
     assert bits["force_fading"] == 8 and bits["started_outside"] == 1024
+    assert bits["surface_lagging"] == 4096
 
 
 @needs_shared_data()
