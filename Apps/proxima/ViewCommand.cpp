@@ -486,8 +486,8 @@ void loadViewInputs(const ViewOptions& options, ViewInputs& inputs)
   inputs.hinges = sceneHinges(inputs.loaded.description);
   // A scene's bodies move in the window and in a screenshot (Documentation/Dynamics.md).
   inputs.bodies = sceneBodies(shared, inputs.loaded);
-  // Tissue deforms in the window, where the proxy thread steps it, and in a screenshot, the same
-  // steps as `proxima run` (Documentation/Tissue.md).
+  // Tissue deforms in the window, its solid stepped on a thread of its own beside the loops, and
+  // in a screenshot, the same steps as `proxima run` (Documentation/Tissue.md).
   inputs.tissue = buildSceneTissue(inputs.loaded, shared.stiffness, shared.rate);
   inputs.fingerPath = shared.path.empty() ? mouseStartPath(*inputs.loaded.scene, shared.radius)
                                           : readFingerPathFile(shared.path);

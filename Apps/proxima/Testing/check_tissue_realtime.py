@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks a `proxima run --realtime` of a scene with one tissue against the lockstep run of the
-same path (its summary): the threaded runtime steps the solid inside its proxy updates on the
-servo's clock on a thread of its own, so the tissue must do what it did in lockstep, up to the
+same path (its summary): the threaded runtime steps the solid on the servo's clock, on a thread
+of its own, so the tissue must do what it did in lockstep, up to the
 finger samples the real-time loop skipped and the steps that outlasted a tick
 (Documentation/Tissue.md, "On the real clock").
 - lockstep launched no step late and no update met a step-old surface (late_steps and

@@ -198,8 +198,8 @@ finally:
     stop(plain)
 
 # Tissue: the soft kidney of Data/Scenes/kidney-tissue.json uploaded as a scene, the finger
-# coming down 2.3 cm onto its upper pole and held there. The server's proxy thread steps the
-# solid, so the held force is the soft kidney's, as a lockstep `proxima run` of the same press
+# coming down 2.3 cm onto its upper pole and held there. The server's runtime steps the solid (on
+# the solid's own thread), so the held force is the soft kidney's, as a lockstep `proxima run` of the same press
 # gives it (about 0.165 N), not the rigid kidney's (kp times the 5.5 mm it gives way, 2.7 N).
 kidney = os.path.join(source, "Data", "Scenes", "kidney-tissue.json")
 hold = os.path.join(work, "kidney-hold.csv")
@@ -231,8 +231,9 @@ try:
     with open(kidney_state) as stream:
         kidney_rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(stream)]
     # A sanitizer build steps the solid 10 to 20 times slower (7-19 ms a step for the kidney under
-    # AddressSanitizer), past the servo's 5 ms watchdog, so the force fades there as it should:
-    # only the contact on the deformed kidney is checked.
+    # AddressSanitizer), several of its 5 ms steps late, and the proxy loop itself slows past the
+    # servo's watchdog at times, so the force fades there as it should: only the contact on the
+    # deformed kidney is checked.
     if os.environ.get("PROXIMA_SANITIZED") == "1":
         touching = [r for r in kidney_rows if r["model_version"] == 2 and r["contacts"] >= 1
                     and r["shape"] == 0]
