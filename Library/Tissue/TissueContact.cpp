@@ -199,14 +199,12 @@ void TissueContact::handOverSurface()
   m_solver->setObjectPoints(m_object, positions.data(), positions.size());
 }
 
-void TissueContact::addLagCorrection()
+void TissueContact::beforeSurfaceHandOver()
 {
-  // The ticks since the last step pressed the surface the solver had, which a solid stepping a
-  // step behind (TissueDynamics on its own thread) has since moved on from: each spring is
-  // anchored at the point the proxy pressed, not where the solid now starts, so a surface that
-  // already gave way under the press is pressed that much less, as the proxy would have pressed
-  // it had it seen it. With no lag (step()) every point is where it was pressed and this adds
-  // nothing.
+  if (m_solver == nullptr || m_numSprings == 0 || m_ticks == 0)
+  {
+    return;
+  }
   const std::vector<Vec3>& pressed = m_solver->queryObject(m_object).mesh.points();
   const std::vector<Vec3>& now = m_solid.positions();
   const double ticks = static_cast<double>(m_ticks);
@@ -241,10 +239,6 @@ void TissueContact::addLagCorrection()
 
 void TissueContact::loadStep()
 {
-  if (m_numSprings > 0 && m_ticks > 0)
-  {
-    addLagCorrection();
-  }
   if (m_numSprings == 0)
   {
     // A surface springing back toward a proxy it does not touch yet would rise into it within

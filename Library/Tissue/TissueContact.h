@@ -91,12 +91,19 @@ public:
   /// the direction to it the same way, from where they are, so that a surface springing back
   /// does not rise into the proxy unheld.
   void step();
-  /// The first half of step(), for a solid that steps on another thread a step behind
-  /// (TissueDynamics): gives the solid the press summed since the last step and the springs, as
-  /// step() does, each spring anchored where the proxy pressed the surface the solver has (the
-  /// solid may have moved on from it by a step). Then the solid steps, on any thread. Allocates
-  /// nothing; the solid must not be stepping.
+  /// The first half of step(), for a solid that steps on another thread (TissueDynamics): gives
+  /// the solid the press summed since the last step and the springs, as step() does. Then the
+  /// solid steps, on any thread. Allocates nothing; the solid must not be stepping.
   void loadStep();
+  /// Before the solver is given the points of a step that finished on another thread, while it
+  /// still has the surface before them: the ticks since the last loadStep() pressed that older
+  /// surface, which the solid has since moved on from. Each of the last tick's springs is
+  /// anchored where they pressed it, so the press those ticks summed is corrected by the
+  /// spring's change over the solid's move, as the proxy would have pressed had it seen the new
+  /// surface: a surface that already gave way is not pushed again for it. Nothing when no tick
+  /// pressed since loadStep() (lockstep hands over at once). Allocates nothing; the solid must
+  /// not be stepping.
+  void beforeSurfaceHandOver();
   /// The last half of step(): gives the solver the solid's points. Allocates nothing; the solid
   /// must not be stepping.
   void handOverSurface();
@@ -133,9 +140,6 @@ private:
   /// Loads the solid with the mean press of the ticks since the last step (`share` is one over
   /// their number) blended with the last step's load (setLoadRelaxation), and clears the sums.
   void applyRelaxedLoad(double share);
-  /// Adds to the press the springs' pull back to where the proxy pressed them, for a solid that
-  /// has moved on since (loadStep).
-  void addLagCorrection();
   /// Fills m_approaching from the first `count` entries of m_footprint (sorted), whose weights
   /// sum to `total`.
   void noteApproach(const Vec3& proxy, std::uint32_t count, double total);

@@ -193,11 +193,17 @@ bool TissueDynamics::beforeUpdate(ProxySolver& solver, std::uint64_t tick)
 
 void TissueDynamics::handOver(ProxySolver& solver)
 {
-  for (Tissue& tissue : m_tissues)
+  for (std::size_t t = 0; t < m_tissues.size(); ++t)
   {
+    Tissue& tissue = m_tissues[t];
     if (!tissue.launched)
     {
       continue;
+    }
+    // The ticks since the launch pressed the surface the solver still has.
+    if (TissueContact* contact = coupling(t))
+    {
+      contact->beforeSurfaceHandOver();
     }
     const std::vector<Vec3>& positions = tissue.solid->positions();
     std::copy(positions.begin(), positions.end(), tissue.handedOver.begin());

@@ -278,6 +278,92 @@ TEST(TissueContact, APressAndReleaseOnASoftBlockWithARelaxedLoad)
 // The relaxed load in closed form: pressed at A for a step, then at B (far enough that the two
 // footprints share no vertex) with a force of another size, the solid's load is the press's total
 // every step, and A's footprint keeps (1 - a)^n of it after n steps at B, a the relaxation.
+// The soft block pressed 3 mm and held, with each step of the solid handed to the solver `lag`
+// ticks after it was launched (a solid stepping on its own thread, slower than the ticks: the
+// next step launches at the first step tick after the hand-over, as TissueDynamics does). Returns
+// the force the spring holds the block with at the end, the least force from 20 steps after the
+// press on, and the proxy's height at the end.
+struct HeldPress
+{
+  double force = 0.0;
+  double leastHeldForce = 0.0;
+  double proxyZ = 0.0;
+};
+
+HeldPress holdTheSoftBlockPressed(int lag)
+{
+  SoftBlockContact fixture;
+  ElasticSolid& solid = *fixture.solid;
+  ProxySolver& solver = *fixture.solver;
+  TissueContact& contact = *fixture.contact;
+  // Above the block, then at once 3 mm into it (as a mouse wheel's notches put it).
+  auto fingerAt = [](double t) { return Vec3{0.0, 0.0, (t < 0.1 ? 0.001 : -0.003) + kRadius}; };
+  solver.resetProxy(fingerAt(0.0));
+  HeldPress held;
+  held.leastHeldForce = 1e9;
+  int handOverAt = -1; // the tick of the pending hand-over, or -1
+  // Long enough for 800 steps of the solid (4 s of its time) however late they come.
+  const int ticks = 800 * (kTicksPerStep + lag);
+  for (int i = 0; i < ticks; ++i)
+  {
+    if (handOverAt == i)
+    {
+      contact.beforeSurfaceHandOver();
+      contact.handOverSurface();
+      handOverAt = -1;
+    }
+    const Vec3 finger = fingerAt(i / kRate);
+    const ProxyTickResult result = solver.update(finger);
+    contact.addTick(result);
+    held.force = kStiffness * norm(finger - result.proxy);
+    held.proxyZ = result.proxy.z;
+    if (i >= static_cast<int>(0.1 * kRate) + 20 * (kTicksPerStep + lag))
+    {
+      held.leastHeldForce = std::min(held.leastHeldForce, held.force);
+    }
+    if ((i + 1) % kTicksPerStep == 0 && handOverAt < 0)
+    {
+      contact.loadStep();
+      solid.step();
+      if (lag == 0)
+      {
+        contact.beforeSurfaceHandOver(); // nothing: no tick since loadStep()
+        contact.handOverSurface();
+      }
+      else
+      {
+        handOverAt = i + lag;
+      }
+    }
+  }
+  return held;
+}
+
+// A solid whose steps reach the proxy late settles where one in step does, without falling away
+// from the finger on the way: the ticks that pressed the surface before a step are corrected at
+// its hand-over by the solid's move since (TissueContact::beforeSurfaceHandOver). Without the
+// correction the block, pushed by ticks that still met the surface before it gave way, was driven
+// down past where the press holds it: the held force dipped to 0.0675 N of 0.196 N at 40 ticks
+// behind (0.189 N at 12), and on the mouse's press of the threaded runtime, a 10 ms step behind
+// 1 ms ticks, the proxy came off the block (MouseFinger.OnTissueTheWheelSetsHowDeepTheFinger...
+// under a sanitizer).
+TEST(TissueContact, ASolidSteppingBehindTheProxySettlesWhereOneInStepDoes)
+{
+  const HeldPress inStep = holdTheSoftBlockPressed(0);
+  ASSERT_GT(inStep.force, 0.05);
+  for (const int lag : {3, 12, 40})
+  {
+    const HeldPress behind = holdTheSoftBlockPressed(lag);
+    std::printf("[ measured ] a step %d ticks behind: held force %.6g N (in step %.6g N), least "
+                "while held %.3g N\n",
+                lag, behind.force, inStep.force, behind.leastHeldForce);
+    EXPECT_NEAR(behind.force, inStep.force, 1e-3 * inStep.force) << lag << " ticks behind";
+    EXPECT_NEAR(behind.proxyZ, inStep.proxyZ, 1e-6) << lag << " ticks behind";
+    EXPECT_GT(behind.leastHeldForce, 0.9 * inStep.force)
+      << lag << " ticks behind: the block fell away from the pressed finger";
+  }
+}
+
 TEST(TissueContact, ARelaxedLoadKeepsThePressesTotalAndForgetsTheLastShapeGeometrically)
 {
   constexpr double kRelaxation = 0.3;
