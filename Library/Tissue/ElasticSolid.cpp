@@ -564,6 +564,16 @@ void ElasticSolid::step()
   }
 }
 
+double ElasticSolid::maxDisplacement() const
+{
+  double largest = 0.0;
+  for (std::size_t i = 0; i < m_positions.size(); ++i)
+  {
+    largest = std::max(largest, distance(m_positions[i], m_rest.points[i]));
+  }
+  return largest;
+}
+
 double ElasticSolid::kineticEnergy() const
 {
   double energy = 0.0;

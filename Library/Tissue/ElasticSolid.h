@@ -123,6 +123,8 @@ public:
 
   /// Kinetic energy (J).
   double kineticEnergy() const;
+  /// The largest distance of a vertex from its rest position (m). Allocates nothing.
+  double maxDisplacement() const;
   /// Elastic energy (J): each element's linear strain energy of its rotation-free displacement,
   /// with the rotation extracted as step() extracts it.
   double elasticEnergy() const;

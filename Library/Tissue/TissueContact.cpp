@@ -268,15 +268,18 @@ void TissueContact::loadStep()
   {
     applyRelaxedLoad(share);
   }
-  for (const std::uint32_t vertex : m_loaded)
+  else
   {
-    const Vec3 force = m_forceSum[vertex] * share;
-    m_solid.setExternalForce(vertex, force);
-    m_lastForce += force;
-    m_forceSum[vertex] = Vec3{};
-    m_isLoaded[vertex] = 0;
+    for (const std::uint32_t vertex : m_loaded)
+    {
+      const Vec3 force = m_forceSum[vertex] * share;
+      m_solid.setExternalForce(vertex, force);
+      m_lastForce += force;
+      m_forceSum[vertex] = Vec3{};
+      m_isLoaded[vertex] = 0;
+    }
+    m_loaded.clear();
   }
-  m_loaded.clear();
   m_ticks = 0;
   m_solid.setContactSprings(m_springs.data(), m_numSprings);
 }
@@ -324,13 +327,6 @@ void TissueContact::applyRelaxedLoad(double share)
 
 double TissueContact::maxDisplacement() const
 {
-  double largest = 0.0;
-  const std::vector<Vec3>& positions = m_solid.positions();
-  const std::vector<Vec3>& rest = m_solid.rest().points;
-  for (std::size_t i = 0; i < positions.size(); ++i)
-  {
-    largest = std::max(largest, distance(positions[i], rest[i]));
-  }
-  return largest;
+  return m_solid.maxDisplacement();
 }
 } // namespace proxima

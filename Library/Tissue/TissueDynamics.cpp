@@ -208,13 +208,7 @@ void TissueDynamics::handOver(ProxySolver& solver)
     const std::vector<Vec3>& positions = tissue.solid->positions();
     std::copy(positions.begin(), positions.end(), tissue.handedOver.begin());
     solver.setObjectPoints(tissue.object, positions.data(), positions.size());
-    const std::vector<Vec3>& rest = tissue.solid->rest().points;
-    double largest = 0.0;
-    for (std::size_t i = 0; i < positions.size(); ++i)
-    {
-      largest = std::max(largest, distance(positions[i], rest[i]));
-    }
-    tissue.reading.maxDisplacement = largest;
+    tissue.reading.maxDisplacement = tissue.solid->maxDisplacement();
   }
   m_inFlight = false;
   publishSurfaces(m_launchTick);
