@@ -133,6 +133,12 @@ struct SweepQuery
   double radius = 0.0;
   /// Contact skin (see sweepSphereTriangleWithSkin); 0 for the exact geometric query.
   double skin = 0.0;
+  /// Fraction of the path, from its start, that the caller knows meets no triangle of the tree
+  /// (0: nothing known). The walk then enters only spheres that reach the rest of the path; the
+  /// answer is the whole sweep's, bit for bit, when the caller is right. The proxy's candidate
+  /// cache knows it for the part of a slide inside its ball: without it a long slide that left the
+  /// ball had every triangle beside its start tested again.
+  double clearBefore = 0.0;
 };
 
 /// The answer of SphereTree::firstContact(): where along the sweep the sphere first meets a

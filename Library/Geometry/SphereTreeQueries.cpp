@@ -54,13 +54,17 @@ public:
     , m_start(query.start - origin)
     , m_motion(query.end - query.start)
     , m_reachBeyondSphere(query.radius + query.skin)
+    , m_clearBefore(query.clearBefore > 0.0 ? query.clearBefore : 0.0)
     , m_counts(counts)
   {}
 
   bool reachesNode(const SphereTreeNode& node)
   {
-    // The path up to the best contact at this node; its leaf spheres are tested against the same.
-    m_reachable = m_motion * m_best.t;
+    // The path from where it is not known clear up to the best contact at this node; its leaf
+    // spheres are tested against the same.
+    const double from = m_clearBefore < m_best.t ? m_clearBefore : m_best.t;
+    m_from = m_start + m_motion * from;
+    m_reachable = m_motion * (m_best.t - from);
     m_reachableSquared = dot(m_reachable, m_reachable);
     return reachesPath(centerOf(node), node.radius);
   }
@@ -95,7 +99,7 @@ private:
   bool reachesPath(const Vec3& center, float radius) const
   {
     const double reach = (static_cast<double>(radius) + m_reachBeyondSphere) * kPruneSlack;
-    return !(segmentDistanceSquared(m_start, m_reachable, m_reachableSquared, center) >
+    return !(segmentDistanceSquared(m_from, m_reachable, m_reachableSquared, center) >
              reach * reach);
   }
 
@@ -104,7 +108,9 @@ private:
   const Vec3 m_start; // in the tree's frame
   const Vec3 m_motion;
   const double m_reachBeyondSphere;
+  const double m_clearBefore;
   QueryStats& m_counts;
+  Vec3 m_from;
   Vec3 m_reachable;
   double m_reachableSquared = 0.0;
   SweepContact m_best;

@@ -444,6 +444,9 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
       outcome.t = contact.hit ? contact.t : 1.0;
       return outcome;
     }
+    // The cache holds every triangle the covered part can meet, and none does: the trees need
+    // only look beyond it.
+    query.clearBefore = covered;
   }
   for (std::uint32_t objectIndex = 0; objectIndex < m_scene->objects.size(); ++objectIndex)
   {
@@ -1117,8 +1120,10 @@ double ProxySolver::moveStage(ProxyTickState& tick, const Vec3& goal, ProxyTickR
   const SweepOutcome contact = sweep(m_proxy, goal, result.queries);
   const Vec3 before = m_proxy;
   m_proxy = contact.hit ? m_proxy + (goal - m_proxy) * contact.t : goal;
-  if (contact.hit)
+  if (contact.hit || tick.solution.numActive > 0)
   {
+    // Stopped by a contact, or a slide that ran clear (off a convex edge, the next move falls
+    // back onto the surface there): the proxy is on or near the surface.
     followInCache(result.queries);
   }
   tick.blocked.moved(goal, before, m_proxy);

@@ -5,6 +5,8 @@
 // Usage: ProfileTick MESH SCALE RADIUS PATH.csv REPEATS TICK [TICK...]
 //   Prints, per tick, its iterations and the least and median wall time of the repeats; with
 //   PROFILE_TICK_MOVES set, also the chain of points the tick moved through (MoveRecord.h).
+//   For exact counts of the ticks' work alone:
+//   valgrind --tool=callgrind --toggle-collect='*replayedUpdate*' ProfileTick ... 1 TICK
 #include "IO/Mesh/MeshReader.h"
 #include "IO/PathAndTrace/FingerPathFile.h"
 #include "Proxy/ProxySolver.h"
@@ -21,6 +23,17 @@
 #include <vector>
 
 using namespace proxima;
+
+namespace
+{
+// The replayed update alone, in a function of its own: `valgrind --tool=callgrind
+// --toggle-collect='*replayedUpdate*'` then counts the chosen ticks' instructions and nothing of
+// the path played to reach them.
+[[gnu::noinline]] ProxyTickResult replayedUpdate(ProxySolver& replica, const Vec3& finger)
+{
+  return replica.update(finger);
+}
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -63,7 +76,7 @@ int main(int argc, char** argv)
       {
         *replica = *start;
         const auto t0 = std::chrono::steady_clock::now();
-        const ProxyTickResult result = replica->update(record.finger);
+        const ProxyTickResult result = replayedUpdate(*replica, record.finger);
         const auto t1 = std::chrono::steady_clock::now();
         iterations = result.iterations;
         times.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());

@@ -261,6 +261,25 @@ void compareWithBruteForce(const TriangleMesh& mesh, const SphereTree& tree, Ran
                 ", brute force hit " + std::to_string(fromBrute.hit) + " t " + str(fromBrute.t) +
                 " triangle " + std::to_string(fromBrute.triangle));
     }
+    // The same sweep with a part of the path known clear, as the proxy's candidate cache knows
+    // it: any fraction up to the first contact (the whole path without one) gives the same answer,
+    // from fewer exact tests.
+    SweepQuery knownClear = q;
+    knownClear.clearBefore = random.uniform(0.0, 1.0) * (fromBrute.hit ? fromBrute.t : 1.0);
+    QueryStats clearWork;
+    QueryStats wholeWork;
+    tree.firstContact(mesh, q, *scratch, &wholeWork);
+    const SweepContact fromClear = tree.firstContact(mesh, knownClear, *scratch, &clearWork);
+    if (fromClear.hit != fromBrute.hit || fromClear.t != fromBrute.t ||
+        (fromBrute.hit && fromClear.triangle != fromBrute.triangle) ||
+        clearWork.trianglesTested > wholeWork.trianglesTested)
+    {
+      fail(i, "firstContact(clear before " + str(knownClear.clearBefore) + ") from " +
+                str(q.start) + " to " + str(q.end) + ": hit " + std::to_string(fromClear.hit) +
+                " t " + str(fromClear.t) + " triangle " + std::to_string(fromClear.triangle) +
+                " after " + std::to_string(clearWork.trianglesTested) + " tests (" +
+                std::to_string(wholeWork.trianglesTested) + " without)");
+    }
 
     // (c) nearest, with an unlimited, a generous and a tight search radius
     const Vec3 p = pointNearSurface(random, mesh, 3.0 * radius);
