@@ -6,6 +6,7 @@
 
 #include "Core/Vec3.h"
 #include "Geometry/ClosestPoint.h"
+#include "Geometry/TriangleFilter.h"
 #include "Geometry/TriangleMesh.h"
 #include "Geometry/TriangleTestCache.h"
 
@@ -139,6 +140,12 @@ struct SweepQuery
   /// cache knows it for the part of a slide inside its ball: without it a long slide that left the
   /// ball had every triangle beside its start tested again.
   double clearBefore = 0.0;
+  /// Optional: one record per triangle of the tree's mesh, in its order and frame
+  /// (makeTriangleFilters). A triangle whose record shows the path cannot come within the sweep's
+  /// reach is then not tested exactly; the answer is the same. Without them, every triangle under
+  /// a leaf sphere the path reaches is: a sphere resting on a surface of triangles much smaller
+  /// than itself reaches dozens of leaf spheres whose triangles lie under it, out of its way.
+  const TriangleFilter* filters = nullptr;
 };
 
 /// The answer of SphereTree::firstContact(): where along the sweep the sphere first meets a

@@ -81,6 +81,10 @@ public:
 
   void visitTriangle(std::uint32_t triangle)
   {
+    if (m_query.filters != nullptr && !mayReachFiltered(m_query.filters[triangle]))
+    {
+      return;
+    }
     ++m_counts.trianglesTested;
     const SweepResult hit = sweepSphereTriangleWithSkin(m_query.start, m_motion, m_query.radius,
                                                         m_query.skin, m_mesh.corners(triangle));
@@ -96,6 +100,17 @@ public:
   const SweepContact& best() const { return m_best; }
 
 private:
+  // The record's test on the part of the path that can still give the first contact (in the
+  // mesh's frame, where the records are): from where it is not known clear to the best contact
+  // so far, ends included, so a tie in t passes.
+  bool mayReachFiltered(const TriangleFilter& filter) const
+  {
+    const double from = m_clearBefore < m_best.t ? m_clearBefore : m_best.t;
+    const Vec3 motion = m_motion * (m_best.t - from);
+    return mayComeWithin(filter, m_query.start + m_motion * from, motion, dot(motion, motion),
+                         m_reachBeyondSphere);
+  }
+
   bool reachesPath(const Vec3& center, float radius) const
   {
     const double reach = (static_cast<double>(radius) + m_reachBeyondSphere) * kPruneSlack;

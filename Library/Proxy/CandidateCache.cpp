@@ -260,38 +260,13 @@ int CandidateCache::keepNearEdges(const CollisionScene& scene, const Vec3& start
 bool CandidateCache::mayReachSegment(int i, const Vec3& start, const Vec3& motion,
                                      double motionSquared, double reach) const
 {
-  // Distance from the triangle's sphere centre to the segment.
-  const Vec3 toCenter = Vec3{m_sphereX[i], m_sphereY[i], m_sphereZ[i]} - start;
-  double s = motionSquared > 0.0 ? dot(toCenter, motion) / motionSquared : 0.0;
-  s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
-  const double sphereReach = m_sphereRadius[i] + reach;
-  if (squaredDistance(toCenter, motion * s) > sphereReach * sphereReach)
-  {
-    return false;
-  }
-  // The segment's heights above the plane are linear along it: it stays beyond the reach on one
-  // side, or comes no nearer than the lower end.
-  const Vec3 normal{m_normalX[i], m_normalY[i], m_normalZ[i]};
-  const double planeReach = reach + m_planeSlack[i];
-  const double startHeight = dot(normal, start) - m_planeOffset[i];
-  const double endHeight = startHeight + dot(normal, motion);
-  if ((startHeight > planeReach && endHeight > planeReach) ||
-      (startHeight < -planeReach && endHeight < -planeReach))
-  {
-    return false;
-  }
-  const double lowest = (startHeight > 0.0) == (endHeight > 0.0)
-                          ? std::min(std::fabs(startHeight), std::fabs(endHeight))
-                          : 0.0;
-  const double lateral = std::sqrt(std::max(0.0, planeReach * planeReach - lowest * lowest));
-  // The segment projected into the plane, against the triangle's bounding circle there.
-  const Vec3 centerInPlane = toCenter - normal * dot(normal, toCenter);
-  const Vec3 motionInPlane = motion - normal * dot(normal, motion);
-  const double inPlaneSquared = squaredNorm(motionInPlane);
-  double u = inPlaneSquared > 0.0 ? dot(centerInPlane, motionInPlane) / inPlaneSquared : 0.0;
-  u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-  const double circleReach = m_sphereRadius[i] + lateral;
-  return squaredDistance(centerInPlane, motionInPlane * u) <= circleReach * circleReach;
+  TriangleFilter filter;
+  filter.centroid = Vec3{m_sphereX[i], m_sphereY[i], m_sphereZ[i]};
+  filter.radius = m_sphereRadius[i];
+  filter.normal = Vec3{m_normalX[i], m_normalY[i], m_normalZ[i]};
+  filter.offset = m_planeOffset[i];
+  filter.planeSlack = m_planeSlack[i];
+  return mayComeWithin(filter, start, motion, motionSquared, reach);
 }
 
 std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Vec3& point,

@@ -7,7 +7,7 @@
 #include "Geometry/SphereTree.h"
 #include "Geometry/TriangleMesh.h"
 #include "Proxy/SurfaceMaterial.h"
-#include "Proxy/TriangleFilter.h"
+#include "Geometry/TriangleFilter.h"
 
 #include <cstdint>
 #include <memory>

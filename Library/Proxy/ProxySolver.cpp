@@ -453,6 +453,9 @@ ProxySolver::SweepOutcome ProxySolver::sweep(const Vec3& from, const Vec3& to, Q
     const CollisionObject& object = queryObject(objectIndex);
     const RigidTransform* pose = treePose(objectIndex);
     SweepQuery inObject = query;
+    // The records are in the mesh's frame, as the sweep is made below.
+    inObject.filters =
+      object.filters.size() == object.mesh.numTriangles() ? object.filters.data() : nullptr;
     if (pose != nullptr)
     {
       inObject.start = pose->applyInverse(from);

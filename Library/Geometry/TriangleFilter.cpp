@@ -1,4 +1,4 @@
-#include "Proxy/TriangleFilter.h"
+#include "Geometry/TriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
