@@ -7,7 +7,12 @@
 // The block's cells are finest under the proxy and grow away from it (makeGridTetMesh), so that
 // the contact spans many cells while the block spans many contact radii.
 //
-//   TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS LOAD_RELAXATION]
+//   TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS LOAD_RELAXATION BLOCK_MM]
+//
+// BLOCK_MM is the block's half width and its depth (25: a 5 x 5 x 2.5 cm block). Hertz's law is
+// for a half-space: a block fixed at its base a few contact radii below stiffens the contact (a
+// bonded layer's correction, Dimitriadis et al. 2002, is about 1 + 0.88 a / h at nu = 0.3: 8 % at
+// d = 0.2 R under 2.5 cm), so the finer meshes are pressed into a larger one.
 //
 // Tools/tissue_hertz.py runs it for Documentation/TissueHertzTable.md. It prints one JSON
 // object: the mesh (tetrahedra) and per depth d/R, d, F, Hertz's F, their ratio and how much the
@@ -33,8 +38,6 @@ using namespace proxima;
 constexpr double kRadius = 0.005;
 constexpr double kYoungsModulus = 10000.0;
 constexpr double kPoissonRatio = 0.3;
-constexpr double kHalfWidth = 0.025;
-constexpr double kDepth = 0.025;
 constexpr double kStiffness = 1000.0;
 constexpr double kRate = 1000.0;
 constexpr int kTicksPerStep = 5;
@@ -45,9 +48,9 @@ double hertzForce(double indentation)
          std::pow(indentation, 1.5);
 }
 
-std::vector<double> symmetricCoordinates(double finest, double growth)
+std::vector<double> symmetricCoordinates(double halfWidth, double finest, double growth)
 {
-  std::vector<double> side = gradedCoordinates(0.0, kHalfWidth, finest, growth);
+  std::vector<double> side = gradedCoordinates(0.0, halfWidth, finest, growth);
   std::vector<double> all;
   for (auto it = side.rbegin(); it != side.rend(); ++it)
   {
@@ -63,7 +66,7 @@ int main(int argc, char** argv)
   if (argc < 3)
   {
     std::fprintf(stderr, "usage: TissueHertzContact FINEST_MM GROWTH [FOOTPRINT_GAP ITERATIONS "
-                         "LOAD_RELAXATION]\n");
+                         "LOAD_RELAXATION BLOCK_MM]\n");
     return 2;
   }
   const double finest = std::atof(argv[1]) * 1e-3;
@@ -71,16 +74,19 @@ int main(int argc, char** argv)
   const double gap = argc > 3 ? std::atof(argv[3]) : TissueContact::kFootprintGap;
   const int iterations = argc > 4 ? std::atoi(argv[4]) : 200;
   const double relaxation = argc > 5 ? std::atof(argv[5]) : 1.0;
-  if (!(finest > 0.0 && finest < kHalfWidth) || !(growth >= 1.0) || !(gap > 0.0) ||
-      iterations < 1 || !(relaxation > 0.0 && relaxation <= 1.0))
+  const double blockSize = argc > 6 ? std::atof(argv[6]) * 1e-3 : 0.025;
+  if (!(blockSize > 2.0 * kRadius && blockSize < 1.0) || !(finest > 0.0 && finest < blockSize) ||
+      !(growth >= 1.0) || !(gap > 0.0) || iterations < 1 ||
+      !(relaxation > 0.0 && relaxation <= 1.0))
   {
-    std::fprintf(stderr, "TissueHertzContact: want 0 < FINEST_MM < 25, GROWTH >= 1, "
-                         "FOOTPRINT_GAP > 0, ITERATIONS >= 1 and 0 < LOAD_RELAXATION <= 1\n");
+    std::fprintf(stderr, "TissueHertzContact: want 10 < BLOCK_MM < 1000, 0 < FINEST_MM < BLOCK_MM, "
+                         "GROWTH >= 1, FOOTPRINT_GAP > 0, ITERATIONS >= 1 and "
+                         "0 < LOAD_RELAXATION <= 1\n");
     return 2;
   }
 
-  const std::vector<double> across = symmetricCoordinates(finest, growth);
-  std::vector<double> down = gradedCoordinates(0.0, -kDepth, finest, growth);
+  const std::vector<double> across = symmetricCoordinates(blockSize, finest, growth);
+  std::vector<double> down = gradedCoordinates(0.0, -blockSize, finest, growth);
   std::reverse(down.begin(), down.end());
   const TetMesh block = makeGridTetMesh(across, across, down);
 
@@ -91,7 +97,7 @@ int main(int argc, char** argv)
   ElasticSolid solid(block, ElasticMaterial{kYoungsModulus, kPoissonRatio}, settings);
   for (std::uint32_t v = 0; v < block.points.size(); ++v)
   {
-    if (block.points[v].z < -kDepth + 1e-9)
+    if (block.points[v].z < -blockSize + 1e-9)
     {
       solid.fixVertex(v);
     }
@@ -122,8 +128,8 @@ int main(int argc, char** argv)
   double fingerZ = kRadius + 0.002;
   solver->resetProxy({0.0, 0.0, fingerZ});
   std::printf("{\"finest_m\": %g, \"growth\": %g, \"footprint_gap\": %g, \"iterations\": %d, "
-              "\"load_relaxation\": %g, \"tetrahedra\": %zu, \"depths\": [",
-              finest, growth, gap, iterations, relaxation, block.tets.size());
+              "\"load_relaxation\": %g, \"block_m\": %g, \"tetrahedra\": %zu, \"depths\": [",
+              finest, growth, gap, iterations, relaxation, blockSize, block.tets.size());
   bool first = true;
   for (const double relative : depths)
   {
