@@ -6,7 +6,6 @@
 
 #include "Core/Vec3.h"
 #include "Geometry/ClosestPoint.h"
-#include "Geometry/TriangleFilter.h"
 #include "Geometry/TriangleMesh.h"
 #include "Geometry/TriangleTestCache.h"
 
@@ -121,6 +120,8 @@ struct SphereTreeScratch
   /// The triangles already tested in the current query, so that each is tested once.
   TriangleTestCache tested;
 };
+
+struct TriangleFilter; // Geometry/TriangleFilter.h
 
 /// A sphere swept along a segment, the query of SphereTree::firstContact(). Positions are in the
 /// frame of the mesh the tree was built over.

@@ -4,6 +4,7 @@
 #include "Geometry/SphereTree.h"
 
 #include "Geometry/SweptSphere.h"
+#include "Geometry/TriangleFilter.h"
 
 #include <cassert>
 #include <cmath>
@@ -62,7 +63,7 @@ public:
   {
     // The path from where it is not known clear up to the best contact at this node; its leaf
     // spheres are tested against the same.
-    const double from = m_clearBefore < m_best.t ? m_clearBefore : m_best.t;
+    const double from = unclearFrom();
     m_from = m_start + m_motion * from;
     m_reachable = m_motion * (m_best.t - from);
     m_reachableSquared = dot(m_reachable, m_reachable);
@@ -100,12 +101,16 @@ public:
   const SweepContact& best() const { return m_best; }
 
 private:
+  // Where the part of the path that can still give the first contact begins: where the caller
+  // no longer knows it clear, or the best contact so far if that is sooner.
+  double unclearFrom() const { return m_clearBefore < m_best.t ? m_clearBefore : m_best.t; }
+
   // The record's test on the part of the path that can still give the first contact (in the
   // mesh's frame, where the records are): from where it is not known clear to the best contact
   // so far, ends included, so a tie in t passes.
   bool mayReachFiltered(const TriangleFilter& filter) const
   {
-    const double from = m_clearBefore < m_best.t ? m_clearBefore : m_best.t;
+    const double from = unclearFrom();
     const Vec3 motion = m_motion * (m_best.t - from);
     return mayComeWithin(filter, m_query.start + m_motion * from, motion, dot(motion, motion),
                          m_reachBeyondSphere);

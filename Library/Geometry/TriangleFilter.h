@@ -14,7 +14,8 @@
 namespace proxima
 {
 
-/// One triangle's record for the candidate cache's rejection tests: a bounding sphere about its
+/// One triangle's record for the sweeps' rejection tests (the candidate cache's, the trees'): a
+/// bounding sphere about its
 /// centroid and its plane, each widened against rounding so that no test drops a triangle the
 /// exact test would find.
 struct TriangleFilter

@@ -5,9 +5,9 @@
 #pragma once
 
 #include "Geometry/SphereTree.h"
+#include "Geometry/TriangleFilter.h"
 #include "Geometry/TriangleMesh.h"
 #include "Proxy/SurfaceMaterial.h"
-#include "Geometry/TriangleFilter.h"
 
 #include <cstdint>
 #include <memory>

@@ -13,6 +13,7 @@
 
 #include "Geometry/ProceduralMeshes.h"
 #include "Geometry/SweptSphere.h"
+#include "Geometry/TriangleFilter.h"
 
 #include "GeometryTestSupport.h"
 
@@ -262,11 +263,10 @@ void compareWithBruteForce(const TriangleMesh& mesh, const SphereTree& tree, Ran
                 ", brute force hit " + std::to_string(fromBrute.hit) + " t " + str(fromBrute.t) +
                 " triangle " + std::to_string(fromBrute.triangle));
     }
-    // The same sweep with a part of the path known clear, as the proxy's candidate cache knows
-    // it: any fraction up to the first contact (the whole path without one) gives the same answer,
-    // from fewer exact tests.
-    // And with the triangles' filter records, with and without the known clear part: the same
-    // answer again, from no more exact tests.
+    // The same sweep with a part of the path known clear (as the proxy's candidate cache knows
+    // it: any fraction up to the first contact, the whole path without one), with the triangles'
+    // filter records, and with both: the brute force's answer each time, from no more exact
+    // tests than the plain sweep.
     SweepQuery knownClear = q;
     knownClear.clearBefore = random.uniform(0.0, 1.0) * (fromBrute.hit ? fromBrute.t : 1.0);
     QueryStats wholeWork;

@@ -275,9 +275,6 @@ TEST(TissueContact, APressAndReleaseOnASoftBlockWithARelaxedLoad)
   pressAndReleaseTheSoftBlock(0.3);
 }
 
-// The relaxed load in closed form: pressed at A for a step, then at B (far enough that the two
-// footprints share no vertex) with a force of another size, the solid's load is the press's total
-// every step, and A's footprint keeps (1 - a)^n of it after n steps at B, a the relaxation.
 // The soft block pressed 3 mm and held, with each step of the solid handed to the solver `lag`
 // ticks after it was launched (a solid stepping on its own thread, slower than the ticks: the
 // next step launches at the first step tick after the hand-over, as TissueDynamics does). Returns
@@ -364,6 +361,9 @@ TEST(TissueContact, ASolidSteppingBehindTheProxySettlesWhereOneInStepDoes)
   }
 }
 
+// The relaxed load in closed form: pressed at A for a step, then at B (far enough that the two
+// footprints share no vertex) with a force of another size, the solid's load is the press's total
+// every step, and A's footprint keeps (1 - a)^n of it after n steps at B, a the relaxation.
 TEST(TissueContact, ARelaxedLoadKeepsThePressesTotalAndForgetsTheLastShapeGeometrically)
 {
   constexpr double kRelaxation = 0.3;
