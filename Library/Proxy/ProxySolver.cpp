@@ -25,6 +25,11 @@ constexpr double kSameNormalCosine = 1.0 - 1e-14;
 // 4009, 8.2e-11 rad). A merge at this angle hides a crossing of at most 1e-13 of a slide: below
 // the goal solver's feasibility tolerance and the sweep's touching slope (both 1e-12).
 constexpr double kSameFaceNormalSine = 1e-13;
+// The reserve band (ProxySolver::nearBand) as a share of the contact gap DESIGN.md section 4
+// allows: a plane promoted from it holds the proxy at most this far beyond its radius.
+constexpr double kNearBandOfContactGap = 0.8;
+// The steepest heading into a reserve triangle (over the step's length) that promotes its plane.
+constexpr double kGrazingSlope = 0.5;
 
 // Whether the proxy, touching `corners` at `closest` with contact normal `normal`, sits on a curved
 // part of the triangle's configuration-space obstacle: an edge or corner contact off the face's
@@ -118,6 +123,10 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_skin = scene != nullptr ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
                             : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
+  m_numReserve = 0;
+  m_nearBand = std::max(contactEpsilon(),
+                        kNearBandOfContactGap *
+                          std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0)));
   m_coherenceMargin =
     parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin : parameters.radius;
   m_cacheMargin = m_coherenceMargin;
@@ -503,7 +512,14 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
   {
     return complete;
   }
-  const double reach = m_parameters.radius + contactEpsilon();
+  m_numReserve = 0;
+  // No reserve on a deforming surface: its contact force goes to the touched triangle's points
+  // and the carry puts the proxy at its radius plus half a skin (DeformingObjects.h), so a plane
+  // held a band away would change the force the tissue feels, by 2e-6 of it on the block scene
+  // (TissueScenes.ABlockSceneFilePlaysAsTheCouplingBuiltByHand).
+  const double reach =
+    m_parameters.radius + (hasDeformingObjects() ? contactEpsilon() : m_nearBand);
+  const double contactReach = m_parameters.radius + contactEpsilon();
   std::uint32_t stored = 0;
   if (m_cache.coversBall(position, reach))
   {
@@ -537,55 +553,62 @@ bool ProxySolver::collectPlanes(const Vec3& position, QueryStats& stats)
     }
   }
   sortNearby(stored);
+  m_numNearby = stored;
   for (std::uint32_t i = 0; i < stored; ++i)
   {
-    const NearbyTriangle& near = m_nearby[i];
-    const Vec3 away = position - near.closest.point;
-    const double length = norm(away);
-    if (!(length > 0.0))
+    if (m_nearby[i].closest.squaredDistance > contactReach * contactReach)
     {
-      continue; // the centre lies on the triangle: no direction is free of it
-    }
-    const Vec3 normal = away / length;
-    const bool curved =
-      touchesCurvedPart(placedMesh(m_nearbyObject[i]).corners(near.triangle), near.closest, normal);
-    bool duplicate = false;
-    for (int k = 0; k < m_numPlanes && !duplicate; ++k)
-    {
-      const bool twoFaces = near.closest.feature == TriangleFeature::Face &&
-                            m_planes[k].closest.feature == TriangleFeature::Face;
-      duplicate = dot(m_normals[k], normal) >= kSameNormalCosine &&
-                  (!twoFaces || squaredNorm(cross(m_normals[k], normal)) <=
-                                  kSameFaceNormalSine * kSameFaceNormalSine);
-      if (duplicate)
-      {
-        m_planes[k].curved = m_planes[k].curved && curved; // one flat witness makes it flat
-      }
-    }
-    if (duplicate)
-    {
+      m_reserve[m_numReserve++] = static_cast<std::uint16_t>(i);
       continue;
     }
-    if (m_numPlanes == kMaxConstraintPlanes)
-    {
-      complete = false;
-      continue;
-    }
-    ContactPlane& plane = m_planes[m_numPlanes];
-    plane.normal = normal;
-    plane.object = m_nearbyObject[i];
-    plane.triangle = near.triangle;
-    plane.closest = near.closest;
-    plane.depth = 0.0;
-    plane.curved = curved;
-    m_normals[m_numPlanes] = normal;
-    ++m_numPlanes;
+    complete = addPlane(position, i) && complete;
   }
   for (int k = 0; k < m_numPlanes; ++k)
   {
     complete = dressPlane(m_planes[k], !sharesTouchedFeature(m_planes[k], stored)) && complete;
   }
   return complete;
+}
+
+bool ProxySolver::addPlane(const Vec3& position, std::uint32_t i)
+{
+  const NearbyTriangle& near = m_nearby[i];
+  const Vec3 away = position - near.closest.point;
+  const double length = norm(away);
+  if (!(length > 0.0))
+  {
+    return true; // the centre lies on the triangle: no direction is free of it
+  }
+  const Vec3 normal = away / length;
+  const bool curved =
+    touchesCurvedPart(placedMesh(m_nearbyObject[i]).corners(near.triangle), near.closest, normal);
+  for (int k = 0; k < m_numPlanes; ++k)
+  {
+    const bool twoFaces = near.closest.feature == TriangleFeature::Face &&
+                          m_planes[k].closest.feature == TriangleFeature::Face;
+    const bool duplicate = dot(m_normals[k], normal) >= kSameNormalCosine &&
+                           (!twoFaces || squaredNorm(cross(m_normals[k], normal)) <=
+                                           kSameFaceNormalSine * kSameFaceNormalSine);
+    if (duplicate)
+    {
+      m_planes[k].curved = m_planes[k].curved && curved; // one flat witness makes it flat
+      return true;
+    }
+  }
+  if (m_numPlanes == kMaxConstraintPlanes)
+  {
+    return false;
+  }
+  ContactPlane& plane = m_planes[m_numPlanes];
+  plane.normal = normal;
+  plane.object = m_nearbyObject[i];
+  plane.triangle = near.triangle;
+  plane.closest = near.closest;
+  plane.depth = 0.0;
+  plane.curved = curved;
+  m_normals[m_numPlanes] = normal;
+  ++m_numPlanes;
+  return true;
 }
 
 void ProxySolver::sortNearby(std::uint32_t count)
@@ -1053,10 +1076,94 @@ void ProxySolver::updateStage(ProxyTickState& tick, ProxyTickResult& result)
     tick.shading.reshade(m_proxy + shadedSubgoal(tick.finger - m_proxy), m_shadingTolerance);
   }
   tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+  if (m_numReserve > 0)
+  {
+    promoteNearPlanes(tick, result);
+  }
   result.usedExactFallback = result.usedExactFallback || tick.solution.usedExactFallback;
   if (m_anyFriction)
   {
     applyFriction(tick, result);
+  }
+}
+
+bool ProxySolver::plainSurface(std::uint32_t objectIndex) const
+{
+  // What dressPlane would give a plane of this object: no shading, texture or friction.
+  const SurfaceMaterial& material = m_scene->objects[objectIndex].material;
+  const TriangleMesh& mesh = placedMesh(objectIndex);
+  return !(material.shading && mesh.hasPointNormals()) &&
+         !(!material.textures.empty() && mesh.hasTexCoords()) && !material.hasFriction();
+}
+
+void ProxySolver::promoteNearPlanes(ProxyTickState& tick, ProxyTickResult& result)
+{
+  // Near the apex of a CAD cone made of slivers, dozens of facets lie within a nanometre of the
+  // proxy, and only those within contactEpsilon() (a few picometres) gave planes: each move
+  // toward the goal was stopped after a few nanometres by the next facet, one new plane an
+  // iteration, each iteration an exact test of the 200 slivers touching the proxy. A triangle
+  // lies behind its tangent plane at its closest point, so the goal may go as far as that plane
+  // allows; one that would cross it (less the skin, where a fresh contact stops) is given the
+  // plane before the move. Only plain surfaces: a shaded, textured or frictional plane changes the
+  // target the update stage has already chosen.
+  if (tick.shading.used() || m_anyFriction || m_anyShaded)
+  {
+    return;
+  }
+  const double stopAt = m_parameters.radius + m_skin;
+  while (m_numReserve > 0 && m_numPlanes < kMaxConstraintPlanes)
+  {
+    const Vec3& step = tick.solution.displacement;
+    const double stepLength = norm(step);
+    int nearest = -1;
+    double nearestShare = 1.0;
+    for (int k = 0; k < m_numReserve; ++k)
+    {
+      const NearbyTriangle& near = m_nearby[m_reserve[k]];
+      const Vec3 away = m_proxy - near.closest.point;
+      const double length = norm(away);
+      const double approach = -dot(away, step) / length;
+      const double room = length - stopAt;
+      // A step that heads into the triangle steeply settles onto it, as any fall onto a surface
+      // does, and the contact keeps its skin-wide gap; a step that grazes it would be stopped
+      // after room / slope, a few nanometres of a long slide.
+      if (approach > room && approach < kGrazingSlope * stepLength &&
+          room < nearestShare * approach)
+      {
+        nearest = k;
+        nearestShare = room / approach;
+      }
+    }
+    if (nearest < 0)
+    {
+      return;
+    }
+    const std::uint32_t index = m_reserve[nearest];
+    m_reserve[nearest] = m_reserve[--m_numReserve];
+    if (!plainSurface(m_nearbyObject[index]))
+    {
+      continue;
+    }
+    const int before = m_numPlanes;
+    addPlane(m_proxy, index);
+    if (m_numPlanes == before)
+    {
+      continue; // the same normal as a plane already there
+    }
+    if (!dressPlane(m_planes[before], !sharesTouchedFeature(m_planes[before], m_numNearby)))
+    {
+      result.conditions.set(TickCondition::contactOverflow);
+    }
+    tick.solution = solveGoal(tick.shading.target() - m_proxy, m_normals, m_numPlanes);
+    if (squaredNorm(tick.solution.displacement) <= m_nearBand * m_nearBand)
+    {
+      // The promoted planes hold the proxy within the band of where it would settle: no step
+      // that short is worth a move. Left to run, two planes a band apart traded the proxy
+      // between two points 1.6e-12 m apart for ever, 1 km from the origin, where a nearly flat
+      // crease's direction is rounding.
+      tick.solution.displacement = Vec3{};
+      return;
+    }
   }
 }
 

@@ -258,6 +258,11 @@ public:
   double skin() const { return m_skin; }
   /// Primitives within radius + contactEpsilon() of the proxy give constraint planes.
   double contactEpsilon() const { return 2.0 * m_skin; }
+  /// Primitives within radius + nearBand() of the proxy, beyond contactEpsilon(), are held in
+  /// reserve: one whose plane the goal would cross becomes a constraint plane before the move
+  /// (promoteNearPlanes). 0.8 of the contact gap DESIGN.md allows (max(1e-9 m, 1e-9 x the scene
+  /// diagonal)), and at least contactEpsilon(); a scene with deforming objects keeps no reserve.
+  double nearBand() const { return m_nearBand; }
 
 private:
   // The steps of one tick (update()), in the order the loop takes them; the state they share
@@ -308,6 +313,14 @@ private:
   bool gatherPlanes(const Vec3& position, QueryStats& stats);
   /// gatherPlanes without the reuse.
   bool collectPlanes(const Vec3& position, QueryStats& stats);
+  /// Makes a constraint plane of m_nearby[i] at `position` unless one with the same normal is
+  /// there; false when the planes are full.
+  bool addPlane(const Vec3& position, std::uint32_t i);
+  /// The triangles held in reserve (nearBand()) whose planes the goal crosses, nearest crossing
+  /// first, become constraint planes and the goal is solved again, until the goal crosses none.
+  void promoteNearPlanes(ProxyTickState& tick, ProxyTickResult& result);
+  /// True if the object's planes get no surface effects (shading, texture, friction).
+  bool plainSurface(std::uint32_t objectIndex) const;
   /// Gives a gathered plane its surface effects (shading, friction, texture) and its first-pass
   /// normals; `alone`: no other triangle gave the same plane. False if the buffers overflowed.
   bool dressPlane(ContactPlane& plane, bool alone);
@@ -404,6 +417,13 @@ private:
   Vec3 m_firstPassNormals[kMaxConstraintPlanes];
   int m_numFirstPass = 0;
   int m_numPlanes = 0;
+  /// Gathered triangles (indices into m_nearby) beyond contactEpsilon() but within nearBand(),
+  /// not yet promoted.
+  std::uint16_t m_reserve[kMaxNearbyTriangles];
+  int m_numReserve = 0;
+  /// How many of m_nearby the last gather filled.
+  std::uint32_t m_numNearby = 0;
+  double m_nearBand = 0.0;
   bool m_anyShaded = false;
   bool m_anyFriction = false;
   bool m_planesValid = false;

@@ -3,7 +3,8 @@
 // does (lockstep, default servo and proxy parameters but the radius), no budget.
 //
 // Usage: ProfileTick MESH SCALE RADIUS PATH.csv REPEATS TICK [TICK...]
-//   Prints, per tick, its iterations and the least and median wall time of the repeats; with
+//   Prints, per tick, its iterations, the least and median wall time of the repeats and its query
+//   counters (QueryStats); with
 //   PROFILE_TICK_MOVES set, also the chain of points the tick moved through (MoveRecord.h).
 //   For exact counts of the ticks' work alone:
 //   valgrind --tool=callgrind --toggle-collect='*replayedUpdate*' ProfileTick ... 1 TICK
@@ -72,6 +73,7 @@ int main(int argc, char** argv)
       const Vec3 fingerHere = record.finger;
       std::vector<double> times;
       int iterations = 0;
+      QueryStats queries;
       for (int r = 0; r < repeats; ++r)
       {
         *replica = *start;
@@ -79,6 +81,7 @@ int main(int argc, char** argv)
         const ProxyTickResult result = replayedUpdate(*replica, record.finger);
         const auto t1 = std::chrono::steady_clock::now();
         iterations = result.iterations;
+        queries = result.queries;
         times.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
       }
       std::sort(times.begin(), times.end());
@@ -89,6 +92,9 @@ int main(int argc, char** argv)
         replica->recordMoves(&record);
         replica->update(fingerHere);
         replica->recordMoves(nullptr);
+        std::printf("  start %.17g %.17g %.17g, finger %.17g %.17g %.17g\n",
+                    record.points[0].position.x, record.points[0].position.y,
+                    record.points[0].position.z, fingerHere.x, fingerHere.y, fingerHere.z);
         for (std::size_t k = 0; k < record.count; ++k)
         {
           const Vec3 p = record.points[k].position;
@@ -98,8 +104,10 @@ int main(int argc, char** argv)
                       norm(p - fingerHere), step);
         }
       }
-      std::printf("tick %ld: %d iterations, least %.1f us, median %.1f us\n", tick, iterations,
-                  times.front(), times[times.size() / 2]);
+      std::printf("tick %ld: %d iterations, least %.1f us, median %.1f us; %u nodes, %u leaf "
+                  "spheres, %u triangles tested\n",
+                  tick, iterations, times.front(), times[times.size() / 2], queries.nodesVisited,
+                  queries.leafSpheresTested, queries.trianglesTested);
     }
     *start = *solver;
     ++tick;
