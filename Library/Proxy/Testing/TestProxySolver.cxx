@@ -556,6 +556,49 @@ TEST(ProxySolverFound, SheetsCrossingAtATinyAngleAreTwoPlanes)
   rig.expectClean("found-crossing-planes-8e-11-rad");
 }
 
+TEST(ProxySolverReserve, AFaceABandAwayThatTheSlideWouldGrazeIsAPlaneBeforeTheMove)
+{
+  // A floor (z = 0, x <= 0) and a ramp rising from x = 0 at a slope of 0.2: a concave crease. The
+  // proxy rests on the floor 0.4 nm short of where it would touch the ramp too, and the finger
+  // pulls along the floor into the crease. The ramp is beyond the contact reach (two
+  // skins) and within the reserve band (ProxySolver::nearBand), and the slide along the floor
+  // heads into it at a fifth of its length: its plane joins the floor's before any move, the goal
+  // is the proxy itself, and the tick ends where it began, against both planes. Without the
+  // reserve, the slide is stopped after a few nanometres and the tick makes a move to get there.
+  constexpr double kSlope = 0.2;
+  TriangleSoup soup;
+  soup.points = {
+    {-0.05, -0.05, 0.0},          {0.0, -0.05, 0.0},          {0.0, 0.05, 0.0}, {-0.05, 0.05, 0.0},
+    {0.05, -0.05, 0.05 * kSlope}, {0.05, 0.05, 0.05 * kSlope}};
+  soup.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+  const double rampLength = std::sqrt(1.0 + kSlope * kSlope);
+  // Where, on the floor at the fresh-contact height, the ramp (the plane through the origin with
+  // normal (-slope, 0, 1) / rampLength) is `gap` beyond the radius.
+  const auto along = [&](double height, double gap) {
+    return (height - (kRadius + gap) * rampLength) / kSlope;
+  };
+  const double probeSkin = [&] {
+    Rig probe(soup, {-0.01, 0.0, 0.01});
+    return probe.skin();
+  }();
+  const double height = kRadius + probeSkin;
+  const double gap = 4e-10;
+  const Vec3 start{along(height, gap), 0.0, height};
+  Rig rig(soup, start);
+  ASSERT_GT(rig.solver().nearBand(), gap);
+  ASSERT_LT(rig.solver().contactEpsilon(), gap);
+  // Deep below both faces, within the crease's normal cone: the crease is the local minimum.
+  const ProxyTickResult r = rig.step({0.001, 0.0, -0.01});
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_EQ(r.proxy, start);
+  EXPECT_EQ(r.numContacts, 2);
+  // The ramp holds the proxy the band's width off at most: within the contact gap of section 4.
+  const double rampGap = (dot(Vec3{-kSlope, 0.0, 1.0}, r.proxy)) / rampLength - kRadius;
+  EXPECT_GT(rampGap, 0.0);
+  EXPECT_LE(rampGap, rig.solver().nearBand());
+  rig.expectClean("reserve-band-crease");
+}
+
 TEST(ProxySolverFound, StretchedSlideIntoATouchedPlaneFallsBackToThePlaneSlide)
 {
   // Found by the performance report's scaling run (BenchTimeVersusError --scaling,
