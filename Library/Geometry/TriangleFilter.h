@@ -15,9 +15,8 @@ namespace proxima
 {
 
 /// One triangle's record for the sweeps' rejection tests (the candidate cache's, the trees'): a
-/// bounding sphere about its
-/// centroid and its plane, each widened against rounding so that no test drops a triangle the
-/// exact test would find.
+/// bounding sphere about its centroid and its plane, each widened against rounding so that no
+/// test drops a triangle the exact test would find.
 struct TriangleFilter
 {
   /// The centroid of the corners, the centre of the bounding sphere (m).

@@ -123,10 +123,10 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
   m_skin = scene != nullptr ? resolveSkin(parameters, scene->diagonal(), scene->maxAbsCoordinate())
                             : resolveSkin(parameters, 0.0, 0.0);
   m_numPlanes = 0;
+  // DESIGN.md section 4's accuracy scale: 1 nm, or 1e-9 of the scene's size if larger.
+  const double accuracyScale = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
   m_numReserve = 0;
-  m_nearBand = std::max(contactEpsilon(),
-                        kNearBandOfContactGap *
-                          std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0)));
+  m_nearBand = std::max(contactEpsilon(), kNearBandOfContactGap * accuracyScale);
   m_coherenceMargin =
     parameters.coherenceMargin > 0.0 ? parameters.coherenceMargin : parameters.radius;
   m_cacheMargin = m_coherenceMargin;
@@ -146,8 +146,7 @@ void ProxySolver::setScene(const CollisionScene* scene, const ProxyParameters& p
     m_reachRadius =
       kReachFactor * (scene->maxAbsCoordinate() + std::max(scene->diagonal(), parameters.radius));
   }
-  // DESIGN.md section 4's accuracy scale: 1 nm, or 1e-9 of the scene's size if larger.
-  m_shadingTolerance = std::max(1e-9, 1e-9 * (scene != nullptr ? scene->diagonal() : 0.0));
+  m_shadingTolerance = accuracyScale;
 }
 
 void ProxySolver::setMovingObjects(const std::vector<std::uint32_t>& objects)
