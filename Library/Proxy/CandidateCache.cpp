@@ -336,6 +336,31 @@ double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end, doubl
   return std::clamp(exit * (1.0 - 1e-12), 0.0, 1.0);
 }
 
+namespace
+{
+// True when the sweep of `query` (along `motion`) provably comes no nearer the triangle whose
+// closest point to the start is `closest` than `reach` before the fraction `bound` of the sweep.
+// The distance from a point moving on a line to a triangle (a convex set) is convex along the
+// line, so at t it is at least d0 - t * approach, where d0 is the start's distance and approach
+// the rate the motion closes on the closest point; the sweep stops no farther than radius + skin
+// (the contact rule of sweepSphereTriangleWithSkin), so a triangle d0 away is met no sooner than
+// (d0 - reach) / approach. Near a fan's apex dozens of slivers lie a few tenths of a nanometre
+// beyond the proxy's radius: a slide that the first of them stops after a nanometre cannot reach
+// the rest, and their exact tests were most of an iteration's work.
+bool clearUntil(const KnownClosestPoint& closest, const SweepQuery& query, const Vec3& motion,
+                double reach, double bound)
+{
+  const double startDistance = std::sqrt(closest.squaredDistance);
+  const double clearance = startDistance - reach;
+  if (!(clearance > 0.0))
+  {
+    return false;
+  }
+  const double approach = -dot(motion, query.start - closest.point) / startDistance;
+  return clearance > bound * approach * (1.0 + 1e-9);
+}
+} // namespace
+
 SceneContact CandidateCache::firstContact(const CollisionScene& scene, const SweepQuery& query,
                                           double covered, QueryStats& stats) const
 {
@@ -350,10 +375,19 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   // bound (the pass makes the same tests, term for term), so only a bound that has shrunk since
   // is worth testing again (negative: no pass yet).
   double filtered = -1.0;
+  // How far a distance may be off by rounding where the convexity bound below compares one: far
+  // above the rounding of coordinates this size (1e-16 of them), far below the tenths of a
+  // nanometre between the slivers of a fan.
+  const double roundingSlack = 1e-12 * (maxAbsComponent(query.start) + query.radius);
   auto test = [&](int i) {
     // Only the part of the path before the best contact so far (or the covered part) can give
     // an earlier one.
     const double bound = best.hit ? best.t : covered;
+    if (fromGathered && m_closestStamp[i] == m_closestGeneration &&
+        clearUntil(m_closestToStart[i], query, motion, beyond + roundingSlack, bound))
+    {
+      return;
+    }
     if (bound != filtered &&
         !mayReachSegment(i, query.start, motion * bound, motionSquared * bound * bound, beyond))
     {

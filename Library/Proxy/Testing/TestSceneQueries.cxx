@@ -146,6 +146,8 @@ const std::vector<NamedScene>& scenes()
     add("box-and-grid", {makeBox({0.02, 0.02, 0.01}, {0.0, 0.0, 0.012}), makeGrid(0.1, 40)}, 0.003);
     add("doubled-icosphere", {doubled(makeIcosphere(2, 0.05))}, 0.005);
     add("two-identical-objects", {makeIcosphere(2, 0.05), makeIcosphere(2, 0.05)}, 0.005);
+    // CAD slivers: each cap a fan of 62 from one rim point, each side two slivers 10 cm long.
+    add("sliver-cylinder", {makeSliverCylinder(64, 0.02, 0.1)}, 0.003);
 #if PROXIMA_WITH_MESH_IO
     const std::string missing = addRealScene(made, "stanford-bunny.obj", 0.4);
     if (!missing.empty())
@@ -361,14 +363,18 @@ private:
   std::unique_ptr<SphereTreeScratch> m_scratch;
 };
 
-/// The candidate cache, rebuilt around each query with a margin of one radius.
+/// The candidate cache, rebuilt around each query with a margin of one radius. With
+/// `gatherAtStart`, each sweep first gathers the triangles near its start, as the solver's update
+/// stage does before its move stage, so that the sweep takes the closest points the gather kept
+/// and may skip the triangles it can prove it cannot reach in time (CandidateCache::firstContact).
 class CacheQueries
 {
 public:
-  explicit CacheQueries(const CollisionScene& scene)
+  explicit CacheQueries(const CollisionScene& scene, bool gatherAtStart = false)
     : m_scene(scene)
     , m_scratch(std::make_unique<SphereTreeScratch>())
     , m_cache(std::make_unique<CandidateCache>())
+    , m_gatherAtStart(gatherAtStart)
   {}
 
   bool firstContact(const SweepQuery& q, SceneContact& out)
@@ -381,6 +387,17 @@ public:
     }
     const double covered = m_cache->coveredFraction(q.start, q.end, sweepReach);
     EXPECT_EQ(covered, 1.0);
+    if (m_gatherAtStart)
+    {
+      // Every cached triangle the sweep can meet within the ball the rebuild covers round the
+      // start, so that most of them have a closest point kept.
+      const double gatherReach = sweepReach + 0.99 * q.radius; // a hair inside, for rounding
+      EXPECT_TRUE(m_cache->coversBall(q.start, gatherReach));
+      NearbyTriangle buffer[CandidateCache::kCapacity];
+      std::uint32_t objects[CandidateCache::kCapacity];
+      m_cache->gatherWithin(m_scene, q.start, gatherReach, buffer, objects,
+                            CandidateCache::kCapacity, m_stats);
+    }
     out = m_cache->firstContact(m_scene, q, covered, m_stats);
     // Again, now that the first answer's triangle is the hint that is tested first: the order
     // must change nothing.
@@ -446,7 +463,17 @@ private:
   const CollisionScene& m_scene;
   std::unique_ptr<SphereTreeScratch> m_scratch;
   std::unique_ptr<CandidateCache> m_cache;
+  bool m_gatherAtStart = false;
   QueryStats m_stats;
+};
+
+/// The candidate cache with a gather at each sweep's start (CacheQueries).
+class GatheredCacheQueries : public CacheQueries
+{
+public:
+  explicit GatheredCacheQueries(const CollisionScene& scene)
+    : CacheQueries(scene, true)
+  {}
 };
 
 // Seeded query points: a random point of a random triangle, moved off it in a random direction
@@ -514,11 +541,16 @@ public:
   template <typename T>
   static std::string GetName(int)
   {
-    return std::is_same_v<T, TreeQueries> ? "SphereTrees" : "CandidateCache";
+    if (std::is_same_v<T, TreeQueries>)
+    {
+      return "SphereTrees";
+    }
+    return std::is_same_v<T, GatheredCacheQueries> ? "CandidateCacheAfterAGather"
+                                                   : "CandidateCache";
   }
 };
 
-using Implementations = ::testing::Types<TreeQueries, CacheQueries>;
+using Implementations = ::testing::Types<TreeQueries, CacheQueries, GatheredCacheQueries>;
 TYPED_TEST_SUITE(SceneQueries, Implementations, ImplementationNames);
 
 template <typename TypeParam>
