@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace proxima
 {
@@ -45,6 +46,7 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
       m_planeSlack[m_count] = filter.planeSlack;
       // The edges' half-spaces are made when keepNearEdges first needs them.
       m_edgesMade[m_count] = false;
+      forgetSeparatingPlane(m_count);
       m_object[m_count] = objectIndex;
       ++m_count;
     }
@@ -58,12 +60,29 @@ void CandidateCache::rebuild(const CollisionScene& scene, const Vec3& center, do
 
 void CandidateCache::forgetClosestPoints() const
 {
+  startClosestPoints();
+  for (int i = 0; i < m_count; ++i)
+  {
+    forgetSeparatingPlane(i);
+  }
+}
+
+void CandidateCache::startClosestPoints() const
+{
   if (++m_closestGeneration == 0)
   {
     // The counter wrapped (after four billion ticks): wipe the stamps so none can match.
     std::fill(m_closestStamp, m_closestStamp + kCapacity, 0u);
     m_closestGeneration = 1;
   }
+}
+
+void CandidateCache::forgetSeparatingPlane(int i) const
+{
+  m_separatingX[i] = 0.0;
+  m_separatingY[i] = 0.0;
+  m_separatingZ[i] = 0.0;
+  m_separatingOffset[i] = std::numeric_limits<double>::infinity();
 }
 
 namespace
@@ -278,20 +297,28 @@ std::uint32_t CandidateCache::gatherWithin(const CollisionScene& scene, const Ve
   const double maxDistanceSquared = maxDistance * maxDistance;
   if (std::memcmp(&point, &m_closestFrom, sizeof point) != 0)
   {
-    forgetClosestPoints();
+    startClosestPoints();
     m_closestFrom = point;
   }
+  // A separating plane must put the point beyond the reach by more than the rounding of its
+  // height (1e-16 of the coordinates): 1e-12 of them.
+  const double clearOfReach = maxDistance + 1e-12 * (maxAbsComponent(point) + maxDistance);
   int near[kCapacity];
   const int numNear = keepNearEdges(scene, point, Vec3{}, maxDistance, near,
                                     trianglesNearPoint(point, maxDistance, near));
   for (int k = 0; k < numNear; ++k)
   {
     const int i = near[k];
+    if (separatingHeight(i, point) > clearOfReach)
+    {
+      continue;
+    }
     ++stats.trianglesTested;
     const TriangleCorners& c = scene.objects[m_object[i]].mesh.corners(m_triangle[i]);
     const ClosestPointResult closest = closestPointOnTriangle(point, c.a, c.b, c.c);
     m_closestStamp[i] = m_closestGeneration;
     m_closestToStart[i] = KnownClosestPoint{closest.point, closest.squaredDistance};
+    keepSeparatingPlane(i, point, closest.point, closest.squaredDistance);
     if (closest.squaredDistance <= maxDistanceSquared)
     {
       if (found < capacity)
@@ -336,30 +363,48 @@ double CandidateCache::coveredFraction(const Vec3& start, const Vec3& end, doubl
   return std::clamp(exit * (1.0 - 1e-12), 0.0, 1.0);
 }
 
-namespace
+double CandidateCache::separatingHeight(int i, const Vec3& point) const
 {
-// True when the sweep of `query` (along `motion`) provably comes no nearer the triangle whose
-// closest point to the start is `closest` than `reach` before the fraction `bound` of the sweep.
-// The distance from a point moving on a line to a triangle (a convex set) is convex along the
-// line, so at t it is at least d0 - t * approach, where d0 is the start's distance and approach
-// the rate the motion closes on the closest point; the sweep stops no farther than radius + skin
-// (the contact rule of sweepSphereTriangleWithSkin), so a triangle d0 away is met no sooner than
-// (d0 - reach) / approach. Near a fan's apex dozens of slivers lie a few tenths of a nanometre
-// beyond the proxy's radius: a slide that the first of them stops after a nanometre cannot reach
-// the rest, and their exact tests were most of an iteration's work.
-bool clearUntil(const KnownClosestPoint& closest, const SweepQuery& query, const Vec3& motion,
-                double reach, double bound)
+  return m_separatingX[i] * point.x + m_separatingY[i] * point.y + m_separatingZ[i] * point.z -
+         m_separatingOffset[i];
+}
+
+void CandidateCache::keepSeparatingPlane(int i, const Vec3& point, const Vec3& closest,
+                                         double squaredDistance) const
 {
-  const double startDistance = std::sqrt(closest.squaredDistance);
-  const double clearance = startDistance - reach;
+  // The triangle lies behind the plane through its closest point to `point`, normal to the
+  // way between them (the Voronoi characterisation of the closest point of a convex set).
+  const double distance = std::sqrt(squaredDistance);
+  if (!(distance > 0.0))
+  {
+    forgetSeparatingPlane(i);
+    return;
+  }
+  const Vec3 normal = (point - closest) / distance;
+  m_separatingX[i] = normal.x;
+  m_separatingY[i] = normal.y;
+  m_separatingZ[i] = normal.z;
+  m_separatingOffset[i] = dot(normal, closest);
+}
+
+bool CandidateCache::clearUntil(int i, const Vec3& start, const Vec3& motion, double reach,
+                                double bound) const
+{
+  // The sweep's centre rises over the separating plane at a constant rate, and its height is a
+  // lower bound on its distance to the triangle, where the sweep stops no farther than
+  // radius + skin (sweepSphereTriangleWithSkin's contact rule): a start `clearance` beyond
+  // that, closing at `approach` per unit of the sweep, meets the triangle no sooner than
+  // clearance / approach. Near a fan's apex a slide the first sliver stops after a nanometre
+  // cannot reach the others, tenths of a nanometre to micrometres beyond the radius.
+  const double clearance = separatingHeight(i, start) - reach;
   if (!(clearance > 0.0))
   {
     return false;
   }
-  const double approach = -dot(motion, query.start - closest.point) / startDistance;
+  const double approach =
+    -(m_separatingX[i] * motion.x + m_separatingY[i] * motion.y + m_separatingZ[i] * motion.z);
   return clearance > bound * approach * (1.0 + 1e-9);
 }
-} // namespace
 
 SceneContact CandidateCache::firstContact(const CollisionScene& scene, const SweepQuery& query,
                                           double covered, QueryStats& stats) const
@@ -378,13 +423,12 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   // How far a distance may be off by rounding where the convexity bound below compares one: far
   // above the rounding of coordinates this size (1e-16 of them), far below the tenths of a
   // nanometre between the slivers of a fan.
-  const double roundingSlack = 1e-12 * (maxAbsComponent(query.start) + query.radius);
+  const double clearOfReach = beyond + 1e-12 * (maxAbsComponent(query.start) + query.radius);
   auto test = [&](int i) {
     // Only the part of the path before the best contact so far (or the covered part) can give
     // an earlier one.
     const double bound = best.hit ? best.t : covered;
-    if (fromGathered && m_closestStamp[i] == m_closestGeneration &&
-        clearUntil(m_closestToStart[i], query, motion, beyond + roundingSlack, bound))
+    if (clearUntil(i, query.start, motion, clearOfReach, bound))
     {
       return;
     }

@@ -364,17 +364,18 @@ private:
 };
 
 /// The candidate cache, rebuilt around each query with a margin of one radius. With
-/// `gatherAtStart`, each sweep first gathers the triangles near its start, as the solver's update
-/// stage does before its move stage, so that the sweep takes the closest points the gather kept
-/// and may skip the triangles it can prove it cannot reach in time (CandidateCache::firstContact).
+/// `gatherFirst`, each query first gathers near its point, as the solver's update stage does
+/// before its move stage and before the next update stage: a gather a little away keeps
+/// separating planes the query may skip triangles by, and for every other sweep a gather at its
+/// start keeps the closest points it takes (CandidateCache::gatherWithin, firstContact).
 class CacheQueries
 {
 public:
-  explicit CacheQueries(const CollisionScene& scene, bool gatherAtStart = false)
+  explicit CacheQueries(const CollisionScene& scene, bool gatherFirst = false)
     : m_scene(scene)
     , m_scratch(std::make_unique<SphereTreeScratch>())
     , m_cache(std::make_unique<CandidateCache>())
-    , m_gatherAtStart(gatherAtStart)
+    , m_gatherFirst(gatherFirst)
   {}
 
   bool firstContact(const SweepQuery& q, SceneContact& out)
@@ -387,16 +388,14 @@ public:
     }
     const double covered = m_cache->coveredFraction(q.start, q.end, sweepReach);
     EXPECT_EQ(covered, 1.0);
-    if (m_gatherAtStart)
+    if (m_gatherFirst)
     {
-      // Every cached triangle the sweep can meet within the ball the rebuild covers round the
-      // start, so that most of them have a closest point kept.
-      const double gatherReach = sweepReach + 0.99 * q.radius; // a hair inside, for rounding
-      EXPECT_TRUE(m_cache->coversBall(q.start, gatherReach));
-      NearbyTriangle buffer[CandidateCache::kCapacity];
-      std::uint32_t objects[CandidateCache::kCapacity];
-      m_cache->gatherWithin(m_scene, q.start, gatherReach, buffer, objects,
-                            CandidateCache::kCapacity, m_stats);
+      // Within the ball the rebuild covers round the start (a hair inside, for rounding).
+      gatherNear(q.start, 0.5 * q.radius, sweepReach + 0.49 * q.radius);
+      if (++m_sweeps % 2 == 0)
+      {
+        gather(q.start, sweepReach + 0.99 * q.radius);
+      }
     }
     out = m_cache->firstContact(m_scene, q, covered, m_stats);
     // Again, now that the first answer's triangle is the hint that is tested first: the order
@@ -417,6 +416,10 @@ public:
       return false;
     }
     EXPECT_TRUE(m_cache->coversBall(p, maxDistance));
+    if (m_gatherFirst)
+    {
+      gatherNear(p, 0.25 * maxDistance, 1.2 * maxDistance);
+    }
     NearbyTriangle buffer[CandidateCache::kCapacity];
     std::uint32_t objects[CandidateCache::kCapacity];
     const std::uint32_t found = m_cache->gatherWithin(m_scene, p, maxDistance, buffer, objects,
@@ -435,6 +438,10 @@ public:
     if (!rebuild(p, 1.5 * maxDistance))
     {
       return false;
+    }
+    if (m_gatherFirst)
+    {
+      gatherNear(p, 0.25 * maxDistance, 1.2 * maxDistance);
     }
     NearbyTriangle buffer[CandidateCache::kCapacity];
     std::uint32_t objects[CandidateCache::kCapacity];
@@ -460,14 +467,35 @@ private:
     return m_cache->valid();
   }
 
+  void gather(const Vec3& point, double reach)
+  {
+    EXPECT_TRUE(m_cache->coversBall(point, reach));
+    NearbyTriangle buffer[CandidateCache::kCapacity];
+    std::uint32_t objects[CandidateCache::kCapacity];
+    m_cache->gatherWithin(m_scene, point, reach, buffer, objects, CandidateCache::kCapacity,
+                          m_stats);
+  }
+
+  /// A gather within `reach` of a seeded point at most `offset` from `point`.
+  void gatherNear(const Vec3& point, double offset, double reach)
+  {
+    std::normal_distribution<double> gauss;
+    const Vec3 direction{gauss(m_random), gauss(m_random), gauss(m_random)};
+    const double length = norm(direction);
+    const double away = offset * std::uniform_real_distribution<double>(0.0, 1.0)(m_random);
+    gather(length > 0.0 ? point + direction * (away / length) : point, reach);
+  }
+
   const CollisionScene& m_scene;
   std::unique_ptr<SphereTreeScratch> m_scratch;
   std::unique_ptr<CandidateCache> m_cache;
-  bool m_gatherAtStart = false;
+  bool m_gatherFirst = false;
+  int m_sweeps = 0;
+  std::mt19937 m_random{2207};
   QueryStats m_stats;
 };
 
-/// The candidate cache with a gather at each sweep's start (CacheQueries).
+/// The candidate cache with gathers before each query (CacheQueries).
 class GatheredCacheQueries : public CacheQueries
 {
 public:
@@ -545,7 +573,7 @@ public:
     {
       return "SphereTrees";
     }
-    return std::is_same_v<T, GatheredCacheQueries> ? "CandidateCacheAfterAGather"
+    return std::is_same_v<T, GatheredCacheQueries> ? "CandidateCacheAfterGathers"
                                                    : "CandidateCache";
   }
 };
