@@ -5,7 +5,8 @@
 // Usage: ProfileTick MESH SCALE RADIUS PATH.csv REPEATS TICK [TICK...]
 //   Prints, per tick, its iterations, the least and median wall time of the repeats and its query
 //   counters (QueryStats); with
-//   PROFILE_TICK_MOVES set, also the chain of points the tick moved through (MoveRecord.h).
+//   PROFILE_TICK_MOVES set, also the chain of points the tick moved through (MoveRecord.h); with
+//   PROFILE_TICK_BUDGET=N, the path is played and the ticks replayed with an iteration budget.
 //   For exact counts of the ticks' work alone:
 //   valgrind --tool=callgrind --toggle-collect='*replayedUpdate*' ProfileTick ... 1 TICK
 #include "IO/Mesh/MeshReader.h"
@@ -58,6 +59,12 @@ int main(int argc, char** argv)
   ProxyParameters parameters;
   parameters.radius = radius;
   parameters.timeStep = 1.0 / kRate;
+  // PROFILE_TICK_BUDGET=N plays the path, and replays the ticks, with an iteration budget of N
+  // (as `proxima run --tick-budget Nit`): the ticks a budget limits start elsewhere.
+  if (const char* budget = std::getenv("PROFILE_TICK_BUDGET"))
+  {
+    parameters.tickBudgetIterations = std::atoi(budget);
+  }
   auto solver = std::make_unique<ProxySolver>();
   solver->setScene(&scene, parameters);
   solver->resetProxy(path.positions.front());
