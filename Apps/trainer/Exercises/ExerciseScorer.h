@@ -131,6 +131,10 @@ private:
                     double forceMagnitude, double& holdStart);
   void scoreTrace(const ExerciseTask& task, TaskScore& score, TraceProgress& progress,
                   const HapticState& state);
+  /// A damage event opens when the force on a tissue rises above its limit and closes when it
+  /// falls below kDamageReleaseFraction of the limit or the proxy leaves the tissue: a force that
+  /// hovers at the limit (a press held there, a texture's ripple, a deforming tissue's steps)
+  /// is one event, not one per crossing.
   void scoreDamage(const HapticState& state, double forceMagnitude);
 
   const Exercise m_exercise;
@@ -140,6 +144,8 @@ private:
   std::optional<HapticState> m_last;
   /// The open damage event's index in m_score.damage, or -1.
   long m_openDamage = -1;
+  /// The fraction of a tissue's force limit below which an open damage event ends.
+  static constexpr double kDamageReleaseFraction = 0.9;
 };
 
 } // namespace proxima::trainer

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -260,6 +261,42 @@ TEST(ExerciseScorer, DamageEventsAreRunsOfTicksOverTheTissuesLimit)
   EXPECT_NEAR(score.damage[1].startTime, 0.006, 1e-12);
   EXPECT_EQ(score.damage[1].duration, 0.0);
   EXPECT_FALSE(score.passed);
+}
+
+TEST(ExerciseScorer, AForceHoveringAtTheLimitIsOneDamageEventUntilItFallsBelowTheRelease)
+{
+  // The floor's limit is 5 N and an event ends below 90 % of it (4.5 N): a press held at the
+  // limit, rippling 4.6-5.4 N, is one event; falling to 4.4 N ends it, and rising above 5 N again
+  // is a second.
+  const CollisionScene scene = floorWithNodule();
+  ExerciseTask task;
+  task.kind = TaskKind::Targets;
+  task.targets.targets = {{"A", {0.09, 0.09, 0.0}, 0.001}};
+  task.targets.minForce = 0.5;
+  task.targets.maxForce = 2.0;
+  ExerciseScorer scorer(exerciseWith(task), scene);
+  std::vector<double> forces = {1.0};
+  for (int i = 0; i < 20; ++i)
+  {
+    forces.push_back(i % 2 == 0 ? 5.4 : 4.6);
+  }
+  forces.push_back(4.5); // at the release level: still held
+  forces.push_back(4.4); // below it: the event ends
+  forces.push_back(4.9); // under the limit: no new event
+  forces.push_back(5.2); // over it: a new one
+  double t = 0.0;
+  for (const double force : forces)
+  {
+    scorer.addTick(stateAt(t, {0.01, 0.0, -0.01}, true, {0.01, 0.0, 0.0}, force));
+    t += 0.001;
+  }
+  const ExerciseScore score = scorer.score();
+  ASSERT_EQ(score.damage.size(), 2u);
+  EXPECT_NEAR(score.damage[0].startTime, 0.001, 1e-12);
+  EXPECT_NEAR(score.damage[0].duration, 0.020, 1e-12); // ticks 1 to 21, the last at 4.5 N
+  EXPECT_EQ(score.damage[0].peakForce, 5.4);
+  EXPECT_NEAR(score.damage[1].startTime, 0.024, 1e-12);
+  EXPECT_EQ(score.damage[1].peakForce, 5.2);
 }
 
 } // namespace
