@@ -373,9 +373,14 @@ void CandidateCache::keepSeparatingPlane(int i, const Vec3& point, const Vec3& c
                                          double squaredDistance) const
 {
   // The triangle lies behind the plane through its closest point to `point`, normal to the
-  // way between them (the Voronoi characterisation of the closest point of a convex set).
+  // way between them (the Voronoi characterisation of the closest point of a convex set). The
+  // normal's rounding (about 1e-16 of the coordinates over the distance) tilts the plane, and a
+  // point up to the ball's diameter away sees its height off by that tilt times the way: under
+  // 1e-13 of the coordinates, inside the queries' 1e-12 slack, only for a distance above a
+  // hundredth of the ball's radius. The proxy's planes are measured a radius or so away; a point
+  // nearer a triangle than that (a query off the proxy's path) keeps no plane.
   const double distance = std::sqrt(squaredDistance);
-  if (!(distance > 0.0))
+  if (!(distance > 1e-2 * m_reach))
   {
     forgetSeparatingPlane(i);
     return;
@@ -420,9 +425,9 @@ SceneContact CandidateCache::firstContact(const CollisionScene& scene, const Swe
   // bound (the pass makes the same tests, term for term), so only a bound that has shrunk since
   // is worth testing again (negative: no pass yet).
   double filtered = -1.0;
-  // How far a distance may be off by rounding where the convexity bound below compares one: far
-  // above the rounding of coordinates this size (1e-16 of them), far below the tenths of a
-  // nanometre between the slivers of a fan.
+  // How far a separating plane's height may be off by rounding (keepSeparatingPlane): far above
+  // the rounding of coordinates this size (1e-16 of them), far below the tenths of a nanometre
+  // between the slivers of a fan.
   const double clearOfReach = beyond + 1e-12 * (maxAbsComponent(query.start) + query.radius);
   auto test = [&](int i) {
     // Only the part of the path before the best contact so far (or the covered part) can give
