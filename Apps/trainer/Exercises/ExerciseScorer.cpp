@@ -300,14 +300,19 @@ void ExerciseScorer::scoreDamage(const HapticState& state, double forceMagnitude
       }
     }
   }
-  const bool open = tissue != nullptr && m_openDamage >= 0 &&
+  if (tissue == nullptr)
+  {
+    m_openDamage = -1;
+    return;
+  }
+  const bool open = m_openDamage >= 0 &&
                     m_score.damage[static_cast<std::size_t>(m_openDamage)].object == tissue->object;
   // An open event lasts down to the release level, a new one starts only above the limit: a
   // press held at the limit crossed it at every ripple of the force, and each crossing was an
   // event of its own (the soft kidney counted 29 for one press before the servo's local model).
-  const double threshold =
-    tissue == nullptr ? 0.0 : (open ? kDamageReleaseFraction : 1.0) * tissue->forceLimit;
-  if (tissue == nullptr || !(open ? forceMagnitude >= threshold : forceMagnitude > threshold))
+  const bool damaging = open ? forceMagnitude >= kDamageReleaseFraction * tissue->forceLimit
+                             : forceMagnitude > tissue->forceLimit;
+  if (!damaging)
   {
     m_openDamage = -1;
     return;

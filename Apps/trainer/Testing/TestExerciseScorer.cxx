@@ -236,7 +236,8 @@ TEST(ExerciseScorer, TraceBesideTheLineDeviatesByItsDistance)
   EXPECT_FALSE(scorer.score().tasks[0].passed);
 }
 
-TEST(ExerciseScorer, DamageEventsAreRunsOfTicksOverTheTissuesLimit)
+/// The score of a press on the floor (limit 5 N) with one tick of each force, 1 ms apart.
+ExerciseScore scoreOfPress(const std::vector<double>& forces)
 {
   const CollisionScene scene = floorWithNodule();
   ExerciseTask task;
@@ -245,14 +246,18 @@ TEST(ExerciseScorer, DamageEventsAreRunsOfTicksOverTheTissuesLimit)
   task.targets.minForce = 0.5;
   task.targets.maxForce = 2.0;
   ExerciseScorer scorer(exerciseWith(task), scene);
-  const double forces[] = {1.0, 5.5, 7.0, 6.0, 4.0, 5.0, 5.01, 1.0};
   double t = 0.0;
   for (const double force : forces)
   {
     scorer.addTick(stateAt(t, {0.01, 0.0, -0.01}, true, {0.01, 0.0, 0.0}, force));
     t += 0.001;
   }
-  const ExerciseScore score = scorer.score();
+  return scorer.score();
+}
+
+TEST(ExerciseScorer, DamageEventsAreRunsOfTicksOverTheTissuesLimit)
+{
+  const ExerciseScore score = scoreOfPress({1.0, 5.5, 7.0, 6.0, 4.0, 5.0, 5.01, 1.0});
   ASSERT_EQ(score.damage.size(), 2u);
   EXPECT_EQ(score.damage[0].tissue, "floor");
   EXPECT_NEAR(score.damage[0].startTime, 0.001, 1e-12);
@@ -268,13 +273,6 @@ TEST(ExerciseScorer, AForceHoveringAtTheLimitIsOneDamageEventUntilItFallsBelowTh
   // The floor's limit is 5 N and an event ends below 90 % of it (4.5 N): a press held at the
   // limit, rippling 4.6-5.4 N, is one event; falling to 4.4 N ends it, and rising above 5 N again
   // is a second.
-  const CollisionScene scene = floorWithNodule();
-  ExerciseTask task;
-  task.kind = TaskKind::Targets;
-  task.targets.targets = {{"A", {0.09, 0.09, 0.0}, 0.001}};
-  task.targets.minForce = 0.5;
-  task.targets.maxForce = 2.0;
-  ExerciseScorer scorer(exerciseWith(task), scene);
   std::vector<double> forces = {1.0};
   for (int i = 0; i < 20; ++i)
   {
@@ -284,13 +282,7 @@ TEST(ExerciseScorer, AForceHoveringAtTheLimitIsOneDamageEventUntilItFallsBelowTh
   forces.push_back(4.4); // below it: the event ends
   forces.push_back(4.9); // under the limit: no new event
   forces.push_back(5.2); // over it: a new one
-  double t = 0.0;
-  for (const double force : forces)
-  {
-    scorer.addTick(stateAt(t, {0.01, 0.0, -0.01}, true, {0.01, 0.0, 0.0}, force));
-    t += 0.001;
-  }
-  const ExerciseScore score = scorer.score();
+  const ExerciseScore score = scoreOfPress(forces);
   ASSERT_EQ(score.damage.size(), 2u);
   EXPECT_NEAR(score.damage[0].startTime, 0.001, 1e-12);
   EXPECT_NEAR(score.damage[0].duration, 0.020, 1e-12); // ticks 1 to 21, the last at 4.5 N
